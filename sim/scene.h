@@ -1,0 +1,81 @@
+#pragma once
+// The scene model: plain data, shared by the physics, the scene files, the CLI and the editor.
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace carom {
+
+using Vec3 = Eigen::Vector3d;
+
+enum class Method { Exact, Swept, Discrete };
+enum class Integrator { ExplicitEuler, SymplecticEuler, VelocityVerlet };
+
+// Keys as written in scene files and on the command line ("exact", "velocity-verlet", ...).
+std::string_view methodName(Method method);
+std::string_view integratorName(Integrator integrator);
+std::optional<Method> methodFromName(std::string_view name);
+std::optional<Integrator> integratorFromName(std::string_view name);
+std::vector<std::string_view> methodNames();
+std::vector<std::string_view> integratorNames();
+
+// Fields every object kind carries besides its geometry. `extra` holds the object's unknown
+// scene-file keys as the text of a JSON object (empty when there are none), so that they survive
+// a load/save round trip without the physics knowing JSON.
+struct ObjectInfo {
+  std::optional<double> restitution;  // none: the world's value
+  std::string name;
+  std::string color;  // "#rrggbb", or empty for the default
+  std::string extra;
+};
+
+struct Ball : ObjectInfo {
+  Vec3 position = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  double radius = 1.0;
+  double mass = 1.0;
+};
+
+// Solid half-space: balls live on the side the normal points to.
+struct Plane : ObjectInfo {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitY();  // any non-zero length
+};
+
+// Infinite solid cylinder around the line through `point` along `axis`.
+struct Cylinder : ObjectInfo {
+  Vec3 point = Vec3::Zero();
+  Vec3 axis = Vec3::UnitY();  // any non-zero length
+  double radius = 1.0;
+};
+
+struct World {
+  Vec3 gravity = Vec3(0.0, -9.81, 0.0);
+  double timeStep = 1.0 / 60.0;
+  double restitution = 1.0;
+  Method method = Method::Exact;
+  Integrator integrator = Integrator::SymplecticEuler;
+  std::string extra;
+};
+
+struct Scene {
+  World world;
+  std::vector<Plane> planes;
+  std::vector<Cylinder> cylinders;
+  std::vector<Ball> balls;
+  std::string extra;  // unknown top-level keys
+};
+
+// A contact's restitution: the smaller of the two objects' values, each defaulting to the world's.
+inline double contactRestitution(const World& world, const ObjectInfo& a, const ObjectInfo& b) {
+  const double ea = a.restitution.value_or(world.restitution);
+  const double eb = b.restitution.value_or(world.restitution);
+  return ea < eb ? ea : eb;
+}
+
+}  // namespace carom

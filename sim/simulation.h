@@ -1,0 +1,74 @@
+#pragma once
+// The simulation of a scene under one of the three methods. This is the physics' public face:
+// the CLI, the benchmarks and the GUI worker drive it; nothing else in sim/ is needed by them.
+
+#include "run_stats.h"
+#include "scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace carom {
+
+class Stepper;
+
+class Simulation {
+ public:
+  // `scene` must be valid (validateScene(scene) empty); its world selects method and integrator.
+  explicit Simulation(const Scene& scene);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Advances simulated time by `duration` (>= 0). `exact` moves from event to event and lands on
+  // the target time exactly; `swept` and `discrete` take steps of the world's time step, the last
+  // one shortened so that the target is met.
+  void advance(double duration);
+  // One time step of the world's time step (also for `exact`).
+  void step();
+
+  double time() const { return time_; }
+  const World& world() const { return world_; }
+  std::size_t ballCount() const { return balls_.size(); }
+
+  // Live changes, applied from the current state on.
+  void setGravity(const Vec3& gravity);
+  void setTimeStep(double timeStep);
+  void setMethod(Method method);
+  void setIntegrator(Integrator integrator);
+
+  // The state of every ball at time(), in scene order.
+  std::vector<Vec3> positions() const;
+  std::vector<Vec3> velocities() const;
+
+  double kineticEnergy() const;
+  double potentialEnergy() const;  // relative to the origin: -m g . p
+  double totalEnergy() const { return kineticEnergy() + potentialEnergy(); }
+  Vec3 momentum() const;
+
+  const RunStats& stats() const { return stats_; }
+  // What the current method models and what it leaves out, one short phrase each
+  // ("no gravity: straight paths", "no cylinders: no cylinder tests", ...).
+  std::vector<std::string> modelNotes() const;
+
+  // When on, every collision is recorded until taken (for explosions and sound).
+  void setCollisionLog(bool on) { logCollisions_ = on; }
+  std::vector<CollisionRecord> takeCollisions();
+
+ private:
+  friend class Stepper;
+  void rebuildStepper();
+
+  World world_;
+  std::vector<Plane> planes_;
+  std::vector<Cylinder> cylinders_;
+  std::vector<Ball> balls_;  // positions and velocities as of the last sync with the stepper
+  double time_ = 0.0;
+  RunStats stats_;
+  bool logCollisions_ = false;
+  std::vector<CollisionRecord> collisionLog_;
+  std::unique_ptr<Stepper> stepper_;
+};
+
+}  // namespace carom

@@ -1,0 +1,38 @@
+#pragma once
+// Every tolerance and limit of the physics, named once. Lengths are relative to the balls'
+// radii and speeds derive from gravity, so the solver behaves the same at any scale.
+
+#include <cstddef>
+
+namespace carom::tolerance {
+
+// Two shapes closer than this fraction of the relevant radius (sum) count as touching: allowed
+// at the start of a run, and used to find the supports of a ball that comes to rest.
+inline constexpr double kTouchFraction = 1e-9;
+
+// A bounce lower than this fraction of the ball's radius is not resolved as a bounce: the
+// contact becomes resting (see docs/physics.md, "Resting contact").
+inline constexpr double kRestHeightFraction = 1e-3;
+
+// Gap (as a fraction of the radius) within which a slow ball is considered supported by a
+// surface when deciding whether it can be put to rest.
+inline constexpr double kSupportGapFraction = 4e-3;
+
+// Without gravity there is no rest speed from a bounce height; collisions slower than this
+// fraction of the scene's initial RMS speed separate at that speed, which stops inelastic
+// collapse in a free gas from taking ever shorter steps.
+inline constexpr double kCollapseSpeedFraction = 1e-7;
+
+// Scene limits: values beyond these are refused by validation as absurd.
+inline constexpr double kMaxMagnitude = 1e12;
+inline constexpr double kMinRadius = 1e-12;
+inline constexpr double kMinMass = 1e-30;
+inline constexpr double kMaxMass = 1e30;
+inline constexpr double kMinTimeStep = 1e-12;
+inline constexpr double kMaxTimeStep = 1e6;
+inline constexpr double kMinDirectionLength = 1e-100;
+inline constexpr std::size_t kMaxBalls = 1'000'000;
+inline constexpr std::size_t kMaxPlanes = 10'000;
+inline constexpr std::size_t kMaxCylinders = 10'000;
+
+}  // namespace carom::tolerance
