@@ -1,7 +1,8 @@
 #pragma once
 // The simulation of a scene under one of the three methods. This is the physics' public face:
-// the CLI, the benchmarks and the GUI worker drive it; nothing else in sim/ is needed by them.
+// the CLI, the benchmarks and the GUI worker drive it.
 
+#include "bodies.h"
 #include "run_stats.h"
 #include "scene.h"
 
@@ -21,16 +22,17 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  // Advances simulated time by `duration` (>= 0). `exact` moves from event to event and lands on
-  // the target time exactly; `swept` and `discrete` take steps of the world's time step, the last
-  // one shortened so that the target is met.
+  // Advances simulated time by `duration` (>= 0). `exact` goes from event to event and lands on
+  // the target exactly; `swept` and `discrete` take steps of the world's time step, the last one
+  // shortened so that the target is met.
   void advance(double duration);
-  // One time step of the world's time step (also for `exact`).
-  void step();
+  // One step of the world's time step.
+  void step() { advance(world_.timeStep); }
 
-  double time() const { return time_; }
+  double time() const;
   const World& world() const { return world_; }
-  std::size_t ballCount() const { return balls_.size(); }
+  const Bodies& bodies() const { return bodies_; }
+  int ballCount() const { return bodies_.ballCount(); }
 
   // Live changes, applied from the current state on.
   void setGravity(const Vec3& gravity);
@@ -38,18 +40,18 @@ class Simulation {
   void setMethod(Method method);
   void setIntegrator(Integrator integrator);
 
-  // The state of every ball at time(), in scene order.
+  // Every ball at time(), in scene order.
+  std::vector<BallState> state() const;
   std::vector<Vec3> positions() const;
   std::vector<Vec3> velocities() const;
 
   double kineticEnergy() const;
-  double potentialEnergy() const;  // relative to the origin: -m g . p
+  double potentialEnergy() const;  // relative to the origin: the sum of -m g . p
   double totalEnergy() const { return kineticEnergy() + potentialEnergy(); }
   Vec3 momentum() const;
 
   const RunStats& stats() const { return stats_; }
-  // What the current method models and what it leaves out, one short phrase each
-  // ("no gravity: straight paths", "no cylinders: no cylinder tests", ...).
+  // What the current method models and what it leaves out, one short phrase each.
   std::vector<std::string> modelNotes() const;
 
   // When on, every collision is recorded until taken (for explosions and sound).
@@ -57,14 +59,11 @@ class Simulation {
   std::vector<CollisionRecord> takeCollisions();
 
  private:
-  friend class Stepper;
-  void rebuildStepper();
+  void rebuildStepper(const std::vector<BallState>& state, double now);
 
   World world_;
-  std::vector<Plane> planes_;
-  std::vector<Cylinder> cylinders_;
-  std::vector<Ball> balls_;  // positions and velocities as of the last sync with the stepper
-  double time_ = 0.0;
+  Bodies bodies_;
+  double collapseSpeed_ = 0.0;
   RunStats stats_;
   bool logCollisions_ = false;
   std::vector<CollisionRecord> collisionLog_;

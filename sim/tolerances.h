@@ -14,9 +14,13 @@ inline constexpr double kTouchFraction = 1e-9;
 // contact becomes resting (see docs/physics.md, "Resting contact").
 inline constexpr double kRestHeightFraction = 1e-3;
 
+// A resting ball wakes only when hit at this many times the rest speed: a neighbour hopping at
+// the rest speed (rule 1 of rest_policy.h) must not wake it.
+inline constexpr double kWakeSpeedFactor = 2.0;
+
 // Gap (as a fraction of the radius) within which a slow ball is considered supported by a
 // surface when deciding whether it can be put to rest.
-inline constexpr double kSupportGapFraction = 4e-3;
+inline constexpr double kSupportGapFraction = 1e-2;
 
 // Without gravity there is no rest speed from a bounce height; collisions slower than this
 // fraction of the scene's initial RMS speed separate at that speed, which stops inelastic
@@ -34,5 +38,17 @@ inline constexpr double kMinDirectionLength = 1e-100;
 inline constexpr std::size_t kMaxBalls = 1'000'000;
 inline constexpr std::size_t kMaxPlanes = 10'000;
 inline constexpr std::size_t kMaxCylinders = 10'000;
+
+}  // namespace carom::tolerance
+
+namespace carom::tolerance {
+
+// Supports hold a ball when gravity's direction lies in the cone of their normals to within this
+// distance (a slope shallower than about this many radians counts as level).
+inline constexpr double kSupportSlope = 1e-6;
+
+// A ball that takes part in more collisions than this without time advancing is put to rest: the
+// last guard against a zero-time cycle of contacts.
+inline constexpr int kMaxCollisionsAtOneInstant = 64;
 
 }  // namespace carom::tolerance

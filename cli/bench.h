@@ -1,0 +1,12 @@
+#pragma once
+// `carom-cli bench`: the benchmark scenes of the README, as a table.
+
+#include "cli_arguments.h"
+
+#include <QTextStream>
+
+namespace carom::cli {
+
+int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err);
+
+}  // namespace carom::cli

@@ -1,0 +1,99 @@
+#include "cli.h"
+
+#include "bench.h"
+#include "cli_arguments.h"
+#include "run_report.h"
+#include "scene_file.h"
+#include "validation.h"
+
+#include <QCoreApplication>
+
+#include <exception>
+
+namespace carom::cli {
+namespace {
+
+QString joined(const std::vector<std::string_view>& names) {
+  QStringList list;
+  for (std::string_view name : names) list << QString::fromUtf8(name.data(), name.size());
+  return list.join(", ");
+}
+
+// Loads the scene and applies the command line's overrides, checked by the one scene validation.
+std::optional<Scene> prepareScene(const RunOptions& options, QTextStream& err) {
+  SceneLoadResult loaded = loadSceneFile(options.scenePath);
+  if (!loaded.scene) {
+    err << loaded.error << "\n";
+    return std::nullopt;
+  }
+  Scene scene = std::move(*loaded.scene);
+  if (options.method) {
+    const auto method = methodFromName(options.method->toStdString());
+    if (!method) {
+      err << "carom-cli: unknown method '" << *options.method << "' (choose " << joined(methodNames())
+          << ")\n";
+      return std::nullopt;
+    }
+    scene.world.method = *method;
+  }
+  if (options.integrator) {
+    const auto integrator = integratorFromName(options.integrator->toStdString());
+    if (!integrator) {
+      err << "carom-cli: unknown integrator '" << *options.integrator << "' (choose "
+          << joined(integratorNames()) << ")\n";
+      return std::nullopt;
+    }
+    scene.world.integrator = *integrator;
+  }
+  if (options.timeStep) {
+    scene.world.timeStep = *options.timeStep;
+    const std::vector<ValidationError> errors = validateScene(scene, 1);
+    if (!errors.empty()) {
+      err << "carom-cli: --dt " << QString::fromStdString(errors.front().message) << "\n";
+      return std::nullopt;
+    }
+  }
+  return scene;
+}
+
+int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
+  switch (command.kind) {
+    case Command::Help:
+      out << usageText();
+      return kOk;
+    case Command::Version:
+      out << "carom-cli " << QCoreApplication::applicationVersion() << "\n";
+      return kOk;
+    case Command::Validate: {
+      if (!prepareScene(command.run, err)) return kBadInput;
+      out << "ok\n";
+      return kOk;
+    }
+    case Command::Run: {
+      const std::optional<Scene> scene = prepareScene(command.run, err);
+      if (!scene) return kBadInput;
+      return runScene(*scene, command.run, out, err);
+    }
+    case Command::Bench:
+      return runBench(command.bench, out, err);
+  }
+  return kInternalError;
+}
+
+}  // namespace
+
+int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
+  const ParseResult parsed = parseArguments(arguments);
+  if (!parsed.command) {
+    err << "carom-cli: " << parsed.error << "\nTry 'carom-cli --help'.\n";
+    return kBadInput;
+  }
+  try {
+    return dispatch(*parsed.command, out, err);
+  } catch (const std::exception& e) {
+    err << "carom-cli: internal error: " << e.what() << "\n";
+    return kInternalError;
+  }
+}
+
+}  // namespace carom::cli

@@ -1,0 +1,16 @@
+#pragma once
+// carom-cli: run, validate and benchmark scenes without a window.
+
+#include <QStringList>
+#include <QTextStream>
+
+namespace carom::cli {
+
+// Exit codes: 0 success, 2 bad input (usage, unreadable or invalid scene), 1 internal failure.
+enum ExitCode { kOk = 0, kInternalError = 1, kBadInput = 2 };
+
+// Runs the command in `arguments` (without the program name), writing results to `out` and
+// messages and progress to `err`.
+int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err);
+
+}  // namespace carom::cli

@@ -1,0 +1,103 @@
+#include "cli_arguments.h"
+
+#include <cmath>
+
+namespace carom::cli {
+namespace {
+
+// A number option: finite and within [low, high].
+std::optional<double> parseNumber(const QString& text, double low, double high) {
+  bool ok = false;
+  const double value = text.toDouble(&ok);
+  if (!ok || !std::isfinite(value) || value < low || value > high) return std::nullopt;
+  return value;
+}
+
+ParseResult failure(const QString& message) { return {std::nullopt, message}; }
+
+ParseResult success(Command::Kind kind) {
+  Command command;
+  command.kind = kind;
+  return {command, {}};
+}
+
+ParseResult parseRun(const QStringList& args, bool validateOnly) {
+  Command command;
+  command.kind = validateOnly ? Command::Validate : Command::Run;
+  RunOptions& run = command.run;
+  bool haveScene = false;
+  for (int i = 0; i < args.size(); ++i) {
+    const QString& arg = args[i];
+    const bool takesValue = !validateOnly && (arg == "--duration" || arg == "--method" ||
+                                              arg == "--integrator" || arg == "--dt" ||
+                                              arg == "--trajectory");
+    if (takesValue) {
+      if (i + 1 >= args.size()) return failure(QString("%1 needs a value").arg(arg));
+      const QString value = args[++i];
+      if (arg == "--duration") {
+        const auto d = parseNumber(value, 0.0, 1e12);
+        if (!d) return failure(QString("--duration must be a number of seconds from 0 to 1e12 (got '%1')").arg(value));
+        run.duration = *d;
+      } else if (arg == "--dt") {
+        const auto d = parseNumber(value, -1e300, 1e300);
+        if (!d) return failure(QString("--dt must be a number of seconds (got '%1')").arg(value));
+        run.timeStep = *d;  // range checked by scene validation with the rest of the world
+      } else if (arg == "--method") {
+        run.method = value;
+      } else if (arg == "--integrator") {
+        run.integrator = value;
+      } else {
+        run.trajectoryPath = value;
+      }
+    } else if (!validateOnly && arg == "--json") {
+      run.json = true;
+    } else if (arg.startsWith("-") && arg != "-") {
+      return failure(QString("unknown option '%1'").arg(arg));
+    } else if (haveScene) {
+      return failure(QString("unexpected argument '%1': give one scene file").arg(arg));
+    } else {
+      run.scenePath = arg;
+      haveScene = true;
+    }
+  }
+  if (!haveScene) return failure("no scene file given");
+  return {command, {}};
+}
+
+}  // namespace
+
+ParseResult parseArguments(const QStringList& arguments) {
+  if (arguments.isEmpty()) return failure("no command given");
+  const QString& verb = arguments.first();
+  const QStringList rest = arguments.mid(1);
+  if (verb == "--help" || verb == "-h" || verb == "help") return success(Command::Help);
+  if (verb == "--version") return success(Command::Version);
+  if (verb == "run") return parseRun(rest, false);
+  if (verb == "validate") return parseRun(rest, true);
+  if (verb == "bench") {
+    Command command;
+    command.kind = Command::Bench;
+    for (const QString& arg : rest) {
+      if (arg == "--quick")
+        command.bench.quick = true;
+      else
+        return failure(QString("unknown bench option '%1'").arg(arg));
+    }
+    return {command, {}};
+  }
+  return failure(QString("unknown command '%1'").arg(verb));
+}
+
+QString usageText() {
+  return QStringLiteral(
+      "Usage:\n"
+      "  carom-cli run SCENE [--duration S] [--method exact|swept|discrete]\n"
+      "                      [--integrator explicit-euler|symplectic-euler|velocity-verlet]\n"
+      "                      [--dt S] [--trajectory FILE.csv] [--json]\n"
+      "  carom-cli validate SCENE\n"
+      "  carom-cli bench [--quick]\n"
+      "  carom-cli --help | --version\n"
+      "Exit codes: 0 success, 2 bad input, 1 internal failure.\n");
+}
+
+}  // namespace carom::cli

@@ -1,0 +1,13 @@
+#pragma once
+// `carom-cli run`: runs a scene and reports what happened, as text or as one JSON object.
+
+#include "cli_arguments.h"
+#include "scene.h"
+
+#include <QTextStream>
+
+namespace carom::cli {
+
+int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QTextStream& err);
+
+}  // namespace carom::cli

@@ -1,0 +1,473 @@
+#include "scene_file.h"
+
+#include "tolerances.h"
+#include "validation.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonParseError>
+#include <QJsonValue>
+#include <QSaveFile>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string_view>
+#include <utility>
+
+namespace carom {
+namespace {
+
+constexpr int kFormatVersion = 1;
+constexpr char kFormatName[] = "carom-scene";
+
+const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", "balls"};
+const QStringList kWorldKeys{"gravity", "timeStep", "restitution", "method", "integrator"};
+const QStringList kPlaneKeys{"name", "point", "normal", "restitution", "color"};
+const QStringList kCylinderKeys{"name", "point", "axis", "radius", "restitution", "color"};
+const QStringList kBallKeys{"name", "position",    "velocity", "radius",
+                            "mass", "restitution", "color"};
+
+// Parsing stops at the first problem; it travels to parseScene as this exception.
+struct ParseFailure {
+  QString path;
+  QString what;
+};
+
+[[noreturn]] void fail(const QString& path, const QString& what) {
+  throw ParseFailure{path, what};
+}
+
+QString describeType(const QJsonValue& value) {
+  switch (value.type()) {
+    case QJsonValue::Null:
+      return "null";
+    case QJsonValue::Bool:
+      return "a boolean";
+    case QJsonValue::Double:
+      return "a number";
+    case QJsonValue::String:
+      return "a string";
+    case QJsonValue::Array:
+      return "an array";
+    case QJsonValue::Object:
+      return "an object";
+    case QJsonValue::Undefined:
+      break;
+  }
+  return "nothing";
+}
+
+// Shortest text that reads back as the same double; JSON has no infinities or NaN, so a scene
+// holding one is written with null there (and refused when read back).
+QByteArray numberText(double value) {
+  if (!std::isfinite(value)) return "null";
+  return QByteArray::number(value, 'g', QLocale::FloatingPointShortest);
+}
+
+QString quoted(const QString& text) {
+  return '"' + text + '"';
+}
+
+QString member(const QString& path, const QString& key) {
+  return path.isEmpty() ? key : path + '.' + key;
+}
+
+QString element(const QString& path, qsizetype index) {
+  return path + '[' + QString::number(index) + ']';
+}
+
+std::string compactJson(const QJsonObject& object) {
+  return QJsonDocument(object).toJson(QJsonDocument::Compact).toStdString();
+}
+
+// The fields of one JSON object, read by key; keys it is not asked about are the unknown ones.
+class ObjectReader {
+ public:
+  ObjectReader(const QJsonObject& object, QString path, const QStringList& knownKeys)
+      : object_(object), path_(std::move(path)), knownKeys_(knownKeys) {}
+
+  bool has(const QString& key) const { return object_.contains(key); }
+  QString pathOf(const QString& key) const { return member(path_, key); }
+
+  QJsonValue required(const QString& key) const {
+    if (!has(key)) fail(pathOf(key), "is required but missing");
+    return object_.value(key);
+  }
+
+  double number(const QString& key) const { return toNumber(required(key), pathOf(key)); }
+  double number(const QString& key, double fallback) const {
+    return has(key) ? number(key) : fallback;
+  }
+  std::optional<double> optionalNumber(const QString& key) const {
+    if (!has(key)) return std::nullopt;
+    return number(key);
+  }
+
+  Vec3 vector(const QString& key) const {
+    const QString path = pathOf(key);
+    const QJsonValue value = required(key);
+    const QString expected = "expected an array of 3 numbers, got ";
+    if (!value.isArray()) fail(path, expected + describeType(value));
+    const QJsonArray array = value.toArray();
+    if (array.size() != 3)
+      fail(path, expected + "an array of " + QString::number(array.size()) +
+                     (array.size() == 1 ? " value" : " values"));
+    return Vec3(toNumber(array[0], element(path, 0)), toNumber(array[1], element(path, 1)),
+                toNumber(array[2], element(path, 2)));
+  }
+  Vec3 vector(const QString& key, const Vec3& fallback) const {
+    return has(key) ? vector(key) : fallback;
+  }
+
+  QString string(const QString& key) const {
+    const QJsonValue value = required(key);
+    if (!value.isString()) fail(pathOf(key), "expected a string, got " + describeType(value));
+    return value.toString();
+  }
+  std::string optionalString(const QString& key) const {
+    return has(key) ? string(key).toStdString() : std::string();
+  }
+
+  QJsonObject object(const QString& key) const {
+    const QJsonValue value = required(key);
+    if (!value.isObject()) fail(pathOf(key), "expected an object, got " + describeType(value));
+    return value.toObject();
+  }
+
+  // Calls `readItem(object, path)` for each entry of the array under `key` (none when absent).
+  void forEach(const QString& key, std::size_t limit,
+               const std::function<void(const QJsonObject&, const QString&)>& readItem) const {
+    if (!has(key)) return;
+    const QString path = pathOf(key);
+    const QJsonValue value = object_.value(key);
+    if (!value.isArray()) fail(path, "expected an array, got " + describeType(value));
+    const QJsonArray array = value.toArray();
+    // Refused before building anything, as validation would after building it all.
+    if (static_cast<std::size_t>(array.size()) > limit)
+      fail(path, QString("must have at most %1 entries (got %2)").arg(limit).arg(array.size()));
+    for (qsizetype i = 0; i < array.size(); ++i) {
+      const QJsonValue item = array[i];
+      if (!item.isObject()) fail(element(path, i), "expected an object, got " + describeType(item));
+      readItem(item.toObject(), element(path, i));
+    }
+  }
+
+  // The unknown keys as the text of a JSON object, or empty when there are none.
+  std::string extra() const {
+    QJsonObject unknown;
+    for (auto it = object_.begin(); it != object_.end(); ++it)
+      if (!knownKeys_.contains(it.key())) unknown.insert(it.key(), it.value());
+    return unknown.isEmpty() ? std::string() : compactJson(unknown);
+  }
+
+ private:
+  static double toNumber(const QJsonValue& value, const QString& path) {
+    if (!value.isDouble()) fail(path, "expected a number, got " + describeType(value));
+    const double number = value.toDouble();
+    // Qt's parser already refuses numbers beyond the range of double; this keeps it that way.
+    if (!std::isfinite(number)) fail(path, "must be finite");
+    return number;
+  }
+
+  const QJsonObject& object_;
+  QString path_;
+  const QStringList& knownKeys_;
+};
+
+void readInfo(const ObjectReader& reader, ObjectInfo& info) {
+  info.restitution = reader.optionalNumber("restitution");
+  info.name = reader.optionalString("name");
+  info.color = reader.optionalString("color");
+  info.extra = reader.extra();
+}
+
+void checkFormatAndVersion(const ObjectReader& top) {
+  const QJsonValue format = top.required("format");
+  if (format.toString() != kFormatName)
+    fail("format", "expected " + quoted(kFormatName) + ", got " +
+                       (format.isString() ? quoted(format.toString()) : describeType(format)));
+
+  const QJsonValue version = top.required("version");
+  if (!version.isDouble()) fail("version", "expected an integer, got " + describeType(version));
+  const double number = version.toDouble();
+  const QString text = QString::fromLatin1(numberText(number));
+  if (number != std::floor(number)) fail("version", "expected an integer, got " + text);
+  if (number < 1) fail("version", "must be at least 1 (got " + text + ")");
+  if (number > kFormatVersion)
+    fail("version", QString("version %1 was written by a newer Carom; this one reads version %2")
+                        .arg(text)
+                        .arg(kFormatVersion));
+}
+
+template <typename Value>
+Value readName(const ObjectReader& reader, const QString& key, Value fallback,
+               std::optional<Value> (*fromName)(std::string_view),
+               std::vector<std::string_view> (*allNames)(), const QString& what) {
+  if (!reader.has(key)) return fallback;
+  const QString name = reader.string(key);
+  if (const auto value = fromName(name.toStdString())) return *value;
+  QStringList valid;
+  for (std::string_view entry : allNames())
+    valid << QString::fromUtf8(entry.data(), static_cast<qsizetype>(entry.size()));
+  fail(reader.pathOf(key),
+       "unknown " + what + ' ' + quoted(name) + "; use one of: " + valid.join(", "));
+}
+
+World readWorld(const QJsonObject& object) {
+  const ObjectReader reader(object, "world", kWorldKeys);
+  const World defaults;
+  World world;
+  world.gravity = reader.vector("gravity", defaults.gravity);
+  world.timeStep = reader.number("timeStep", defaults.timeStep);
+  world.restitution = reader.number("restitution", defaults.restitution);
+  world.method =
+      readName(reader, "method", defaults.method, &methodFromName, &methodNames, "method");
+  world.integrator = readName(reader, "integrator", defaults.integrator, &integratorFromName,
+                              &integratorNames, "integrator");
+  world.extra = reader.extra();
+  return world;
+}
+
+Scene readScene(const QJsonObject& object) {
+  const ObjectReader top(object, QString(), kTopKeys);
+  // Format and version first: a newer file may mean something else by its other fields.
+  checkFormatAndVersion(top);
+
+  Scene scene;
+  if (top.has("world")) scene.world = readWorld(top.object("world"));
+  top.forEach("planes", tolerance::kMaxPlanes, [&](const QJsonObject& item, const QString& path) {
+    const ObjectReader reader(item, path, kPlaneKeys);
+    Plane plane;
+    plane.point = reader.vector("point");
+    plane.normal = reader.vector("normal");
+    readInfo(reader, plane);
+    scene.planes.push_back(std::move(plane));
+  });
+  top.forEach("cylinders", tolerance::kMaxCylinders,
+              [&](const QJsonObject& item, const QString& path) {
+                const ObjectReader reader(item, path, kCylinderKeys);
+                Cylinder cylinder;
+                cylinder.point = reader.vector("point");
+                cylinder.axis = reader.vector("axis");
+                cylinder.radius = reader.number("radius");
+                readInfo(reader, cylinder);
+                scene.cylinders.push_back(std::move(cylinder));
+              });
+  top.forEach("balls", tolerance::kMaxBalls, [&](const QJsonObject& item, const QString& path) {
+    const ObjectReader reader(item, path, kBallKeys);
+    const Ball defaults;
+    Ball ball;
+    ball.position = reader.vector("position");
+    ball.velocity = reader.vector("velocity", defaults.velocity);
+    ball.radius = reader.number("radius");
+    ball.mass = reader.number("mass", defaults.mass);
+    readInfo(reader, ball);
+    scene.balls.push_back(std::move(ball));
+  });
+  scene.extra = top.extra();
+  return scene;
+}
+
+QString errorLine(const QString& sourceName, const QString& path, const QString& what) {
+  return sourceName + ": " + (path.isEmpty() ? what : path + ": " + what);
+}
+
+// 1-based line and column (in characters) of a byte offset into UTF-8 text.
+std::pair<int, int> lineAndColumn(const QByteArray& text, qsizetype offset) {
+  offset = std::clamp<qsizetype>(offset, 0, text.size());
+  int line = 1;
+  int column = 1;
+  for (qsizetype i = 0; i < offset; ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte == '\n') {
+      ++line;
+      column = 1;
+    } else if ((byte & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// Writing: a fixed key order and one line per plane, cylinder and ball keep files readable and
+// make saving deterministic, so that saving a loaded file again gives the same bytes.
+
+QByteArray jsonText(const QJsonValue& value) {
+  // QJsonDocument holds only arrays and objects: wrap the value in an array and unwrap it.
+  const QByteArray text = QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact);
+  return text.mid(1, text.size() - 2);
+}
+
+QByteArray jsonString(std::string_view text) {
+  return jsonText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
+}
+
+QByteArray jsonVector(const Vec3& v) {
+  return '[' + numberText(v.x()) + ", " + numberText(v.y()) + ", " + numberText(v.z()) + ']';
+}
+
+// The "key": value pairs of one object being written.
+class JsonFields {
+ public:
+  void add(std::string_view key, const QByteArray& value) {
+    fields_ << jsonString(key) + ": " + value;
+  }
+  // The unknown keys kept in `extra`, after the known ones.
+  void addExtra(const std::string& extra, const QStringList& knownKeys) {
+    if (extra.empty()) return;
+    const QJsonObject object = QJsonDocument::fromJson(QByteArray::fromStdString(extra)).object();
+    for (auto it = object.begin(); it != object.end(); ++it) {
+      // A key that a field also writes would appear twice; the field wins.
+      if (knownKeys.contains(it.key())) continue;
+      fields_ << jsonText(it.key()) + ": " + jsonText(it.value());
+    }
+  }
+  void addInfo(const ObjectInfo& info) {
+    if (info.restitution) add("restitution", numberText(*info.restitution));
+    if (!info.color.empty()) add("color", jsonString(info.color));
+  }
+
+  QByteArray oneLine() const { return '{' + fields_.join(", ") + '}'; }
+  QByteArray indented(const QByteArray& indent) const {
+    return "{\n" + indent + "  " + fields_.join(",\n" + indent + "  ") + '\n' + indent + '}';
+  }
+
+ private:
+  QByteArrayList fields_;
+};
+
+JsonFields startFields(const ObjectInfo& info) {
+  JsonFields fields;
+  if (!info.name.empty()) fields.add("name", jsonString(info.name));
+  return fields;
+}
+
+QByteArray listText(const QByteArrayList& items) {
+  if (items.isEmpty()) return "[]";
+  return "[\n    " + items.join(",\n    ") + "\n  ]";
+}
+
+}  // namespace
+
+SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
+  QJsonParseError parseError;
+  const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
+  if (parseError.error != QJsonParseError::NoError) {
+    const auto [line, column] = lineAndColumn(json, parseError.offset);
+    return {std::nullopt, sourceName + QString(": invalid JSON at line %1, column %2: %3")
+                                           .arg(line)
+                                           .arg(column)
+                                           .arg(parseError.errorString())};
+  }
+  if (!document.isObject())
+    return {std::nullopt, sourceName + ": expected a JSON object at the top, got an array"};
+
+  Scene scene;
+  try {
+    scene = readScene(document.object());
+  } catch (const ParseFailure& failure) {
+    return {std::nullopt, errorLine(sourceName, failure.path, failure.what)};
+  }
+  const auto errors = validateScene(scene, 1);
+  if (!errors.empty())
+    return {std::nullopt, sourceName + ": " + QString::fromStdString(errors.front().text())};
+  return {std::move(scene), QString()};
+}
+
+SceneLoadResult loadSceneFile(const QString& fileName) {
+  QFile file(fileName);
+  if (!file.open(QIODevice::ReadOnly))
+    return {std::nullopt, fileName + ": cannot open the file: " + file.errorString()};
+  const QString tooLarge =
+      fileName + QString(": the file is larger than the limit of %1 MiB for scene files")
+                     .arg(kMaxSceneFileBytes / (1024 * 1024));
+  // The size check comes before reading; reading at most one byte more also catches files that
+  // grow meanwhile or report no size.
+  if (file.size() > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
+  const QByteArray json = file.read(kMaxSceneFileBytes + 1);
+  if (file.error() != QFileDevice::NoError)
+    return {std::nullopt, fileName + ": cannot read the file: " + file.errorString()};
+  if (json.size() > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
+  return parseScene(json, fileName);
+}
+
+QByteArray serializeScene(const Scene& scene) {
+  JsonFields top;
+  top.add("format", jsonString(kFormatName));
+  top.add("version", QByteArray::number(kFormatVersion));
+  // Unknown top-level keys such as "units" go right after the header, where a reader looks.
+  top.addExtra(scene.extra, kTopKeys);
+
+  const World& world = scene.world;
+  JsonFields worldFields;
+  worldFields.add("gravity", jsonVector(world.gravity));
+  worldFields.add("timeStep", numberText(world.timeStep));
+  worldFields.add("restitution", numberText(world.restitution));
+  worldFields.add("method", jsonString(methodName(world.method)));
+  worldFields.add("integrator", jsonString(integratorName(world.integrator)));
+  worldFields.addExtra(world.extra, kWorldKeys);
+  top.add("world", worldFields.indented("  "));
+
+  QByteArrayList planes;
+  for (const Plane& plane : scene.planes) {
+    JsonFields fields = startFields(plane);
+    fields.add("point", jsonVector(plane.point));
+    fields.add("normal", jsonVector(plane.normal));
+    fields.addInfo(plane);
+    fields.addExtra(plane.extra, kPlaneKeys);
+    planes << fields.oneLine();
+  }
+  top.add("planes", listText(planes));
+
+  QByteArrayList cylinders;
+  for (const Cylinder& cylinder : scene.cylinders) {
+    JsonFields fields = startFields(cylinder);
+    fields.add("point", jsonVector(cylinder.point));
+    fields.add("axis", jsonVector(cylinder.axis));
+    fields.add("radius", numberText(cylinder.radius));
+    fields.addInfo(cylinder);
+    fields.addExtra(cylinder.extra, kCylinderKeys);
+    cylinders << fields.oneLine();
+  }
+  top.add("cylinders", listText(cylinders));
+
+  QByteArrayList balls;
+  for (const Ball& ball : scene.balls) {
+    JsonFields fields = startFields(ball);
+    fields.add("position", jsonVector(ball.position));
+    fields.add("velocity", jsonVector(ball.velocity));
+    fields.add("radius", numberText(ball.radius));
+    fields.add("mass", numberText(ball.mass));
+    fields.addInfo(ball);
+    fields.addExtra(ball.extra, kBallKeys);
+    balls << fields.oneLine();
+  }
+  top.add("balls", listText(balls));
+
+  return top.indented("") + '\n';
+}
+
+bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) {
+  const auto failWith = [&](const QString& reason) {
+    if (error) *error = fileName + ": cannot save: " + reason;
+    return false;
+  };
+  QSaveFile file(fileName);
+  if (!file.open(QIODevice::WriteOnly)) return failWith(file.errorString());
+  const QByteArray json = serializeScene(scene);
+  if (file.write(json) != json.size()) {
+    const QString reason = file.errorString();
+    file.cancelWriting();
+    return failWith(reason);
+  }
+  // Until commit() the old file stays as it was; commit renames the new one over it.
+  if (!file.commit()) return failWith(file.errorString());
+  if (error) error->clear();
+  return true;
+}
+
+}  // namespace carom

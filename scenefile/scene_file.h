@@ -1,0 +1,33 @@
+#pragma once
+// Scene files: the JSON format of docs/scene-format.md, read and written with QtCore.
+
+#include "scene.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <optional>
+
+namespace carom {
+
+struct SceneLoadResult {
+  std::optional<Scene> scene;  // set on success
+  QString error;               // on failure: "<file>: <field path>: <what is wrong>"
+};
+
+// Reads a scene from JSON text; `sourceName` starts every error message. The scene is validated
+// (validateScene), so a returned scene is ready to simulate.
+SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName);
+SceneLoadResult loadSceneFile(const QString& fileName);
+
+// Indented JSON of format version 1; unknown keys kept in the scene's `extra` fields are written
+// back, so that saving what was loaded loses nothing.
+QByteArray serializeScene(const Scene& scene);
+// Replaces `fileName` atomically: on failure the old file is untouched and `*error` (when given)
+// says why.
+bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error);
+
+// Files larger than this are refused unread.
+inline constexpr qint64 kMaxSceneFileBytes = qint64{256} * 1024 * 1024;
+
+}  // namespace carom

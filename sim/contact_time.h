@@ -1,0 +1,34 @@
+#pragma once
+// When shapes first touch: the contact-time math for every shape pair, in one place.
+//
+// Each function takes the states at a common "now" and returns the time from now until the
+// shapes start to overlap, or +infinity when that does not happen before `horizon`. Shapes that
+// already touch (or overlap) and approach give 0: such a contact fires at once. A contact that
+// only grazes (touches and turns away) is not a collision. Times are never negative.
+
+#include "shapes.h"
+
+namespace carom {
+
+// A ball's state at "now": centre, velocity and constant acceleration.
+struct BallPath {
+  Vec3 position;
+  Vec3 velocity;
+  Vec3 acceleration;
+};
+
+double ballPlaneContactTime(const BallPath& ball, double radius, const PlaneShape& plane,
+                            double horizon);
+
+double ballCylinderContactTime(const BallPath& ball, double radius, const CylinderShape& cylinder,
+                               double horizon);
+
+// Balls a and b with radii summing to `radiusSum`.
+double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSum, double horizon);
+
+// Time until coordinate x(t) = x0 + v t + a t^2 / 2 first passes `bound` going upwards
+// (x0 <= bound), or downwards when `upwards` is false; for moving balls between grid cells.
+double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
+                            double horizon);
+
+}  // namespace carom

@@ -1,0 +1,101 @@
+#pragma once
+// The earliest-contact-first loop shared by the `exact` and `swept` methods: every ball carries
+// one predicted event (a contact or a move to the next grid cell) in the event queue; the
+// earliest is processed, only the balls it changed are predicted again, and predictions that
+// involved a ball changed since are dropped when their time comes (collision counters).
+//
+// Balls move lazily: each keeps its path from the time it last changed, so an event costs
+// O(neighbours + log N), not O(N).
+
+#include "bodies.h"
+#include "cell_grid.h"
+#include "contact_time.h"
+#include "event_queue.h"
+#include "motion.h"
+#include "run_stats.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace carom {
+
+class EventEngine {
+ public:
+  // `pathAcceleration` is what balls follow between events: gravity for `exact`, zero for the
+  // straight sweeps of `swept`. `gravity` drives the rest policy in both.
+  EventEngine(const Bodies& bodies, const std::vector<BallState>& state, double now,
+              const Vec3& gravity, const Vec3& pathAcceleration, double collapseSpeed);
+
+  // Processes every event up to and including time `end`, then stands at `end`.
+  void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log);
+
+  double now() const { return now_; }
+  int ballCount() const { return static_cast<int>(particles_.size()); }
+  // The grid in use, for run reports ("cell grid 20x20x20, 8000 cells").
+  std::string gridSummary() const;
+  BallState stateOf(int ball) const;
+  std::vector<BallState> state() const;
+
+  // Replaces every ball's velocity at now() (for the integrator kicks of `swept`) and predicts
+  // all events again.
+  void setVelocities(const std::vector<Vec3>& velocities);
+
+ private:
+  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, CellUp, CellDown };
+  struct Particle {
+    Motion motion;
+    int cell = 0;
+    std::uint32_t counter = 0;  // changes whenever the path changes
+    int collisionsThisInstant = 0;
+    double instant = 0.0;
+    bool resting = false;
+  };
+  struct Prediction {
+    EventKind kind = EventKind::None;
+    std::int8_t axis = 0;
+    int other = -1;
+    std::uint32_t otherCounter = 0;
+  };
+  struct StaticRef {
+    bool cylinder;
+    int index;
+  };
+
+  void buildGrid(const std::vector<BallState>& state);
+  void buildStaticLists();
+  void predictAll();
+  void predict(int i);
+  // After ball i came to rest: a resting ball has no event of its own, so balls about to hit
+  // it must be told.
+  void warnNeighbours(int i);
+  void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
+  void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
+  // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
+  // n pointing to the ball. Returns false when the contact turned out not to be a collision.
+  bool collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats);
+  void changed(int i);
+  void putToRest(int i, RunStats& stats);
+  void wake(int i, RunStats& stats);
+  bool supported(int i) const;
+  BallPath pathAt(int i, double t) const;
+  void notePenetration(double overlap, RunStats& stats) const;
+  template <typename F>
+  void forEachNeighbour(int i, F&& f) const;
+
+  const Bodies& bodies_;
+  Vec3 gravity_;
+  Vec3 pathAcceleration_;
+  double collapseSpeed_;
+  double now_;
+  std::vector<Particle> particles_;
+  std::vector<Prediction> predictions_;
+  std::vector<double> restSpeed_;
+  CellGrid grid_;
+  CellMembership members_;
+  std::vector<int> staticStart_;  // CSR: static shapes near each cell
+  std::vector<StaticRef> statics_;
+  EventQueue queue_;
+};
+
+}  // namespace carom

@@ -1,0 +1,42 @@
+// `exact`: event-driven. Balls follow their true paths (parabolas under gravity) from event to
+// event; every contact time is solved for.
+
+#include "event_engine.h"
+#include "stepper.h"
+
+namespace carom {
+namespace {
+
+class ExactStepper final : public Stepper {
+ public:
+  ExactStepper(const Bodies& bodies, const StepperSettings& settings,
+               const std::vector<BallState>& state, double now)
+      : gravity_(settings.gravity),
+        engine_(bodies, state, now, settings.gravity, settings.gravity, settings.collapseSpeed) {}
+
+  void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
+    engine_.advanceTo(end, stats, log);
+  }
+  double now() const override { return engine_.now(); }
+  std::vector<BallState> state() const override { return engine_.state(); }
+  std::vector<std::string> notes() const override {
+    std::vector<std::string> notes{"exact: event-driven, contact times solved, never sampled"};
+    notes.push_back(gravity_.isZero() ? "no gravity: straight paths, quadratic contact times"
+                                      : "gravity: parabolic paths; cylinder contacts are quartics");
+    notes.push_back(engine_.gridSummary());
+    return notes;
+  }
+
+ private:
+  Vec3 gravity_;
+  EventEngine engine_;
+};
+
+}  // namespace
+
+std::unique_ptr<Stepper> makeExactStepper(const Bodies& bodies, const StepperSettings& settings,
+                                          const std::vector<BallState>& state, double now) {
+  return std::make_unique<ExactStepper>(bodies, settings, state, now);
+}
+
+}  // namespace carom

@@ -1,0 +1,50 @@
+#include "measures.h"
+
+#include "broad_phase.h"
+
+#include <algorithm>
+
+namespace carom {
+
+OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions) {
+  OverlapReport report;
+  for (int i = 0; i < static_cast<int>(positions.size()); ++i) {
+    const Vec3& p = positions[i];
+    const double r = bodies.radius[i];
+    bool escaped = false;
+    for (const PlaneShape& plane : bodies.planes) {
+      const double gap = plane.gap(p, r);
+      report.maxPenetration = std::max(report.maxPenetration, -gap);
+      escaped = escaped || gap + r < 0.0;
+    }
+    for (const CylinderShape& cylinder : bodies.cylinders) {
+      const double gap = cylinder.gap(p, r);
+      report.maxPenetration = std::max(report.maxPenetration, -gap);
+      escaped = escaped || gap + r < 0.0;
+    }
+    if (escaped) ++report.escaped;
+  }
+  forEachCloseBallPair(positions, bodies.radius, 0.0, [&](int i, int j) {
+    const double overlap =
+        bodies.radius[i] + bodies.radius[j] - (positions[i] - positions[j]).norm();
+    report.maxPenetration = std::max(report.maxPenetration, overlap);
+  });
+  return report;
+}
+
+double kineticEnergy(const Bodies& bodies, const std::vector<Vec3>& velocities) {
+  double sum = 0.0;
+  for (int i = 0; i < static_cast<int>(velocities.size()); ++i)
+    sum += 0.5 * bodies.mass[i] * velocities[i].squaredNorm();
+  return sum;
+}
+
+double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
+                       const std::vector<Vec3>& positions) {
+  double sum = 0.0;
+  for (int i = 0; i < static_cast<int>(positions.size()); ++i)
+    sum -= bodies.mass[i] * gravity.dot(positions[i]);
+  return sum;
+}
+
+}  // namespace carom

@@ -1,0 +1,21 @@
+#pragma once
+// Checks of a state against the scene, independent of how the state was computed.
+
+#include "bodies.h"
+
+#include <vector>
+
+namespace carom {
+
+struct OverlapReport {
+  double maxPenetration = 0.0;  // largest overlap of a ball with a ball, plane or cylinder
+  int escaped = 0;              // balls whose centre is behind a plane or inside a cylinder
+};
+
+OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions);
+
+double kineticEnergy(const Bodies& bodies, const std::vector<Vec3>& velocities);
+// Relative to the origin: the sum of -m g . p.
+double potentialEnergy(const Bodies& bodies, const Vec3& gravity, const std::vector<Vec3>& positions);
+
+}  // namespace carom

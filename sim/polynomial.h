@@ -1,0 +1,36 @@
+#pragma once
+// Contact times as polynomial roots. The gap between two shapes along their paths (ball on a
+// parabola against a plane, a cylinder or another ball) is a polynomial of degree at most 4 in
+// time; the simulator needs the first time that gap turns negative, never late and never missed.
+
+#include <array>
+
+namespace carom {
+
+// f(t) = c[0] + c[1] t + c[2] t^2 + c[3] t^3 + c[4] t^4 (higher coefficients may be zero).
+struct Polynomial {
+  std::array<double, 5> c{};
+
+  double operator()(double t) const;  // Horner
+  Polynomial derivative() const;
+  // Highest index with a non-zero coefficient, -1 for the zero polynomial.
+  int degree() const;
+};
+
+// The earliest time t in [0, tMax] at which the gap f (> 0 apart, < 0 overlapping) starts to
+// become negative, or +infinity when there is none (tMax may be +infinity):
+// * f(0) <= 0 and approaching at 0 (the first non-zero derivative f'(0), f''(0), ... is negative)
+//   gives 0: a contact that touches or overlaps and closes in fires at once. An overlap that is
+//   opening up is not an entry; the next one comes after f has been positive again.
+// * Otherwise the smallest t in (0, tMax] where f crosses from > 0 to < 0. A tangential touch (f
+//   reaches 0 and turns back up) is not an entry.
+// Signs are decided in about twice the working precision, so only a dip or touch shallower than
+// ~1e-30 of the terms' size is ambiguous. The result is the lower end of a bracket narrowed to
+// adjacent doubles: at most round-off before the true crossing, and f is not negative there.
+// Non-finite coefficients, a NaN or a negative tMax give +infinity. No allocation.
+double firstEntry(const Polynomial& f, double tMax);
+
+// The same for f(t) = a t^2 + b t + c, in closed form.
+double firstEntryQuadratic(double a, double b, double c, double tMax);
+
+}  // namespace carom

@@ -1,0 +1,42 @@
+#include "response.h"
+
+#include <cmath>
+
+namespace carom {
+
+double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
+                       double restitution, double minimumSeparation) {
+  const double approach = (va - vb).dot(n);
+  const double totalInverse = inverseMassA + inverseMassB;
+  if (totalInverse <= 0.0) return approach;
+  // Change of relative normal speed, shared in proportion to inverse mass; written with weights
+  // rather than an impulse so that mass ratios of 1e12 lose nothing to rounding.
+  const double change = approach + separationSpeed(approach, restitution, minimumSeparation);
+  va -= (change * (inverseMassA / totalInverse)) * n;
+  vb += (change * (inverseMassB / totalInverse)) * n;
+  return approach;
+}
+
+bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation) {
+  const double approach = -v.dot(n);
+  Vec3 tangential = v + approach * n;
+  const double bounce = restitution * approach;
+  double separation = bounce;
+  bool addedEnergy = false;
+  if (bounce < minimumSeparation) {
+    separation = minimumSeparation;
+    // Energy left for the tangential motion if the bounce is to add none.
+    const double budget = tangential.squaredNorm() + approach * approach -
+                          minimumSeparation * minimumSeparation;
+    const double tangential2 = tangential.squaredNorm();
+    if (budget >= 0.0 && tangential2 > 0.0) {
+      if (budget < tangential2) tangential *= std::sqrt(budget / tangential2);
+    } else {
+      addedEnergy = true;
+    }
+  }
+  v = tangential + separation * n;
+  return addedEnergy;
+}
+
+}  // namespace carom

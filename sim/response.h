@@ -1,0 +1,27 @@
+#pragma once
+// Collision response: new velocities for a contact, for any masses, with restitution.
+
+#include "scene.h"
+
+namespace carom {
+
+// The speed at which a contact separates: restitution times the approach speed, but never less
+// than `minimum` (the rest policy's floor, see docs/physics.md).
+inline double separationSpeed(double approach, double restitution, double minimum) {
+  const double s = restitution * approach;
+  return s < minimum ? minimum : s;
+}
+
+// Two balls touching along unit normal `n` (from a to b). Inverse masses may be zero for an
+// immovable ball. Only the normal components change; momentum is conserved for finite masses.
+// Returns the approach speed.
+double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
+                       double restitution, double minimumSeparation);
+
+// A ball against an immovable surface with unit normal `n` pointing to the ball. When the
+// minimum separation speed exceeds what restitution gives, the extra normal speed is taken from
+// the tangential motion where it has enough, so the floor never adds energy in that case.
+// Returns true when it had to add energy (the ball was too slow in every direction).
+bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation);
+
+}  // namespace carom

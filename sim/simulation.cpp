@@ -1,0 +1,123 @@
+#include "simulation.h"
+
+#include "measures.h"
+#include "rest_policy.h"
+#include "stepper.h"
+
+#include <cmath>
+
+namespace carom {
+
+Simulation::Simulation(const Scene& scene) : world_(scene.world), bodies_(makeBodies(scene)) {
+  std::vector<BallState> state;
+  double mass = 0.0, twiceKinetic = 0.0;
+  for (const Ball& ball : scene.balls) {
+    state.push_back({ball.position, ball.velocity, false});
+    mass += ball.mass;
+    twiceKinetic += ball.mass * ball.velocity.squaredNorm();
+  }
+  collapseSpeed_ = collapseSpeed(mass > 0.0 ? std::sqrt(twiceKinetic / mass) : 0.0);
+  rebuildStepper(state, 0.0);
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::rebuildStepper(const std::vector<BallState>& state, double now) {
+  const StepperSettings settings{world_.gravity, world_.timeStep, world_.integrator,
+                                 collapseSpeed_};
+  switch (world_.method) {
+    case Method::Exact:
+      stepper_ = makeExactStepper(bodies_, settings, state, now);
+      break;
+    case Method::Swept:
+      stepper_ = makeSweptStepper(bodies_, settings, state, now);
+      break;
+    case Method::Discrete:
+      stepper_ = makeDiscreteStepper(bodies_, settings, state, now);
+      break;
+  }
+}
+
+void Simulation::advance(double duration) {
+  if (!(duration > 0.0)) return;
+  stepper_->advanceTo(stepper_->now() + duration, stats_,
+                      logCollisions_ ? &collisionLog_ : nullptr);
+}
+
+double Simulation::time() const { return stepper_->now(); }
+
+void Simulation::setGravity(const Vec3& gravity) {
+  const std::vector<BallState> current = state();
+  world_.gravity = gravity;
+  // Resting balls rested against the old gravity: let them all settle again.
+  std::vector<BallState> moving = current;
+  for (BallState& s : moving) s.resting = false;
+  rebuildStepper(moving, time());
+}
+
+void Simulation::setTimeStep(double timeStep) {
+  world_.timeStep = timeStep;
+  rebuildStepper(state(), time());
+}
+
+void Simulation::setMethod(Method method) {
+  const std::vector<BallState> current = state();
+  const double now = time();
+  world_.method = method;
+  rebuildStepper(current, now);
+}
+
+void Simulation::setIntegrator(Integrator integrator) {
+  const std::vector<BallState> current = state();
+  const double now = time();
+  world_.integrator = integrator;
+  rebuildStepper(current, now);
+}
+
+std::vector<BallState> Simulation::state() const { return stepper_->state(); }
+
+std::vector<Vec3> Simulation::positions() const {
+  std::vector<Vec3> out;
+  for (const BallState& s : state()) out.push_back(s.position);
+  return out;
+}
+
+std::vector<Vec3> Simulation::velocities() const {
+  std::vector<Vec3> out;
+  for (const BallState& s : state()) out.push_back(s.velocity);
+  return out;
+}
+
+double Simulation::kineticEnergy() const { return carom::kineticEnergy(bodies_, velocities()); }
+
+double Simulation::potentialEnergy() const {
+  return carom::potentialEnergy(bodies_, world_.gravity, positions());
+}
+
+Vec3 Simulation::momentum() const {
+  Vec3 sum = Vec3::Zero();
+  const std::vector<Vec3> v = velocities();
+  for (int i = 0; i < ballCount(); ++i) sum += bodies_.mass[i] * v[i];
+  return sum;
+}
+
+std::vector<std::string> Simulation::modelNotes() const {
+  std::vector<std::string> notes = stepper_->notes();
+  if (bodies_.cylinders.empty()) notes.push_back("no cylinders: no cylinder tests");
+  if (bodies_.planes.empty()) notes.push_back("no planes: no plane tests");
+  if (world_.method != Method::Discrete) {
+    if (world_.gravity.isZero())
+      notes.push_back("no gravity: nothing comes to rest");
+    else
+      notes.push_back("resting balls are not rescheduled");
+  }
+  return notes;
+}
+
+std::vector<CollisionRecord> Simulation::takeCollisions() {
+  std::vector<CollisionRecord> taken;
+  taken.swap(collisionLog_);
+  return taken;
+}
+
+}  // namespace carom

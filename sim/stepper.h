@@ -1,0 +1,52 @@
+#pragma once
+// One stepping loop per method, behind one interface so the simulation can switch between them
+// live: exact_stepper.cpp, swept_stepper.cpp, discrete_stepper.cpp.
+
+#include "bodies.h"
+#include "run_stats.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace carom {
+
+struct StepperSettings {
+  Vec3 gravity = Vec3::Zero();
+  double timeStep = 1.0 / 60.0;
+  Integrator integrator = Integrator::SymplecticEuler;
+  double collapseSpeed = 0.0;  // rest_policy.h
+};
+
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  // Advances to time `end` >= now(); `log`, when given, receives every collision.
+  virtual void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) = 0;
+  virtual double now() const = 0;
+  virtual std::vector<BallState> state() const = 0;
+  // What this method models, one short phrase each.
+  virtual std::vector<std::string> notes() const = 0;
+};
+
+// `bodies` must outlive the stepper.
+std::unique_ptr<Stepper> makeExactStepper(const Bodies& bodies, const StepperSettings& settings,
+                                          const std::vector<BallState>& state, double now);
+std::unique_ptr<Stepper> makeSweptStepper(const Bodies& bodies, const StepperSettings& settings,
+                                          const std::vector<BallState>& state, double now);
+std::unique_ptr<Stepper> makeDiscreteStepper(const Bodies& bodies, const StepperSettings& settings,
+                                             const std::vector<BallState>& state, double now);
+
+// Splits [now, end] into steps of `timeStep`, the last one shortened, and calls step(h) for each.
+template <typename StepFunction>
+double stepUntil(double now, double end, double timeStep, StepFunction&& step) {
+  while (now < end) {
+    const double remaining = end - now;
+    const bool last = remaining <= timeStep * (1.0 + 1e-12);
+    step(last ? remaining : timeStep);
+    now = last ? end : now + timeStep;
+  }
+  return now;
+}
+
+}  // namespace carom

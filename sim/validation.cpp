@@ -1,0 +1,409 @@
+#include "validation.h"
+
+#include "tolerances.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+
+namespace carom {
+namespace {
+
+namespace tol = tolerance;
+
+// Shortest text that reads back as the same double, with the exponent tidied ("1e300", not
+// "1e+300") so that messages stay short.
+std::string formatNumber(double value, int significantDigits = 0) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
+  char buffer[64];
+  const auto result = significantDigits > 0
+                          ? std::to_chars(buffer, buffer + sizeof buffer, value,
+                                          std::chars_format::general, significantDigits)
+                          : std::to_chars(buffer, buffer + sizeof buffer, value);
+  std::string text(buffer, result.ptr);
+  const auto e = text.find('e');
+  if (e == std::string::npos) return text;
+  std::string exponent = text.substr(e + 1);
+  const bool negative = exponent.front() == '-';
+  if (exponent.front() == '+' || negative) exponent.erase(0, 1);
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+}
+
+// Overlap depths are derived quantities; six digits keep "0.05" from printing as
+// "0.04999999999999999".
+std::string formatDepth(double value) {
+  return formatNumber(value, 6);
+}
+
+std::string indexed(std::string_view list, std::size_t index) {
+  return std::string(list) + "[" + std::to_string(index) + "]";
+}
+
+class ErrorList {
+ public:
+  explicit ErrorList(std::size_t maxErrors) : maxErrors_(maxErrors) {}
+
+  bool full() const { return errors_.size() >= maxErrors_; }
+  void add(std::string path, std::string message) {
+    if (!full()) errors_.push_back({std::move(path), std::move(message)});
+  }
+  std::vector<ValidationError> take() { return std::move(errors_); }
+
+ private:
+  std::size_t maxErrors_;
+  std::vector<ValidationError> errors_;
+};
+
+// The checks below report into `errors` when given one and only answer otherwise, so the same
+// rules decide both whether an object can take part in overlap tests and what is reported.
+class FieldChecker {
+ public:
+  explicit FieldChecker(ErrorList* errors) : errors_(errors) {}
+
+  bool ok() const { return ok_; }
+
+  void finiteBounded(const std::string& path, double value) {
+    if (!std::isfinite(value)) return fail(path, "must be finite");
+    if (std::abs(value) > tol::kMaxMagnitude)
+      fail(path, "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
+                     formatNumber(value) + ")");
+  }
+
+  // Returns whether the vector passed, so that a direction check can follow.
+  bool vector(const std::string& path, const Vec3& value) {
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(value[i])) {
+        fail(path, "must be finite");
+        return false;
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(value[i]) > tol::kMaxMagnitude) {
+        fail(path, "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
+                       formatNumber(value[i]) + ")");
+        return false;
+      }
+    }
+    return true;
+  }
+
+  void direction(const std::string& path, const Vec3& value) {
+    if (vector(path, value) && value.norm() <= tol::kMinDirectionLength)
+      fail(path, "must not be zero-length");
+  }
+
+  void radius(const std::string& path, double value) {
+    if (!std::isfinite(value)) return fail(path, "must be finite");
+    if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
+    if (value < tol::kMinRadius)
+      return fail(path, "must be at least " + formatNumber(tol::kMinRadius) + " (got " +
+                            formatNumber(value) + ")");
+    finiteBounded(path, value);
+  }
+
+  void positiveBetween(const std::string& path, double value, double low, double high) {
+    if (!std::isfinite(value)) return fail(path, "must be finite");
+    if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
+    if (value < low || value > high)
+      fail(path, "must be between " + formatNumber(low) + " and " + formatNumber(high) + " (got " +
+                     formatNumber(value) + ")");
+  }
+
+  void restitution(const std::string& path, const std::optional<double>& value) {
+    if (!value) return;
+    if (!std::isfinite(*value)) return fail(path, "must be finite");
+    if (*value < 0.0 || *value > 1.0)
+      fail(path, "must be between 0 and 1 (got " + formatNumber(*value) + ")");
+  }
+
+  void info(const std::string& prefix, const ObjectInfo& info) {
+    restitution(prefix + ".restitution", info.restitution);
+    if (!isColor(info.color))
+      fail(prefix + ".color", "must be empty or \"#rrggbb\" (got \"" + info.color + "\")");
+  }
+
+ private:
+  static bool isColor(const std::string& text) {
+    if (text.empty()) return true;
+    if (text.size() != 7 || text[0] != '#') return false;
+    return std::all_of(text.begin() + 1, text.end(), [](char c) {
+      return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+    });
+  }
+
+  void fail(const std::string& path, std::string message) {
+    ok_ = false;
+    if (errors_) errors_->add(path, std::move(message));
+  }
+
+  ErrorList* errors_;
+  bool ok_ = true;
+};
+
+bool checkPlane(const Plane& plane, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors);
+  const std::string prefix = indexed("planes", index);
+  check.vector(prefix + ".point", plane.point);
+  check.direction(prefix + ".normal", plane.normal);
+  check.info(prefix, plane);
+  return check.ok();
+}
+
+bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors);
+  const std::string prefix = indexed("cylinders", index);
+  check.vector(prefix + ".point", cylinder.point);
+  check.direction(prefix + ".axis", cylinder.axis);
+  check.radius(prefix + ".radius", cylinder.radius);
+  check.info(prefix, cylinder);
+  return check.ok();
+}
+
+bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors);
+  const std::string prefix = indexed("balls", index);
+  check.vector(prefix + ".position", ball.position);
+  check.vector(prefix + ".velocity", ball.velocity);
+  check.radius(prefix + ".radius", ball.radius);
+  check.positiveBetween(prefix + ".mass", ball.mass, tol::kMinMass, tol::kMaxMass);
+  check.info(prefix, ball);
+  return check.ok();
+}
+
+void checkWorld(const World& world, ErrorList& errors) {
+  FieldChecker check(&errors);
+  check.vector("world.gravity", world.gravity);
+  check.positiveBetween("world.timeStep", world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
+  check.restitution("world.restitution", world.restitution);
+}
+
+bool checkCount(std::string_view list, std::size_t count, std::size_t limit, ErrorList& errors) {
+  if (count <= limit) return true;
+  errors.add(std::string(list), "must have at most " + std::to_string(limit) + " entries (got " +
+                                    std::to_string(count) + ")");
+  return false;
+}
+
+bool overlaps(double depth, double radiusSum) {
+  return depth > tol::kTouchFraction * radiusSum;
+}
+
+struct UnitPlane {
+  std::size_t index;
+  Vec3 point;
+  Vec3 normal;  // unit length
+};
+
+struct UnitCylinder {
+  std::size_t index;
+  Vec3 point;
+  Vec3 axis;  // unit length
+  double radius;
+};
+
+// Finds the balls that overlap earlier balls with a grid per power-of-two size class: each ball
+// sits in one cell of the class that fits its diameter and looks only at the 27 cells around it
+// in its own and larger classes. Every pair is thus met once, from its smaller member, in time
+// that grows linearly with the number of balls for any scene whose balls do not overlap.
+class BallOverlapFinder {
+ public:
+  struct Overlap {
+    std::size_t later;
+    std::size_t earlier;
+    double depth;
+    bool operator>(const Overlap& other) const {
+      return later != other.later ? later > other.later : earlier > other.earlier;
+    }
+  };
+
+  BallOverlapFinder(const std::vector<Ball>& balls, const std::vector<bool>& usable)
+      : balls_(balls), levels_(balls.size(), 0) {
+    // Cells are at least 2^-40 of the largest coordinate so that cell indices fit in 64 bits.
+    double largest = 0.0;
+    for (std::size_t i = 0; i < balls.size(); ++i)
+      if (usable[i]) largest = std::max(largest, balls[i].position.cwiseAbs().maxCoeff());
+    const int minLevel =
+        largest > 0.0 ? std::ilogb(largest) + 1 - 40 : std::numeric_limits<int>::min();
+
+    std::vector<std::pair<CellKey, std::size_t>> entries;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (!usable[i]) continue;
+      // A cell is wider than the diameter, so overlapping balls of a class are in neighbouring
+      // cells; ldexp in cellOf is exact, so no rounding can move a ball across a cell border.
+      levels_[i] = std::max(std::ilogb(2.0 * balls[i].radius) + 1, minLevel);
+      entries.push_back({cellOf(balls[i].position, levels_[i]), i});
+    }
+    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first < b.first : a.second < b.second;
+    });
+    order_.reserve(entries.size());
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].first == entries[begin].first) {
+        order_.push_back(entries[end].second);
+        ++end;
+      }
+      cells_.emplace(entries[begin].first, Range{begin, end});
+      if (usedLevels_.empty() || usedLevels_.back() != entries[begin].first.level)
+        usedLevels_.push_back(entries[begin].first.level);
+      begin = end;
+    }
+  }
+
+  // All overlaps whose later ball is `index`, by earlier ball; call for every usable ball in
+  // increasing order.
+  std::vector<Overlap> overlapsOf(std::size_t index) {
+    find(index);
+    std::vector<Overlap> result;
+    while (!pending_.empty() && pending_.top().later == index) {
+      result.push_back(pending_.top());
+      pending_.pop();
+    }
+    return result;
+  }
+
+ private:
+  struct CellKey {
+    int level;
+    std::int64_t x, y, z;
+    auto operator<=>(const CellKey&) const = default;
+  };
+
+  struct CellHash {
+    std::size_t operator()(const CellKey& key) const {
+      // Multiply and fold each part in, so that neighbouring cells land far apart.
+      std::uint64_t hash = static_cast<std::uint32_t>(key.level);
+      for (std::int64_t part : {key.x, key.y, key.z}) {
+        hash = (hash ^ static_cast<std::uint64_t>(part)) * 0x100000001b3ULL;
+        hash ^= hash >> 29;
+      }
+      return static_cast<std::size_t>(hash);
+    }
+  };
+
+  struct Range {
+    std::size_t begin, end;
+  };
+
+  static CellKey cellOf(const Vec3& position, int level) {
+    const auto index = [level](double coordinate) {
+      return static_cast<std::int64_t>(std::floor(std::ldexp(coordinate, -level)));
+    };
+    return {level, index(position.x()), index(position.y()), index(position.z())};
+  }
+
+  void find(std::size_t index) {
+    const Ball& ball = balls_[index];
+    const int ownLevel = levels_[index];
+    for (auto level = std::lower_bound(usedLevels_.begin(), usedLevels_.end(), ownLevel);
+         level != usedLevels_.end(); ++level) {
+      const CellKey centre = cellOf(ball.position, *level);
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            const auto cell = cells_.find({*level, centre.x + dx, centre.y + dy, centre.z + dz});
+            if (cell == cells_.end()) continue;
+            for (std::size_t k = cell->second.begin; k < cell->second.end; ++k) {
+              const std::size_t other = order_[k];
+              // Within one class both balls look at each other; only the later one reports.
+              // Cells list their balls in increasing order, so the rest are later still.
+              if (*level == ownLevel && other >= index) break;
+              test(index, other);
+            }
+          }
+        }
+      }
+    }
+  }
+
+  void test(std::size_t a, std::size_t b) {
+    const double radiusSum = balls_[a].radius + balls_[b].radius;
+    const double depth = radiusSum - (balls_[a].position - balls_[b].position).norm();
+    if (overlaps(depth, radiusSum)) pending_.push({std::max(a, b), std::min(a, b), depth});
+  }
+
+  const std::vector<Ball>& balls_;
+  std::vector<int> levels_;
+  std::vector<std::size_t> order_;  // ball indices grouped by cell
+  std::unordered_map<CellKey, Range, CellHash> cells_;
+  std::vector<int> usedLevels_;  // ascending
+  std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
+};
+
+void checkBalls(const Scene& scene, const std::vector<UnitPlane>& planes,
+                const std::vector<UnitCylinder>& cylinders, ErrorList& errors) {
+  const auto& balls = scene.balls;
+  std::vector<bool> usable(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) usable[i] = checkBall(balls[i], i, nullptr);
+  BallOverlapFinder finder(balls, usable);
+
+  for (std::size_t i = 0; i < balls.size() && !errors.full(); ++i) {
+    if (!usable[i]) {
+      checkBall(balls[i], i, &errors);
+      continue;
+    }
+    const Ball& ball = balls[i];
+    const std::string path = indexed("balls", i) + ".position";
+    for (const UnitPlane& plane : planes) {
+      const double distance = (ball.position - plane.point).dot(plane.normal);
+      if (!overlaps(ball.radius - distance, ball.radius)) continue;
+      const std::string other = indexed("planes", plane.index);
+      if (distance < 0.0)
+        errors.add(path,
+                   "overlaps " + other + " (is " + formatDepth(-distance) + " behind its surface)");
+      else
+        errors.add(path, "overlaps " + other + " by " + formatDepth(ball.radius - distance));
+    }
+    for (const UnitCylinder& cylinder : cylinders) {
+      const Vec3 offset = ball.position - cylinder.point;
+      const double distance = (offset - offset.dot(cylinder.axis) * cylinder.axis).norm();
+      const double radiusSum = ball.radius + cylinder.radius;
+      if (overlaps(radiusSum - distance, radiusSum))
+        errors.add(path, "overlaps " + indexed("cylinders", cylinder.index) + " by " +
+                             formatDepth(radiusSum - distance));
+    }
+    for (const auto& overlap : finder.overlapsOf(i))
+      errors.add(path, "overlaps " + indexed("balls", overlap.earlier) + " by " +
+                           formatDepth(overlap.depth));
+  }
+}
+
+}  // namespace
+
+std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors) {
+  ErrorList errors(maxErrors);
+  // Counts first: a scene with absurdly many objects is refused before any of them is looked at.
+  bool countsOk = checkCount("planes", scene.planes.size(), tol::kMaxPlanes, errors);
+  countsOk &= checkCount("cylinders", scene.cylinders.size(), tol::kMaxCylinders, errors);
+  countsOk &= checkCount("balls", scene.balls.size(), tol::kMaxBalls, errors);
+  if (!countsOk) return errors.take();
+
+  checkWorld(scene.world, errors);
+
+  // Only well-formed planes and cylinders take part in overlap tests; the others are reported.
+  std::vector<UnitPlane> planes;
+  for (std::size_t i = 0; i < scene.planes.size() && !errors.full(); ++i) {
+    const Plane& plane = scene.planes[i];
+    if (checkPlane(plane, i, &errors))
+      planes.push_back({i, plane.point, plane.normal.normalized()});
+  }
+  std::vector<UnitCylinder> cylinders;
+  for (std::size_t i = 0; i < scene.cylinders.size() && !errors.full(); ++i) {
+    const Cylinder& cylinder = scene.cylinders[i];
+    if (checkCylinder(cylinder, i, &errors))
+      cylinders.push_back({i, cylinder.point, cylinder.axis.normalized(), cylinder.radius});
+  }
+  if (!errors.full()) checkBalls(scene, planes, cylinders, errors);
+  return errors.take();
+}
+
+}  // namespace carom

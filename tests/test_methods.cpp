@@ -1,0 +1,252 @@
+// Invariants on random scenes, the extremes (time steps, speeds, radius ratios) and determinism,
+// for every method.
+
+#include "measures.h"
+#include "scene_builders.h"
+#include "simulation.h"
+#include "validation.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <random>
+
+using namespace carom;
+
+namespace {
+
+Ball ball(const Vec3& p, const Vec3& v, double r, double m = 1.0) {
+  Ball b;
+  b.position = p;
+  b.velocity = v;
+  b.radius = r;
+  b.mass = m;
+  return b;
+}
+
+// Random balls of random sizes and masses, not overlapping, in a closed box of six planes, with
+// cylinders through it.
+Scene randomScene(std::uint64_t seed, const Vec3& gravity, int balls) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Scene s = makeGasInBox(0, 0.25, gravity, seed);
+  const double half = 4.0;
+  s.planes.clear();
+  for (int a = 0; a < 3; ++a)
+    for (double side : {-1.0, 1.0}) {
+      Plane p;
+      p.point = Vec3::Zero();
+      p.point[a] = side * half;
+      p.normal = -side * Vec3::Unit(a);
+      s.planes.push_back(p);
+    }
+  Cylinder c1;
+  c1.point = Vec3(1, 0, 1);
+  c1.axis = Vec3(0, 1, 0);
+  c1.radius = 0.4;
+  Cylinder c2;
+  c2.point = Vec3(-1.5, 0, 0);
+  c2.axis = Vec3(0, 1, 1);
+  c2.radius = 0.25;
+  s.cylinders = {c1, c2};
+  while (static_cast<int>(s.balls.size()) < balls) {
+    const double r = 0.1 + 0.2 * unit(rng);
+    Ball b =
+        ball(Vec3(unit(rng), unit(rng), unit(rng)) * (2 * half - 2 * r) - Vec3::Constant(half - r),
+             Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 6.0, r, 0.5 + 2 * unit(rng));
+    s.balls.push_back(b);
+    if (!validateScene(s).empty()) s.balls.pop_back();
+  }
+  return s;
+}
+
+}  // namespace
+
+class TestMethods : public QObject {
+  Q_OBJECT
+ private slots:
+  void exactKeepsEnergyAndNeverOverlaps_data() {
+    QTest::addColumn<bool>("gravity");
+    QTest::addRow("no gravity") << false;
+    QTest::addRow("gravity") << true;
+  }
+  void exactKeepsEnergyAndNeverOverlaps() {
+    QFETCH(bool, gravity);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      Scene s = randomScene(seed, gravity ? Vec3(0, -9.81, 0) : Vec3::Zero(), 60);
+      Simulation sim(s);
+      const double e0 = sim.totalEnergy();
+      for (int k = 0; k < 50; ++k) {
+        sim.advance(0.1);
+        const OverlapReport o = measureOverlaps(sim.bodies(), sim.positions());
+        QVERIFY2(o.maxPenetration < 1e-9, qPrintable(QString::number(o.maxPenetration)));
+        QCOMPARE(o.escaped, 0);
+      }
+      QVERIFY(sim.stats().collisions.total() > 100);
+      const double drift = std::abs(sim.totalEnergy() - e0) / std::abs(e0);
+      QVERIFY2(drift < 1e-11, qPrintable(QString::number(drift)));
+    }
+  }
+
+  void momentumKeptWithoutWalls() {
+    // A free cluster with no planes, cylinders or gravity: momentum and energy stay put.
+    Scene s = makeGasInBox(300, 0.3, Vec3::Zero(), 7);
+    s.planes.clear();
+    s.balls[0].mass = 50.0;
+    s.balls[1].mass = 0.01;
+    Simulation sim(s);
+    const Vec3 p0 = sim.momentum();
+    const double e0 = sim.kineticEnergy();
+    sim.advance(5.0);
+    QVERIFY(sim.stats().collisions.ballBall > 200);
+    QVERIFY((sim.momentum() - p0).norm() < 1e-12 * (1 + 50));
+    QVERIFY(std::abs(sim.kineticEnergy() - e0) < 1e-12 * e0);
+  }
+
+  void sweptNeverPassesThroughAtAnyStep_data() {
+    QTest::addColumn<double>("dt");
+    QTest::addColumn<QString>("integrator");
+    for (double dt : {1e-6, 1e-3, 0.1, 1.0, 10.0})
+      for (const char* integrator : {"explicit-euler", "symplectic-euler", "velocity-verlet"})
+        QTest::addRow("dt=%g %s", dt, integrator) << dt << QString(integrator);
+  }
+  void sweptNeverPassesThroughAtAnyStep() {
+    QFETCH(double, dt);
+    QFETCH(QString, integrator);
+    Scene s = randomScene(11, Vec3(0, -9.81, 0), 40);
+    s.world.method = Method::Swept;
+    s.world.timeStep = dt;
+    s.world.integrator = *integratorFromName(integrator.toStdString());
+    Simulation sim(s);
+    for (int k = 0; k < 40; ++k) {
+      sim.step();
+      const OverlapReport o = measureOverlaps(sim.bodies(), sim.positions());
+      QVERIFY2(o.maxPenetration < 1e-9, qPrintable(QString::number(o.maxPenetration)));
+      QCOMPARE(o.escaped, 0);
+    }
+  }
+
+  void hugeSpeedsDoNotTunnel_data() {
+    QTest::addColumn<int>("method");
+    QTest::addRow("exact") << int(Method::Exact);
+    QTest::addRow("swept") << int(Method::Swept);
+  }
+  void hugeSpeedsDoNotTunnel() {
+    // 1e4 radii per step against a thin cylinder, a ball and a wall.
+    QFETCH(int, method);
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    s.world.method = Method(method);
+    s.world.timeStep = 0.01;
+    const double r = 0.01, speed = 1e4 * r / 0.01;
+    Plane wall;
+    wall.point = Vec3(50, 0, 0);
+    wall.normal = Vec3(-1, 0, 0);
+    s.planes.push_back(wall);
+    Cylinder thin;
+    thin.point = Vec3(20, 0, 5);
+    thin.axis = Vec3(0, 1, 0);
+    thin.radius = 0.001;
+    s.cylinders.push_back(thin);
+    s.balls.push_back(ball({0, 0, 0}, {speed, 0, 0}, r));
+    s.balls.push_back(ball({10, 0, 0}, {0, 0, 0}, r));
+    s.balls.push_back(ball({0, 0, 5}, {speed, 0, 0}, r));
+    Simulation sim(s);
+    for (int k = 0; k < 20; ++k) {
+      sim.step();
+      const OverlapReport o = measureOverlaps(sim.bodies(), sim.positions());
+      QCOMPARE(o.escaped, 0);
+      QVERIFY(o.maxPenetration < 1e-9);
+      for (const Vec3& p : sim.positions()) QVERIFY(p.x() <= 50 - r + 1e-9);
+    }
+    QVERIFY(sim.stats().collisions.ballBall >= 1);
+    QVERIFY(sim.stats().collisions.ballCylinder >= 1);
+    QVERIFY(sim.stats().collisions.ballPlane >= 1);
+  }
+
+  void radiusRatios_data() {
+    QTest::addColumn<double>("ratio");
+    for (double ratio : {1e-3, 1e-1, 1e1, 1e3}) QTest::addRow("%g", ratio) << ratio;
+  }
+  void radiusRatios() {
+    // A small and a big ball of equal density collide head-on: momentum and energy kept, they
+    // separate, neither overlaps.
+    QFETCH(double, ratio);
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    const double r1 = 1.0, r2 = ratio;
+    s.balls.push_back(ball({0, 0, 0}, {1, 0, 0}, r1, 1.0));
+    s.balls.push_back(
+        ball({r1 + r2 + 1.0, 0.3 * std::min(r1, r2), 0}, {-1, 0, 0}, r2, ratio * ratio * ratio));
+    Simulation sim(s);
+    const Vec3 p0 = sim.momentum();
+    const double e0 = sim.kineticEnergy();
+    sim.advance(3.0);
+    QCOMPARE(sim.stats().collisions.ballBall, std::uint64_t(1));
+    QVERIFY((sim.momentum() - p0).norm() <= 1e-13 * (1 + p0.norm() + ratio * ratio * ratio));
+    QVERIFY(std::abs(sim.kineticEnergy() - e0) <= 1e-12 * e0);
+    QVERIFY(measureOverlaps(sim.bodies(), sim.positions()).maxPenetration <= 0.0);
+  }
+
+  void discreteReportsWhatItGotWrong() {
+    // A fast ball and a large step: discrete lets it tunnel through a thin cylinder and a ball,
+    // and it overlaps the wall; the stats say so.
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    s.world.method = Method::Discrete;
+    s.world.timeStep = 0.1;
+    Plane wall;
+    wall.point = Vec3(25, 0, 0);
+    wall.normal = Vec3(-1, 0, 0);
+    s.planes.push_back(wall);
+    s.balls.push_back(ball({0, 0, 0}, {100, 0, 0}, 0.1));
+    s.balls.push_back(ball({5.05, 0, 0}, {0, 0, 0}, 0.1));
+    Simulation sim(s);
+    sim.advance(1.0);
+    QVERIFY(sim.stats().maxPenetration > 0.1);                    // seen deep in the wall
+    QCOMPARE(sim.stats().collisions.ballBall, std::uint64_t(0));  // went through the ball
+    QCOMPARE(sim.stats().steps, std::uint64_t(10));
+  }
+
+  void deterministic_data() {
+    QTest::addColumn<int>("method");
+    QTest::addRow("exact") << int(Method::Exact);
+    QTest::addRow("swept") << int(Method::Swept);
+    QTest::addRow("discrete") << int(Method::Discrete);
+  }
+  void deterministic() {
+    QFETCH(int, method);
+    Scene s = randomScene(5, Vec3(0, -9.81, 0), 50);
+    s.world.method = Method(method);
+    s.world.restitution = 0.8;
+    auto run = [&] {
+      Simulation sim(s);
+      sim.advance(3.0);
+      return sim.state();
+    };
+    const std::vector<BallState> a = run(), b = run();
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      QVERIFY(a[i].position == b[i].position);  // bit-identical
+      QVERIFY(a[i].velocity == b[i].velocity);
+    }
+  }
+
+  void switchingMethodsLiveKeepsState() {
+    Scene s = randomScene(9, Vec3(0, -9.81, 0), 30);
+    Simulation sim(s);
+    sim.advance(0.5);
+    const std::vector<BallState> before = sim.state();
+    sim.setMethod(Method::Discrete);
+    const std::vector<BallState> after = sim.state();
+    for (std::size_t i = 0; i < before.size(); ++i)
+      QVERIFY(before[i].position == after[i].position);
+    sim.advance(0.5);
+    sim.setMethod(Method::Swept);
+    sim.setGravity(Vec3(0, -1, 0));
+    sim.advance(0.5);
+    QVERIFY(std::abs(sim.time() - 1.5) < 1e-12);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestMethods)
+#include "test_methods.moc"

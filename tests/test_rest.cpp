@@ -1,0 +1,143 @@
+// The rest policy: inelastic bouncing ends in finite computing time, piles settle, resting balls
+// wake when hit, and sliding stays frictionless.
+
+#include "measures.h"
+#include "simulation.h"
+#include "tolerances.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace carom;
+
+namespace {
+
+Ball ball(const Vec3& p, const Vec3& v, double r = 0.1) {
+  Ball b;
+  b.position = p;
+  b.velocity = v;
+  b.radius = r;
+  return b;
+}
+
+Scene floorScene(double restitution) {
+  Scene s;
+  s.world.gravity = Vec3(0, -9.81, 0);
+  s.world.restitution = restitution;
+  Plane floor;
+  floor.point = Vec3::Zero();
+  floor.normal = Vec3::UnitY();
+  s.planes.push_back(floor);
+  return s;
+}
+
+void addWalls(Scene& s, double half) {
+  for (int a : {0, 2})
+    for (double side : {-1.0, 1.0}) {
+      Plane p;
+      p.point = Vec3::Zero();
+      p.point[a] = side * half;
+      p.normal = -side * Vec3::Unit(a);
+      s.planes.push_back(p);
+    }
+}
+
+}  // namespace
+
+class TestRest : public QObject {
+  Q_OBJECT
+ private slots:
+  void inelasticBounceComesToRest_data() {
+    QTest::addColumn<double>("restitution");
+    for (double e : {0.0, 0.3, 0.5, 0.9, 0.99}) QTest::addRow("e=%g", e) << e;
+  }
+  void inelasticBounceComesToRest() {
+    QFETCH(double, restitution);
+    Scene s = floorScene(restitution);
+    s.balls.push_back(ball({0, 1.1, 0}, {0, 0, 0}));
+    Simulation sim(s);
+    // Bounce heights fall by e^2 each time: the bounces would take 2 v0 / (g (1 - e)), 90 s at
+    // e = 0.99, and end after finitely many events.
+    sim.advance(300.0);
+    const BallState end = sim.state()[0];
+    QVERIFY(end.resting);
+    QVERIFY(std::abs(end.position.y() - 0.1) < 1e-12);
+    QVERIFY(end.velocity.norm() == 0.0);
+    QVERIFY2(sim.stats().events < 5000, qPrintable(QString::number(sim.stats().events)));
+    // Bounces below 1e-3 radii are not resolved: the energy lost to the rule is at most that.
+    QVERIFY(sim.totalEnergy() <= 9.81 * 1.1);
+  }
+
+  void ballPlacedAtRestDoesNotStall() {
+    Scene s = floorScene(1.0);
+    s.balls.push_back(ball({0, 0.1, 0}, {0, 0, 0}));
+    Simulation sim(s);
+    sim.advance(100.0);
+    QVERIFY(sim.state()[0].resting);
+    QVERIFY(sim.stats().events < 10);
+  }
+
+  void slidingIsFrictionless() {
+    // A bouncing ball with a horizontal velocity ends up hopping along the floor at the rest
+    // speed, keeping its horizontal speed exactly: no friction.
+    Scene s = floorScene(0.5);
+    s.balls.push_back(ball({0, 0.6, 0}, {0.7, 0, 0.2}));
+    Simulation sim(s);
+    sim.advance(20.0);
+    const BallState end = sim.state()[0];
+    QVERIFY(!end.resting);
+    QVERIFY(std::abs(end.velocity.x() - 0.7) < 1e-12);
+    QVERIFY(std::abs(end.velocity.z() - 0.2) < 1e-12);
+    // Hops no higher than the rest height (plus round-off).
+    const double hop = tolerance::kRestHeightFraction * 0.1;
+    QVERIFY(end.position.y() <= 0.1 + hop * 1.0001);
+    QVERIFY(end.position.y() >= 0.1 - 1e-12);
+    // Hop rate is bounded: about sqrt(g / 8h) per second.
+    QVERIFY(sim.stats().events < 20.0 * std::sqrt(9.81 / (8 * hop)) * 1.5 + 100);
+  }
+
+  void pileSettles() {
+    // 64 inelastic balls dropped into a box settle into resting piles, without overlaps or
+    // escapes, in a bounded number of events.
+    Scene s = floorScene(0.5);
+    addWalls(s, 0.5);
+    for (int i = 0; i < 64; ++i)
+      s.balls.push_back(
+          ball(Vec3(-0.35 + 0.23 * (i % 4), 0.3 + 0.25 * (i / 16), -0.35 + 0.23 * ((i / 4) % 4)) +
+                   Vec3(0.01 * (i % 3), 0, 0.013 * (i % 5)),
+               Vec3(0.3 * ((i * 7) % 5 - 2), 0, 0.3 * ((i * 3) % 5 - 2))));
+    Simulation sim(s);
+    for (int k = 0; k < 30; ++k) {
+      sim.advance(1.0);
+      const OverlapReport o = measureOverlaps(sim.bodies(), sim.positions());
+      QVERIFY2(o.maxPenetration < 1e-9, qPrintable(QString::number(o.maxPenetration)));
+      QCOMPARE(o.escaped, 0);
+    }
+    int resting = 0;
+    for (const BallState& b : sim.state()) resting += b.resting ? 1 : 0;
+    QVERIFY2(resting == 64,
+             qPrintable(QString("%1 resting, %2 events").arg(resting).arg(sim.stats().events)));
+    QVERIFY2(sim.stats().events < 5'000'000, qPrintable(QString::number(sim.stats().events)));
+    QVERIFY(sim.kineticEnergy() == 0.0);
+  }
+
+  void restingBallWakesWhenHit() {
+    Scene s = floorScene(1.0);
+    s.balls.push_back(ball({0, 0.1, 0}, {0, 0, 0}));
+    s.balls.push_back(ball({-1, 0.1, 0}, {1, 0, 0}));
+    Simulation sim(s);
+    sim.advance(0.5);
+    QVERIFY(sim.state()[0].resting);
+    sim.advance(1.0);
+    const std::vector<BallState> end = sim.state();
+    QVERIFY(!end[0].resting);
+    // Equal masses swap velocities (up to the hop the sliding ball makes at the rest speed).
+    QVERIFY(std::abs(end[0].velocity.x() - 1.0) < 5e-3);
+    QVERIFY(std::abs(end[1].velocity.x()) < 5e-3);
+    QVERIFY(sim.stats().wakes >= 1);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestRest)
+#include "test_rest.moc"

@@ -1,0 +1,622 @@
+// Scene files: every refusal with its exact message, defaults, unknown keys, exact round trips
+// of numbers and of the bundled scenes, and saving that never damages an existing file.
+
+#include "scene_file.h"
+#include "tolerances.h"
+#include "validation.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QObject>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+using carom::Ball;
+using carom::Scene;
+using carom::SceneLoadResult;
+using carom::Vec3;
+
+namespace {
+
+const QString kSource = "test.json";
+
+// A version-1 document holding `body` (comma-separated members, possibly empty).
+QByteArray document(const QByteArray& body) {
+  QByteArray text = R"({"format": "carom-scene", "version": 1)";
+  if (!body.isEmpty()) text += ", " + body;
+  return text + "}";
+}
+
+SceneLoadResult parse(const QByteArray& json) {
+  return carom::parseScene(json, kSource);
+}
+
+QString sceneDir() {
+  return qEnvironmentVariable("CAROM_SOURCE_DIR") + "/resources/scenes";
+}
+
+QByteArray readAll(const QString& fileName) {
+  QFile file(fileName);
+  return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+bool writeAll(const QString& fileName, const QByteArray& data) {
+  QFile file(fileName);
+  return file.open(QIODevice::WriteOnly) && file.write(data) == data.size();
+}
+
+// Doubles compared bit for bit: QCOMPARE would allow a small relative difference.
+bool same(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+bool same(const Vec3& a, const Vec3& b) {
+  return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z());
+}
+bool same(const std::optional<double>& a, const std::optional<double>& b) {
+  return a.has_value() == b.has_value() && (!a || same(*a, *b));
+}
+bool same(const carom::ObjectInfo& a, const carom::ObjectInfo& b) {
+  return same(a.restitution, b.restitution) && a.name == b.name && a.color == b.color &&
+         a.extra == b.extra;
+}
+
+// The first field in which two scenes differ, or an empty string.
+QString difference(const Scene& a, const Scene& b) {
+  const auto& wa = a.world;
+  const auto& wb = b.world;
+  if (!same(wa.gravity, wb.gravity) || !same(wa.timeStep, wb.timeStep) ||
+      !same(wa.restitution, wb.restitution) || wa.method != wb.method ||
+      wa.integrator != wb.integrator || wa.extra != wb.extra)
+    return "world";
+  if (a.extra != b.extra) return "extra";
+  if (a.planes.size() != b.planes.size()) return "planes count";
+  for (std::size_t i = 0; i < a.planes.size(); ++i) {
+    const auto &pa = a.planes[i], &pb = b.planes[i];
+    if (!same(pa.point, pb.point) || !same(pa.normal, pb.normal) || !same(pa, pb))
+      return QString("planes[%1]").arg(i);
+  }
+  if (a.cylinders.size() != b.cylinders.size()) return "cylinders count";
+  for (std::size_t i = 0; i < a.cylinders.size(); ++i) {
+    const auto &ca = a.cylinders[i], &cb = b.cylinders[i];
+    if (!same(ca.point, cb.point) || !same(ca.axis, cb.axis) || !same(ca.radius, cb.radius) ||
+        !same(ca, cb))
+      return QString("cylinders[%1]").arg(i);
+  }
+  if (a.balls.size() != b.balls.size()) return "balls count";
+  for (std::size_t i = 0; i < a.balls.size(); ++i) {
+    const auto &ba = a.balls[i], &bb = b.balls[i];
+    if (!same(ba.position, bb.position) || !same(ba.velocity, bb.velocity) ||
+        !same(ba.radius, bb.radius) || !same(ba.mass, bb.mass) || !same(ba, bb))
+      return QString("balls[%1]").arg(i);
+  }
+  return QString();
+}
+
+}  // namespace
+
+class SceneFileTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void badInput_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error");
+
+    const auto row = [](const char* name, const QByteArray& json, const QString& error) {
+      QTest::newRow(name) << json << kSource + ": " + error;
+    };
+    // Not JSON, or not a scene.
+    row("empty", "", "invalid JSON at line 1, column 1: illegal value");
+    row("unterminated", "{\n  \"format\": \"carom-scene\",\n  \"version\": 1,,\n}",
+        "invalid JSON at line 3, column 17: unterminated object");
+    row("columns count characters", "{\"name\": \"\u00e9\u00e9\" x}",
+        "invalid JSON at line 1, column 16: unterminated object");
+    row("NaN literal", document(R"("world": {"timeStep": NaN})"),
+        "invalid JSON at line 1, column 63: illegal number");
+    row("number too large for a double", document(R"("world": {"timeStep": 1e400})"),
+        "invalid JSON at line 1, column 68: illegal number");
+    row("top-level array", "[1, 2]", "expected a JSON object at the top, got an array");
+    row("format missing", R"({"version": 1})", "format: is required but missing");
+    row("format wrong", R"({"format": "other", "version": 1})",
+        "format: expected \"carom-scene\", got \"other\"");
+    row("format not a string", R"({"format": 7, "version": 1})",
+        "format: expected \"carom-scene\", got a number");
+    row("version missing", R"({"format": "carom-scene"})", "version: is required but missing");
+    row("version string", R"({"format": "carom-scene", "version": "1"})",
+        "version: expected an integer, got a string");
+    row("version fraction", R"({"format": "carom-scene", "version": 1.5})",
+        "version: expected an integer, got 1.5");
+    row("version zero", R"({"format": "carom-scene", "version": 0})",
+        "version: must be at least 1 (got 0)");
+    row("version negative", R"({"format": "carom-scene", "version": -3})",
+        "version: must be at least 1 (got -3)");
+    row("version newer", R"({"format": "carom-scene", "version": 2, "balls": 5})",
+        "version: version 2 was written by a newer Carom; this one reads version 1");
+
+    // Wrong types and shapes.
+    row("world not an object", document(R"("world": [])"),
+        "world: expected an object, got an array");
+    row("gravity string", document(R"("world": {"gravity": "down"})"),
+        "world.gravity: expected an array of 3 numbers, got a string");
+    row("gravity short", document(R"("world": {"gravity": [0, -9.81]})"),
+        "world.gravity: expected an array of 3 numbers, got an array of 2 values");
+    row("gravity element", document(R"("world": {"gravity": [0, "a", 0]})"),
+        "world.gravity[1]: expected a number, got a string");
+    row("time step string", document(R"("world": {"timeStep": "fast"})"),
+        "world.timeStep: expected a number, got a string");
+    row("restitution boolean", document(R"("world": {"restitution": true})"),
+        "world.restitution: expected a number, got a boolean");
+    row("method unknown", document(R"("world": {"method": "fast"})"),
+        "world.method: unknown method \"fast\"; use one of: exact, swept, discrete");
+    row("method number", document(R"("world": {"method": 1})"),
+        "world.method: expected a string, got a number");
+    row("integrator unknown", document(R"("world": {"integrator": "rk4"})"),
+        "world.integrator: unknown integrator \"rk4\"; use one of: explicit-euler, "
+        "symplectic-euler, velocity-verlet");
+    row("planes not an array", document(R"("planes": {})"),
+        "planes: expected an array, got an object");
+    row("plane not an object", document(R"("planes": [3])"),
+        "planes[0]: expected an object, got a number");
+    row("plane name number",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0], "name": 5}])"),
+        "planes[0].name: expected a string, got a number");
+    row("plane colour boolean",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0], "color": false}])"),
+        "planes[0].color: expected a string, got a boolean");
+    row("plane restitution string",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0], "restitution": "hi"}])"),
+        "planes[0].restitution: expected a number, got a string");
+    row("cylinder not an object", document(R"("cylinders": [null])"),
+        "cylinders[0]: expected an object, got null");
+    row("ball radius string",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1},)"
+                 R"( {"position": [3,0,0], "radius": 1},)"
+                 R"( {"position": [6,0,0], "radius": 1},)"
+                 R"( {"position": [9,0,0], "radius": "big"}])"),
+        "balls[3].radius: expected a number, got a string");
+    row("ball radius null", document(R"("balls": [{"position": [0,0,0], "radius": null}])"),
+        "balls[0].radius: expected a number, got null");
+    row("ball position object", document(R"("balls": [{"position": {"x": 0}, "radius": 1}])"),
+        "balls[0].position: expected an array of 3 numbers, got an object");
+    row("ball velocity long",
+        document(R"("balls": [{"position": [0,0,0], "velocity": [1,2,3,4], "radius": 1}])"),
+        "balls[0].velocity: expected an array of 3 numbers, got an array of 4 values");
+    row("ball position single", document(R"("balls": [{"position": [0], "radius": 1}])"),
+        "balls[0].position: expected an array of 3 numbers, got an array of 1 value");
+    row("ball mass string",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1, "mass": "1kg"}])"),
+        "balls[0].mass: expected a number, got a string");
+
+    // Missing required fields.
+    row("plane point missing", document(R"("planes": [{"normal": [0,1,0]}])"),
+        "planes[0].point: is required but missing");
+    row("plane normal missing", document(R"("planes": [{"point": [0,1,0]}])"),
+        "planes[0].normal: is required but missing");
+    row("cylinder point missing", document(R"("cylinders": [{"axis": [0,1,0], "radius": 1}])"),
+        "cylinders[0].point: is required but missing");
+    row("cylinder axis missing", document(R"("cylinders": [{"point": [0,1,0], "radius": 1}])"),
+        "cylinders[0].axis: is required but missing");
+    row("cylinder radius missing",
+        document(R"("cylinders": [{"point": [0,1,0], "axis": [0,1,0]}])"),
+        "cylinders[0].radius: is required but missing");
+    row("ball position missing", document(R"("balls": [{"radius": 1}])"),
+        "balls[0].position: is required but missing");
+    row("ball radius missing", document(R"("balls": [{"position": [0,0,0]}])"),
+        "balls[0].radius: is required but missing");
+
+    // Values that parse but fail validation.
+    row("time step zero", document(R"("world": {"timeStep": 0})"),
+        "world.timeStep: must be positive (got 0)");
+    row("world restitution", document(R"("world": {"restitution": 1.5})"),
+        "world.restitution: must be between 0 and 1 (got 1.5)");
+    row("gravity absurd", document(R"("world": {"gravity": [0, -1e300, 0]})"),
+        "world.gravity: must be at most 1e12 in magnitude (got -1e300)");
+    row("zero normal", document(R"("planes": [{"point": [0,0,0], "normal": [0,0,0]}])"),
+        "planes[0].normal: must not be zero-length");
+    row("plane colour word",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0], "color": "blue"}])"),
+        "planes[0].color: must be empty or \"#rrggbb\" (got \"blue\")");
+    row("zero axis", document(R"("cylinders": [{"point": [0,0,0], "axis": [0,0,0], "radius": 1}])"),
+        "cylinders[0].axis: must not be zero-length");
+    row("cylinder radius negative",
+        document(R"("cylinders": [{"point": [0,0,0], "axis": [0,1,0], "radius": -1}])"),
+        "cylinders[0].radius: must be positive (got -1)");
+    row("ball radius zero", document(R"("balls": [{"position": [0,0,0], "radius": 0}])"),
+        "balls[0].radius: must be positive (got 0)");
+    row("ball radius absurd", document(R"("balls": [{"position": [0,0,0], "radius": 1e300}])"),
+        "balls[0].radius: must be at most 1e12 in magnitude (got 1e300)");
+    row("ball position absurd", document(R"("balls": [{"position": [1e300,0,0], "radius": 1}])"),
+        "balls[0].position: must be at most 1e12 in magnitude (got 1e300)");
+    row("ball mass zero", document(R"("balls": [{"position": [0,0,0], "radius": 1, "mass": 0}])"),
+        "balls[0].mass: must be positive (got 0)");
+    row("ball mass negative",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1, "mass": -2}])"),
+        "balls[0].mass: must be positive (got -2)");
+    row("ball mass absurd",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1, "mass": 1e300}])"),
+        "balls[0].mass: must be between 1e-30 and 1e30 (got 1e300)");
+    row("ball restitution high",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1, "restitution": 1.01}])"),
+        "balls[0].restitution: must be between 0 and 1 (got 1.01)");
+    row("ball restitution negative",
+        document(R"("balls": [{"position": [0,0,0], "radius": 1, "restitution": -0.5}])"),
+        "balls[0].restitution: must be between 0 and 1 (got -0.5)");
+    row("ball overlaps ball",
+        document(R"("balls": [{"position": [0,0,0], "radius": 0.5},)"
+                 R"( {"position": [0.95,0,0], "radius": 0.5}])"),
+        "balls[1].position: overlaps balls[0] by 0.05");
+    row("ball overlaps plane",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,2,0]}],)"
+                 R"( "balls": [{"position": [0,0.4,0], "radius": 0.5}])"),
+        "balls[0].position: overlaps planes[0] by 0.1");
+    row("ball behind plane",
+        document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0]}],)"
+                 R"( "balls": [{"position": [0,-0.25,0], "radius": 0.5}])"),
+        "balls[0].position: overlaps planes[0] (is 0.25 behind its surface)");
+    row("ball overlaps cylinder",
+        document(R"("cylinders": [{"point": [0,0,0], "axis": [0,0,1], "radius": 1}],)"
+                 R"( "balls": [{"position": [1.25,0,5], "radius": 0.5}])"),
+        "balls[0].position: overlaps cylinders[0] by 0.25");
+  }
+
+  void badInput() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    const SceneLoadResult result = parse(json);
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error, error);
+  }
+
+  void touchingIsAccepted() {
+    const SceneLoadResult result =
+        parse(document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0]}],)"
+                       R"( "cylinders": [{"point": [0,0,0], "axis": [0,1,0], "radius": 1}],)"
+                       R"( "balls": [{"position": [1.5,0.5,0], "radius": 0.5},)"
+                       R"( {"position": [2.5,0.5,0], "radius": 0.5}])"));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    QCOMPARE(result.scene->balls.size(), std::size_t{2});
+  }
+
+  void tooManyEntriesAreRefusedBeforeBuilding() {
+    QByteArray planes = "\"planes\": [";
+    for (std::size_t i = 0; i <= carom::tolerance::kMaxPlanes; ++i) planes += i == 0 ? "{}" : ",{}";
+    const SceneLoadResult result = parse(document(planes + "]"));
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error, kSource + ": planes: must have at most 10000 entries (got 10001)");
+  }
+
+  void defaultsAreApplied() {
+    const SceneLoadResult empty = parse(document(""));
+    QVERIFY2(empty.scene, qPrintable(empty.error));
+    QCOMPARE(difference(*empty.scene, Scene()), QString());
+
+    const SceneLoadResult result =
+        parse(document(R"("world": {"timeStep": 0.01},)"
+                       R"( "planes": [{"point": [0,-1,0], "normal": [0,1,0]}],)"
+                       R"( "cylinders": [{"point": [5,0,0], "axis": [0,1,0], "radius": 0.5}],)"
+                       R"( "balls": [{"position": [1,2,3], "radius": 0.25}])"));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    const Scene& scene = *result.scene;
+    const carom::World defaults;
+    QVERIFY(same(scene.world.gravity, defaults.gravity));
+    QVERIFY(same(scene.world.timeStep, 0.01));
+    QVERIFY(same(scene.world.restitution, defaults.restitution));
+    QCOMPARE(scene.world.method, defaults.method);
+    QCOMPARE(scene.world.integrator, defaults.integrator);
+    const Ball& ball = scene.balls.at(0);
+    QVERIFY(same(ball.position, Vec3(1, 2, 3)));
+    QVERIFY(same(ball.velocity, Vec3::Zero()));
+    QVERIFY(same(ball.radius, 0.25));
+    QVERIFY(same(ball.mass, 1.0));
+    QVERIFY(!ball.restitution);
+    QVERIFY(ball.name.empty() && ball.color.empty() && ball.extra.empty());
+    QVERIFY(!scene.planes.at(0).restitution && scene.planes[0].name.empty());
+    QVERIFY(scene.cylinders.at(0).color.empty());
+    QVERIFY(scene.extra.empty() && scene.world.extra.empty());
+  }
+
+  // Colours are in plain string literals: moc misreads a '#' inside a raw string literal.
+  void everyFieldIsRead() {
+    const SceneLoadResult result = parse(document(
+        R"("world": {"gravity": [1,2,3], "timeStep": 0.5, "restitution": 0.25,)"
+        R"( "method": "swept", "integrator": "velocity-verlet"},)"
+        R"( "planes": [{"point": [0,-1,0], "normal": [0,3,0], "restitution": 0.5,)"
+        " \"name\": \"floor\", \"color\": \"#00ff80\"}],"
+        R"( "cylinders": [{"point": [5,0,0], "axis": [0,0,2], "radius": 0.5, "restitution": 0,)"
+        " \"name\": \"post\", \"color\": \"#ABCDEF\"}],"
+        R"( "balls": [{"position": [1,2,3], "velocity": [-1,0.5,7], "radius": 0.25, "mass": 3,)"
+        " \"restitution\": 1, \"name\": \"b\u00e4ll one\", \"color\": \"#123456\"}]"));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    const Scene& scene = *result.scene;
+    QVERIFY(same(scene.world.gravity, Vec3(1, 2, 3)));
+    QVERIFY(same(scene.world.timeStep, 0.5));
+    QVERIFY(same(scene.world.restitution, 0.25));
+    QCOMPARE(scene.world.method, carom::Method::Swept);
+    QCOMPARE(scene.world.integrator, carom::Integrator::VelocityVerlet);
+    QVERIFY(same(scene.planes.at(0).normal, Vec3(0, 3, 0)));
+    QVERIFY(same(scene.planes[0].restitution, 0.5));
+    QCOMPARE(scene.planes[0].name, std::string("floor"));
+    QCOMPARE(scene.planes[0].color, std::string("#00ff80"));
+    QVERIFY(same(scene.cylinders.at(0).axis, Vec3(0, 0, 2)));
+    QVERIFY(same(scene.cylinders[0].restitution, 0.0));
+    QCOMPARE(scene.cylinders[0].color, std::string("#ABCDEF"));
+    const Ball& ball = scene.balls.at(0);
+    QVERIFY(same(ball.velocity, Vec3(-1, 0.5, 7)));
+    QVERIFY(same(ball.mass, 3.0));
+    QVERIFY(same(ball.restitution, 1.0));
+    QCOMPARE(ball.name, std::string("b\u00e4ll one"));
+
+    // And all of it survives a save.
+    const SceneLoadResult again = carom::parseScene(carom::serializeScene(scene), kSource);
+    QVERIFY2(again.scene, qPrintable(again.error));
+    QCOMPARE(difference(*again.scene, scene), QString());
+  }
+
+  void unknownKeysArePreserved() {
+    const QByteArray json = document(
+        R"("units": {"length": "cm", "time": "s", "mass": "g"}, "author": "me",)"
+        R"( "world": {"timeStep": 0.01, "wind": [1, 0, 0]},)"
+        R"( "planes": [{"point": [0,-1,0], "normal": [0,1,0], "friction": 0.3}],)"
+        R"( "cylinders": [{"point": [5,0,0], "axis": [0,1,0], "radius": 0.5, "texture": null}],)"
+        R"( "balls": [{"position": [0,0,0], "radius": 0.25, "spin": [0, 1e300, 2],)"
+        R"( "tags": {"b": 1, "a": "x"}},)"
+        R"( {"position": [1,0,0], "radius": 0.25}])");
+    const SceneLoadResult result = parse(json);
+    QVERIFY2(result.scene, qPrintable(result.error));
+    const Scene& scene = *result.scene;
+    QCOMPARE(scene.extra,
+             std::string(R"({"author":"me","units":{"length":"cm","mass":"g","time":"s"}})"));
+    QCOMPARE(scene.world.extra, std::string(R"({"wind":[1,0,0]})"));
+    QCOMPARE(scene.planes.at(0).extra, std::string(R"({"friction":0.3})"));
+    QCOMPARE(scene.cylinders.at(0).extra, std::string(R"({"texture":null})"));
+    QCOMPARE(scene.balls.at(0).extra,
+             std::string(R"({"spin":[0,1e+300,2],"tags":{"a":"x","b":1}})"));
+    QCOMPARE(scene.balls.at(1).extra, std::string());
+
+    const QByteArray saved = carom::serializeScene(scene);
+    QVERIFY(saved.contains(R"("units": {"length":"cm","mass":"g","time":"s"})"));
+    const SceneLoadResult reloaded = parse(saved);
+    QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
+    QCOMPARE(difference(*reloaded.scene, scene), QString());
+    QCOMPARE(carom::serializeScene(*reloaded.scene), saved);
+  }
+
+  // Keys a program put into `extra` that a field also writes must not appear twice.
+  void extraCannotDuplicateFields() {
+    Scene scene;
+    Ball ball;
+    ball.extra = R"({"radius": 5, "glow": true})";
+    scene.balls.push_back(ball);
+    const QByteArray saved = carom::serializeScene(scene);
+    QCOMPARE(saved.count("\"radius\""), qsizetype{1});
+    const SceneLoadResult reloaded = parse(saved);
+    QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
+    QVERIFY(same(reloaded.scene->balls.at(0).radius, 1.0));
+    QCOMPARE(reloaded.scene->balls[0].extra, std::string(R"({"glow":true})"));
+  }
+
+  void awkwardTextRoundTrips() {
+    Scene scene;
+    Ball ball;
+    ball.name = "quote \" backslash \\ tab \t newline \n \u00e9\u4e2d\U0001f3b1";
+    scene.balls.push_back(ball);
+    const SceneLoadResult result = parse(carom::serializeScene(scene));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    QCOMPARE(result.scene->balls.at(0).name, ball.name);
+  }
+
+  void savedTextIsIndentedVersionOne() {
+    Scene scene;
+    scene.balls.push_back(Ball());
+    const QByteArray saved = carom::serializeScene(scene);
+    QVERIFY(saved.startsWith("{\n  \"format\": \"carom-scene\",\n  \"version\": 1,\n"));
+    QVERIFY(saved.contains("\n  \"world\": {\n    \"gravity\": [0, -9.81, 0],\n"));
+    QVERIFY(
+        saved.contains("\n  \"balls\": [\n    {\"position\": [0, 0, 0], \"velocity\": [0, 0, 0], "
+                       "\"radius\": 1, \"mass\": 1}\n  ]\n}\n"));
+  }
+
+  // Every finite double in range comes back bit for bit (negative zero comes back as zero,
+  // which compares equal).
+  void doublesRoundTripExactly() {
+    std::mt19937_64 random(2024);
+    std::vector<double> values = {0.1,
+                                  1.0 / 3.0,
+                                  2.0 / 3.0,
+                                  1e-300,
+                                  4.9406564584124654e-324,
+                                  2.2250738585072014e-308,
+                                  1e12,
+                                  -1e12,
+                                  std::nextafter(1e12, 0.0),
+                                  999999999999.9999,
+                                  123456789012.0,
+                                  1e6,
+                                  0.30000000000000004};
+    while (values.size() < 30'000) {
+      const double value = std::bit_cast<double>(random());
+      if (std::isfinite(value) && std::abs(value) <= carom::tolerance::kMaxMagnitude &&
+          value != 0.0)
+        values.push_back(value);
+    }
+    Scene scene;
+    for (std::size_t i = 0; i + 2 < values.size(); i += 3) {
+      Ball ball;
+      ball.position = Vec3(3.0 * static_cast<double>(i), 0, 0);
+      ball.velocity = Vec3(values[i], values[i + 1], values[i + 2]);
+      scene.balls.push_back(ball);
+    }
+    const SceneLoadResult result = parse(carom::serializeScene(scene));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    QCOMPARE(difference(*result.scene, scene), QString());
+
+    Scene negativeZero;
+    negativeZero.world.gravity = Vec3(-0.0, 0, 0);
+    const SceneLoadResult zero = parse(carom::serializeScene(negativeZero));
+    QVERIFY2(zero.scene, qPrintable(zero.error));
+    QVERIFY(zero.scene->world.gravity.x() == 0.0);
+  }
+
+  void bundledScenesExist() {
+    const QStringList names = QDir(sceneDir()).entryList({"*.json"}, QDir::Files);
+    for (const char* name : {"magic-room.json", "newtons-cradle.json", "gas-box.json",
+                             "galton-board.json", "inelastic-pile.json"})
+      QVERIFY2(names.contains(name), name);
+  }
+
+  void bundledSceneRoundTrip_data() {
+    QTest::addColumn<QString>("fileName");
+    const QDir dir(sceneDir());
+    for (const QString& name : dir.entryList({"*.json"}, QDir::Files, QDir::Name))
+      QTest::newRow(qPrintable(name)) << dir.filePath(name);
+  }
+
+  void bundledSceneRoundTrip() {
+    QFETCH(QString, fileName);
+    const SceneLoadResult loaded = carom::loadSceneFile(fileName);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QVERIFY(loaded.error.isEmpty());
+    QVERIFY(carom::validateScene(*loaded.scene).empty());
+    QVERIFY(!loaded.scene->balls.empty());
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString first = dir.filePath("first.json");
+    const QString second = dir.filePath("second.json");
+    QString error = "not cleared";
+    QVERIFY(carom::saveSceneFile(*loaded.scene, first, &error));
+    QVERIFY(error.isEmpty());
+    const SceneLoadResult reloaded = carom::loadSceneFile(first);
+    QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
+    QCOMPARE(difference(*reloaded.scene, *loaded.scene), QString());
+    QVERIFY(carom::saveSceneFile(*reloaded.scene, second, &error));
+    QCOMPARE(readAll(second), readAll(first));
+  }
+
+  void magicRoomIsAsSpecified() {
+    const SceneLoadResult loaded = carom::loadSceneFile(sceneDir() + "/magic-room.json");
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    const Scene& scene = *loaded.scene;
+    QCOMPARE(scene.planes.size(), std::size_t{5});
+    QCOMPARE(scene.cylinders.size(), std::size_t{3});
+    QCOMPARE(scene.balls.size(), std::size_t{10});
+    for (const auto& plane : scene.planes) {
+      // Each wall faces the room: the origin is on the side its normal points to.
+      QVERIFY((Vec3::Zero() - plane.point).dot(plane.normal) > 0);
+      QVERIFY(std::abs((plane.point).dot(plane.normal.normalized())) == 3.2);
+    }
+    QVERIFY(same(scene.balls[3].position, Vec3(-2.75, 3.0, -2.5)));
+    QVERIFY(same(scene.balls[9].position, Vec3(-5 + 0.75 * 9, 3.0, -5 + 0.5 * 9)));
+    for (const Ball& ball : scene.balls) {
+      QVERIFY(same(ball.velocity, Vec3(0.7, -0.14, 0.7)));
+      QVERIFY(same(ball.radius, 0.2));
+    }
+  }
+
+  void loadErrors() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString missing = dir.filePath("missing.json");
+    QCOMPARE(carom::loadSceneFile(missing).error,
+             missing + ": cannot open the file: No such file or directory");
+    QCOMPARE(carom::loadSceneFile(dir.path()).error,
+             dir.path() + ": cannot open the file: file to open is a directory");
+
+    const QString broken = dir.filePath("broken.json");
+    QVERIFY(writeAll(broken, "{\"format\": \"carom-scene\",\n\"version\": 1,\n\"balls\": [}"));
+    QCOMPARE(carom::loadSceneFile(broken).error,
+             broken + ": invalid JSON at line 3, column 12: object is missing after a comma");
+  }
+
+  void unreadableFile() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString locked = dir.filePath("locked.json");
+    QVERIFY(writeAll(locked, document("")));
+    QVERIFY(QFile::setPermissions(locked, QFile::WriteOwner));
+    if (QFile(locked).open(QIODevice::ReadOnly))
+      QSKIP("permissions do not restrict this user (root?)");
+    QCOMPARE(carom::loadSceneFile(locked).error,
+             locked + ": cannot open the file: Permission denied");
+  }
+
+  // A sparse file one byte over the limit: refused from its size, without reading it.
+  void hugeFileIsRefused() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString huge = dir.filePath("huge.json");
+    QFile file(huge);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QVERIFY(file.resize(carom::kMaxSceneFileBytes + 1));
+    file.close();
+    QCOMPARE(carom::loadSceneFile(huge).error,
+             huge + ": the file is larger than the limit of 256 MiB for scene files");
+  }
+
+  void saveFailures_data() {
+    QTest::addColumn<QString>("target");  // relative to a temporary directory
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("missing directory") << "no/such/dir/scene.json"
+                                       << "No such file or directory";
+    QTest::newRow("target is a directory") << "folder"
+                                           << "Filename refers to a directory";
+  }
+
+  void saveFailures() {
+    QFETCH(QString, target);
+    QFETCH(QString, reason);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir("folder"));
+    const QString keep = dir.filePath("folder/keep.json");
+    QVERIFY(writeAll(keep, "old"));
+    const QString fileName = dir.filePath(target);
+    QString error;
+    QVERIFY(!carom::saveSceneFile(Scene(), fileName, &error));
+    QCOMPARE(error, fileName + ": cannot save: " + reason);
+    QCOMPARE(readAll(keep), QByteArray("old"));
+    QVERIFY(QFileInfo(dir.filePath("folder")).isDir());
+    QVERIFY(!carom::saveSceneFile(Scene(), fileName, nullptr));
+  }
+
+  void saveIntoReadOnlyDirectoryKeepsOldFile() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fileName = dir.filePath("scene.json");
+    QVERIFY(writeAll(fileName, "old"));
+    QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
+    const bool writable = ::access(qPrintable(dir.path()), W_OK) == 0;
+    QString error;
+    const bool saved = writable || carom::saveSceneFile(Scene(), fileName, &error);
+    QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    if (writable) QSKIP("permissions do not restrict this user (root?)");
+    QVERIFY(!saved);
+    QCOMPARE(error, fileName + ": cannot save: Permission denied");
+    QCOMPARE(readAll(fileName), QByteArray("old"));
+  }
+
+  void saveReplacesAndReportsSuccess() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fileName = dir.filePath("scene.json");
+    QVERIFY(writeAll(fileName, "old"));
+    Scene scene;
+    scene.world.timeStep = 0.125;
+    QString error = "stale";
+    QVERIFY(carom::saveSceneFile(scene, fileName, &error));
+    QCOMPARE(error, QString());
+    QCOMPARE(readAll(fileName), carom::serializeScene(scene));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"scene.json"});
+  }
+};
+
+QTEST_APPLESS_MAIN(SceneFileTest)
+#include "test_scene_file.moc"

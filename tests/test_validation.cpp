@@ -1,0 +1,474 @@
+// validateScene: every rule with its exact message, file order, limits and the speed of the
+// ball-ball overlap test.
+
+#include "scene.h"
+#include "tolerances.h"
+#include "validation.h"
+
+#include <QObject>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+
+using carom::Ball;
+using carom::Cylinder;
+using carom::Plane;
+using carom::Scene;
+using carom::Vec3;
+
+using SceneEdit = std::function<void(Scene&)>;
+Q_DECLARE_METATYPE(SceneEdit)
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Ball makeBall(const Vec3& position, double radius) {
+  Ball ball;
+  ball.position = position;
+  ball.radius = radius;
+  return ball;
+}
+
+// A valid scene with one object of each kind before the balls that the cases edit: a floor at
+// y = 0, a cylinder along z through (5, 1, 0) of radius 0.5, and two balls of radius 0.5.
+Scene baseScene() {
+  Scene scene;
+  Plane floor;
+  floor.point = Vec3(0, 0, 0);
+  floor.normal = Vec3(0, 1, 0);
+  scene.planes.push_back(floor);
+  Cylinder post;
+  post.point = Vec3(5, 1, 0);
+  post.axis = Vec3(0, 0, 1);
+  post.radius = 0.5;
+  scene.cylinders.push_back(post);
+  scene.balls.push_back(makeBall(Vec3(0, 1, 0), 0.5));
+  scene.balls.push_back(makeBall(Vec3(2, 1, 0), 0.5));
+  return scene;
+}
+
+QStringList texts(const std::vector<carom::ValidationError>& errors) {
+  QStringList result;
+  for (const auto& error : errors) result << QString::fromStdString(error.text());
+  return result;
+}
+
+// Every overlap of a ball with an earlier ball, in the order validateScene reports them, found
+// the slow and obvious way.
+QStringList bruteForceOverlaps(const std::vector<Ball>& balls) {
+  QStringList result;
+  for (std::size_t later = 0; later < balls.size(); ++later) {
+    for (std::size_t earlier = 0; earlier < later; ++earlier) {
+      const double sum = balls[later].radius + balls[earlier].radius;
+      const double distance = (balls[later].position - balls[earlier].position).norm();
+      if (sum - distance > carom::tolerance::kTouchFraction * sum)
+        result << QString("balls[%1].position: overlaps balls[%2]").arg(later).arg(earlier);
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+class ValidationTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void validSceneHasNoErrors() {
+    const Scene scene = baseScene();
+    QCOMPARE(texts(carom::validateScene(scene)), QStringList());
+    QVERIFY(carom::validateScene(Scene()).empty());
+  }
+
+  void badValue_data() {
+    QTest::addColumn<SceneEdit>("edit");
+    QTest::addColumn<QString>("error");
+
+    const auto row = [](const char* name, SceneEdit edit, const char* error) {
+      QTest::newRow(name) << edit << QString(error);
+    };
+    row(
+        "gravity nan", [](Scene& s) { s.world.gravity.y() = kNaN; },
+        "world.gravity: must be finite");
+    row(
+        "gravity inf", [](Scene& s) { s.world.gravity.x() = -kInf; },
+        "world.gravity: must be finite");
+    row(
+        "gravity absurd", [](Scene& s) { s.world.gravity.z() = 1e300; },
+        "world.gravity: must be at most 1e12 in magnitude (got 1e300)");
+    row(
+        "time step zero", [](Scene& s) { s.world.timeStep = 0; },
+        "world.timeStep: must be positive (got 0)");
+    row(
+        "time step negative", [](Scene& s) { s.world.timeStep = -1; },
+        "world.timeStep: must be positive (got -1)");
+    row(
+        "time step tiny", [](Scene& s) { s.world.timeStep = 1e-13; },
+        "world.timeStep: must be between 1e-12 and 1e6 (got 1e-13)");
+    row(
+        "time step huge", [](Scene& s) { s.world.timeStep = 1e7; },
+        "world.timeStep: must be between 1e-12 and 1e6 (got 1e7)");
+    row(
+        "time step nan", [](Scene& s) { s.world.timeStep = kNaN; },
+        "world.timeStep: must be finite");
+    row(
+        "world restitution high", [](Scene& s) { s.world.restitution = 1.5; },
+        "world.restitution: must be between 0 and 1 (got 1.5)");
+    row(
+        "world restitution negative", [](Scene& s) { s.world.restitution = -0.1; },
+        "world.restitution: must be between 0 and 1 (got -0.1)");
+    row(
+        "world restitution inf", [](Scene& s) { s.world.restitution = kInf; },
+        "world.restitution: must be finite");
+
+    row(
+        "plane point inf", [](Scene& s) { s.planes[0].point.x() = kInf; },
+        "planes[0].point: must be finite");
+    row(
+        "plane point absurd", [](Scene& s) { s.planes[0].point.x() = -2e12; },
+        "planes[0].point: must be at most 1e12 in magnitude (got -2e12)");
+    row(
+        "plane normal zero", [](Scene& s) { s.planes[0].normal = Vec3::Zero(); },
+        "planes[0].normal: must not be zero-length");
+    row(
+        "plane normal tiny", [](Scene& s) { s.planes[0].normal = Vec3(0, 1e-101, 0); },
+        "planes[0].normal: must not be zero-length");
+    row(
+        "plane normal nan", [](Scene& s) { s.planes[0].normal = Vec3(0, kNaN, 0); },
+        "planes[0].normal: must be finite");
+    row(
+        "plane normal absurd", [](Scene& s) { s.planes[0].normal = Vec3(0, 1e300, 0); },
+        "planes[0].normal: must be at most 1e12 in magnitude (got 1e300)");
+    row(
+        "plane restitution high", [](Scene& s) { s.planes[0].restitution = 2.0; },
+        "planes[0].restitution: must be between 0 and 1 (got 2)");
+    row(
+        "plane colour name", [](Scene& s) { s.planes[0].color = "red"; },
+        "planes[0].color: must be empty or \"#rrggbb\" (got \"red\")");
+    row(
+        "plane colour bad digit", [](Scene& s) { s.planes[0].color = "#12345g"; },
+        "planes[0].color: must be empty or \"#rrggbb\" (got \"#12345g\")");
+    row(
+        "plane colour short", [](Scene& s) { s.planes[0].color = "#abc"; },
+        "planes[0].color: must be empty or \"#rrggbb\" (got \"#abc\")");
+
+    row(
+        "cylinder point nan", [](Scene& s) { s.cylinders[0].point.z() = kNaN; },
+        "cylinders[0].point: must be finite");
+    row(
+        "cylinder axis zero", [](Scene& s) { s.cylinders[0].axis = Vec3::Zero(); },
+        "cylinders[0].axis: must not be zero-length");
+    row(
+        "cylinder radius zero", [](Scene& s) { s.cylinders[0].radius = 0; },
+        "cylinders[0].radius: must be positive (got 0)");
+    row(
+        "cylinder radius negative", [](Scene& s) { s.cylinders[0].radius = -2; },
+        "cylinders[0].radius: must be positive (got -2)");
+    row(
+        "cylinder radius tiny", [](Scene& s) { s.cylinders[0].radius = 1e-13; },
+        "cylinders[0].radius: must be at least 1e-12 (got 1e-13)");
+    row(
+        "cylinder radius absurd", [](Scene& s) { s.cylinders[0].radius = 1e300; },
+        "cylinders[0].radius: must be at most 1e12 in magnitude (got 1e300)");
+    row(
+        "cylinder radius inf", [](Scene& s) { s.cylinders[0].radius = kInf; },
+        "cylinders[0].radius: must be finite");
+    row(
+        "cylinder restitution low", [](Scene& s) { s.cylinders[0].restitution = -1.0; },
+        "cylinders[0].restitution: must be between 0 and 1 (got -1)");
+    row(
+        "cylinder colour", [](Scene& s) { s.cylinders[0].color = "#1234567"; },
+        "cylinders[0].color: must be empty or \"#rrggbb\" (got \"#1234567\")");
+
+    row(
+        "ball position nan", [](Scene& s) { s.balls[1].position.y() = kNaN; },
+        "balls[1].position: must be finite");
+    row(
+        "ball position absurd", [](Scene& s) { s.balls[1].position.x() = 1e300; },
+        "balls[1].position: must be at most 1e12 in magnitude (got 1e300)");
+    row(
+        "ball velocity inf", [](Scene& s) { s.balls[1].velocity.z() = kInf; },
+        "balls[1].velocity: must be finite");
+    row(
+        "ball velocity absurd", [](Scene& s) { s.balls[1].velocity.z() = -1e13; },
+        "balls[1].velocity: must be at most 1e12 in magnitude (got -1e13)");
+    row(
+        "ball radius zero", [](Scene& s) { s.balls[1].radius = 0; },
+        "balls[1].radius: must be positive (got 0)");
+    row(
+        "ball radius negative", [](Scene& s) { s.balls[1].radius = -1; },
+        "balls[1].radius: must be positive (got -1)");
+    row(
+        "ball radius nan", [](Scene& s) { s.balls[1].radius = kNaN; },
+        "balls[1].radius: must be finite");
+    row(
+        "ball radius tiny", [](Scene& s) { s.balls[1].radius = 1e-15; },
+        "balls[1].radius: must be at least 1e-12 (got 1e-15)");
+    row(
+        "ball mass zero", [](Scene& s) { s.balls[1].mass = 0; },
+        "balls[1].mass: must be positive (got 0)");
+    row(
+        "ball mass negative", [](Scene& s) { s.balls[1].mass = -1; },
+        "balls[1].mass: must be positive (got -1)");
+    row(
+        "ball mass huge", [](Scene& s) { s.balls[1].mass = 1e31; },
+        "balls[1].mass: must be between 1e-30 and 1e30 (got 1e31)");
+    row(
+        "ball mass tiny", [](Scene& s) { s.balls[1].mass = 1e-31; },
+        "balls[1].mass: must be between 1e-30 and 1e30 (got 1e-31)");
+    row(
+        "ball mass inf", [](Scene& s) { s.balls[1].mass = kInf; }, "balls[1].mass: must be finite");
+    row(
+        "ball restitution high", [](Scene& s) { s.balls[1].restitution = 1.5; },
+        "balls[1].restitution: must be between 0 and 1 (got 1.5)");
+    row(
+        "ball restitution nan", [](Scene& s) { s.balls[1].restitution = kNaN; },
+        "balls[1].restitution: must be finite");
+    row(
+        "ball colour", [](Scene& s) { s.balls[1].color = "blue"; },
+        "balls[1].color: must be empty or \"#rrggbb\" (got \"blue\")");
+
+    row(
+        "ball overlaps ball", [](Scene& s) { s.balls[1].position = Vec3(0.9, 1, 0); },
+        "balls[1].position: overlaps balls[0] by 0.1");
+    row(
+        "ball overlaps plane", [](Scene& s) { s.balls[1].position = Vec3(2, 0.45, 0); },
+        "balls[1].position: overlaps planes[0] by 0.05");
+    row(
+        "ball behind plane", [](Scene& s) { s.balls[1].position = Vec3(2, -0.1, 0); },
+        "balls[1].position: overlaps planes[0] (is 0.1 behind its surface)");
+    row(
+        "ball overlaps cylinder", [](Scene& s) { s.balls[1].position = Vec3(4.1, 1, 7); },
+        "balls[1].position: overlaps cylinders[0] by 0.1");
+    row(
+        "ball inside cylinder", [](Scene& s) { s.balls[1].position = Vec3(5, 1, -3); },
+        "balls[1].position: overlaps cylinders[0] by 1");
+    row(
+        "earlier ball overlaps later", [](Scene& s) { s.balls[0].position = Vec3(1.2, 1, 0); },
+        "balls[1].position: overlaps balls[0] by 0.2");
+    row(
+        "overlap with unnormalised directions",
+        [](Scene& s) {
+          s.planes[0].normal = Vec3(0, 1e-3, 0);
+          s.cylinders[0].axis = Vec3(0, 0, -40);
+          s.balls[1].position = Vec3(4.2, 1, 0);
+        },
+        "balls[1].position: overlaps cylinders[0] by 0.2");
+  }
+
+  void badValue() {
+    QFETCH(SceneEdit, edit);
+    QFETCH(QString, error);
+    Scene scene = baseScene();
+    edit(scene);
+    QCOMPARE(texts(carom::validateScene(scene)), QStringList{error});
+  }
+
+  // Touching is allowed up to kTouchFraction of the radius (sum); just past it is an overlap.
+  void touching_data() {
+    QTest::addColumn<SceneEdit>("edit");
+    QTest::addColumn<bool>("valid");
+
+    const double within = 0.5 * carom::tolerance::kTouchFraction;
+    const double beyond = 2.0 * carom::tolerance::kTouchFraction;
+    QTest::newRow("ball on ball") << SceneEdit([](Scene& s) { s.balls[1].position.x() = 1.0; })
+                                  << true;
+    QTest::newRow("ball on ball within tolerance")
+        << SceneEdit([=](Scene& s) { s.balls[1].position.x() = 1.0 - within; }) << true;
+    QTest::newRow("ball on ball beyond tolerance")
+        << SceneEdit([=](Scene& s) { s.balls[1].position.x() = 1.0 - beyond; }) << false;
+    QTest::newRow("ball on floor")
+        << SceneEdit([](Scene& s) { s.balls[1].position.y() = 0.5; }) << true;
+    QTest::newRow("ball on floor within tolerance")
+        << SceneEdit([=](Scene& s) { s.balls[1].position.y() = 0.5 - 0.5 * within; }) << true;
+    QTest::newRow("ball on floor beyond tolerance")
+        << SceneEdit([=](Scene& s) { s.balls[1].position.y() = 0.5 - 0.5 * beyond; }) << false;
+    QTest::newRow("ball on cylinder")
+        << SceneEdit([](Scene& s) { s.balls[1].position = Vec3(4, 1, 3); }) << true;
+    QTest::newRow("ball on cylinder beyond tolerance")
+        << SceneEdit([=](Scene& s) { s.balls[1].position = Vec3(4 + beyond, 1, 3); }) << false;
+    QTest::newRow("cradle row") << SceneEdit([](Scene& s) {
+      s.balls.clear();
+      for (int i = 0; i < 5; ++i) s.balls.push_back(makeBall(Vec3(0.2 * i, 1, 0), 0.1));
+    }) << true;
+  }
+
+  void touching() {
+    QFETCH(SceneEdit, edit);
+    QFETCH(bool, valid);
+    Scene scene = baseScene();
+    edit(scene);
+    const auto errors = carom::validateScene(scene);
+    QCOMPARE(errors.empty(), valid);
+    if (!valid) QVERIFY(QString::fromStdString(errors.front().message).startsWith("overlaps "));
+  }
+
+  void tooMany_data() {
+    QTest::addColumn<SceneEdit>("edit");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("balls") << SceneEdit([](Scene& s) {
+      s.balls.resize(carom::tolerance::kMaxBalls + 1);
+    }) << "balls: must have at most 1000000 entries (got 1000001)";
+    QTest::newRow("planes") << SceneEdit([](Scene& s) {
+      s.planes.resize(carom::tolerance::kMaxPlanes + 1);
+    }) << "planes: must have at most 10000 entries (got 10001)";
+    QTest::newRow("cylinders") << SceneEdit([](Scene& s) {
+      s.cylinders.resize(carom::tolerance::kMaxCylinders + 1);
+    }) << "cylinders: must have at most 10000 entries (got 10001)";
+  }
+
+  // Counts are checked before anything else, so even a million coincident balls are refused at
+  // once rather than compared pair by pair.
+  void tooMany() {
+    QFETCH(SceneEdit, edit);
+    QFETCH(QString, error);
+    Scene scene;
+    scene.world.timeStep = -1;  // not reported: counts come first and stop validation
+    edit(scene);
+    const auto errors = carom::validateScene(scene);
+    QCOMPARE(texts(errors), QStringList{error});
+  }
+
+  void exactlyAtTheLimits() {
+    Scene scene;
+    scene.planes.resize(carom::tolerance::kMaxPlanes);
+    for (Plane& plane : scene.planes) plane.point = Vec3(0, -10, 0);
+    QVERIFY(carom::validateScene(scene).empty());
+  }
+
+  void errorsComeInFileOrder() {
+    Scene scene = baseScene();
+    scene.balls.push_back(makeBall(Vec3(2.5, 1, 0), 0.5));  // overlaps balls[1]
+    scene.balls[0].radius = -1;
+    scene.cylinders[0].radius = 0;
+    scene.planes[0].color = "green";
+    scene.world.restitution = 3;
+    scene.world.timeStep = 0;
+    QCOMPARE(texts(carom::validateScene(scene)),
+             (QStringList{"world.timeStep: must be positive (got 0)",
+                          "world.restitution: must be between 0 and 1 (got 3)",
+                          "planes[0].color: must be empty or \"#rrggbb\" (got \"green\")",
+                          "cylinders[0].radius: must be positive (got 0)",
+                          "balls[0].radius: must be positive (got -1)",
+                          "balls[2].position: overlaps balls[1] by 0.5"}));
+  }
+
+  void oneBallWithSeveralErrors() {
+    Scene scene = baseScene();
+    Ball& ball = scene.balls[1];
+    ball.position = Vec3(0, 0.3, 0);  // overlaps the floor and balls[0]
+    QCOMPARE(texts(carom::validateScene(scene)),
+             (QStringList{"balls[1].position: overlaps planes[0] by 0.2",
+                          "balls[1].position: overlaps balls[0] by 0.3"}));
+    ball.velocity.x() = kNaN;
+    ball.mass = 0;
+    ball.restitution = 7;
+    // An object with a bad field takes no part in overlap tests.
+    QCOMPARE(
+        texts(carom::validateScene(scene)),
+        (QStringList{"balls[1].velocity: must be finite", "balls[1].mass: must be positive (got 0)",
+                     "balls[1].restitution: must be between 0 and 1 (got 7)"}));
+  }
+
+  void eachOverlapOnceOnTheLaterBall() {
+    Scene scene;
+    scene.balls = {makeBall(Vec3(0, 0, 0), 1), makeBall(Vec3(1, 0, 0), 1),
+                   makeBall(Vec3(1.5, 0, 0), 1)};
+    QCOMPARE(texts(carom::validateScene(scene)),
+             (QStringList{"balls[1].position: overlaps balls[0] by 1",
+                          "balls[2].position: overlaps balls[0] by 0.5",
+                          "balls[2].position: overlaps balls[1] by 1.5"}));
+  }
+
+  void maxErrorsIsRespected() {
+    Scene scene;
+    for (int i = 0; i < 50; ++i) scene.balls.push_back(makeBall(Vec3(0, 0, 0), -1));
+    const auto errors = carom::validateScene(scene, 5);
+    QCOMPARE(errors.size(), std::size_t{5});
+    QCOMPARE(QString::fromStdString(errors[4].path), QString("balls[4].radius"));
+    QCOMPARE(carom::validateScene(scene).size(), std::size_t{20});
+    QVERIFY(carom::validateScene(scene, 0).empty());
+  }
+
+  // Coincident balls: the errors stop at the limit long before all pairs are looked at.
+  void coincidentBallsStopAtTheLimit() {
+    Scene scene;
+    scene.balls.assign(200'000, makeBall(Vec3(1, 2, 3), 0.5));
+    const auto errors = carom::validateScene(scene, 3);
+    QCOMPARE(texts(errors), (QStringList{"balls[1].position: overlaps balls[0] by 1",
+                                         "balls[2].position: overlaps balls[0] by 1",
+                                         "balls[2].position: overlaps balls[1] by 1"}));
+  }
+
+  // The grid against the obvious all-pairs test, over radii spanning three orders of magnitude
+  // and positions far from the origin.
+  void overlapsMatchBruteForce_data() {
+    QTest::addColumn<double>("offset");
+    QTest::addColumn<double>("smallestRadius");
+    QTest::newRow("near origin") << 0.0 << 0.01;
+    QTest::newRow("far away") << 3e11 << 0.01;
+    QTest::newRow("tiny balls off the origin") << -5e5 << 1e-9;
+  }
+
+  void overlapsMatchBruteForce() {
+    QFETCH(double, offset);
+    QFETCH(double, smallestRadius);
+    std::mt19937_64 random(12345);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double boxSide = 200 * smallestRadius;
+    Scene scene;
+    for (int i = 0; i < 1500; ++i) {
+      const Vec3 position =
+          Vec3(unit(random), unit(random), unit(random)) * boxSide + Vec3::Constant(offset);
+      const double radius = smallestRadius * std::pow(10.0, 3.0 * std::pow(unit(random), 6.0));
+      scene.balls.push_back(makeBall(position, radius));
+    }
+    // Exactly touching pairs, in the same class and across classes.
+    scene.balls.push_back(makeBall(scene.balls[3].position + Vec3(scene.balls[3].radius * 2, 0, 0),
+                                   scene.balls[3].radius));
+    scene.balls.push_back(
+        makeBall(scene.balls[5].position - Vec3(0, scene.balls[5].radius + smallestRadius, 0),
+                 smallestRadius));
+
+    QStringList found;
+    for (const auto& error : carom::validateScene(scene, 1'000'000)) {
+      QString text = QString::fromStdString(error.text());
+      found << text.left(text.lastIndexOf(" by "));
+    }
+    const QStringList expected = bruteForceOverlaps(scene.balls);
+    QVERIFY(expected.size() > 50);  // the case must exercise the grid
+    QCOMPARE(found, expected);
+  }
+
+  // 200,000 touching balls on a lattice and one intruder: exactly the intruder's eight overlaps
+  // are found (touching neighbours are not overlaps). All pairs would be 2e10 comparisons: this
+  // finishes only because the test is not all-pairs.
+  void largeSceneFindsTheIntruder() {
+    const auto errors = validateLattice(200'000);
+    QCOMPARE(errors.size(), std::size_t{8});
+    for (const auto& error : errors)
+      QCOMPARE(QString::fromStdString(error.path), QString("balls[200000].position"));
+  }
+
+ private:
+  // `count` touching balls of radius 0.5 on a unit lattice, one ball in the middle of a lattice
+  // cell (overlapping its 8 corners) and one huge ball far away in a size class of its own.
+  static std::vector<carom::ValidationError> validateLattice(int count) {
+    Scene scene;
+    const int side = 60;
+    for (int i = 0; i < count; ++i)
+      scene.balls.push_back(makeBall(Vec3(i % side, (i / side) % side, i / (side * side)), 0.5));
+    scene.balls.push_back(makeBall(Vec3(10.5, 20.5, 2.5), 0.5));
+    scene.balls.push_back(makeBall(Vec3(1e6, 0, 0), 1e4));
+    return carom::validateScene(scene);
+  }
+};
+
+QTEST_APPLESS_MAIN(ValidationTest)
+#include "test_validation.moc"
