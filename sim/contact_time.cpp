@@ -26,13 +26,30 @@ Polynomial squaredLengthMinus(const Vec3& u0, const Vec3& u1, const Vec3& u2, do
 double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon) {
   const double b = u0.dot(u1);
   if (b >= 0.0) return kNever;  // receding or sliding past: on a straight path it stays so
-  const double length = u0.norm();
+  const double a = u1.squaredNorm();
+  const double length2 = u0.squaredNorm();
+  // Most pairs miss by far: reject them on the cheap form before taking square roots, with
+  // margins well above the rounding of the cheap form. (The contact comes no sooner than
+  // c / (-2b).)
+  const double roughC = length2 - rho * rho;
+  if (roughC > 0.0 && (b * b - a * roughC < -1e-12 * a * length2 ||
+                       roughC > -2.0 * b * horizon * (1.0 + 1e-12)))
+    return kNever;
+  const double length = std::sqrt(length2);
   const double c = (length - rho) * (length + rho);
   if (c <= 0.0) return 0.0;  // touching or overlapping, and approaching
-  const double a = u1.squaredNorm();
   const double disc = b * b - a * c;
   if (disc <= 0.0) return kNever;  // misses, or only grazes
   const double t = c / (-b + std::sqrt(disc));
+  return t <= horizon ? t : kNever;
+}
+
+// First time t >= 0 at which x0 + v t + a t^2 / 2 reaches zero going down, from x0 >= 0;
+// a bounded closed form for the straight case, which needs no polynomial machinery.
+double linearEntry(double gap, double rate, double horizon) {
+  if (rate >= 0.0) return kNever;  // receding, or level: a straight path never turns back
+  if (gap <= 0.0) return 0.0;
+  const double t = gap / -rate;
   return t <= horizon ? t : kNever;
 }
 
@@ -41,8 +58,10 @@ double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon)
 double ballPlaneContactTime(const BallPath& ball, double radius, const PlaneShape& plane,
                             double horizon) {
   const double gap = plane.gap(ball.position, radius);
-  return firstEntryQuadratic(0.5 * plane.normal.dot(ball.acceleration),
-                             plane.normal.dot(ball.velocity), gap, horizon);
+  const double normalAcceleration = plane.normal.dot(ball.acceleration);
+  const double normalVelocity = plane.normal.dot(ball.velocity);
+  if (normalAcceleration == 0.0) return linearEntry(gap, normalVelocity, horizon);
+  return firstEntryQuadratic(0.5 * normalAcceleration, normalVelocity, gap, horizon);
 }
 
 double ballCylinderContactTime(const BallPath& ball, double radius,
@@ -69,6 +88,7 @@ double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSu
 double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
                             double horizon) {
   const double sign = upwards ? 1.0 : -1.0;
+  if (a == 0.0) return linearEntry(sign * (bound - x0), -sign * v, horizon);
   return firstEntryQuadratic(-0.5 * sign * a, -sign * v, sign * (bound - x0), horizon);
 }
 

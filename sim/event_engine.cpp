@@ -44,17 +44,20 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     : bodies_(bodies),
       gravity_(gravity),
       pathAcceleration_(pathAcceleration),
+      straightPaths_(pathAcceleration.isZero()),
       collapseSpeed_(collapseSpeed),
       now_(now) {
   const int n = bodies.ballCount();
   particles_.resize(n);
-  predictions_.resize(n);
+  tracks_.resize(n);
+  contacts_.resize(n);
+  crossings_.resize(n);
   restSpeed_.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& p = particles_[i];
     p.resting = state[i].resting;
-    p.motion = {state[i].position, p.resting ? Vec3::Zero() : state[i].velocity,
-                p.resting ? Vec3::Zero() : pathAcceleration_, now};
+    tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
+                  bodies.radius[i]};
     restSpeed_[i] = restSpeed(gravity_, bodies.radius[i]);
   }
   buildGrid(state);
@@ -71,7 +74,8 @@ void EventEngine::buildGrid(const std::vector<BallState>& state) {
   grid_ = CellGrid(lower, upper, cellSize, maxCells);
   members_.reset(grid_.cellCount(), static_cast<int>(particles_.size()));
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
-    particles_[i].cell = grid_.index(grid_.coordsOf(particles_[i].motion.position));
+    particles_[i].coords = grid_.coordsOf(tracks_[i].motion.position);
+    particles_[i].cell = grid_.index(particles_[i].coords);
     members_.insert(i, particles_[i].cell);
   }
 }
@@ -120,13 +124,14 @@ void EventEngine::predictAll() {
 }
 
 BallPath EventEngine::pathAt(int i, double t) const {
-  const Motion& m = particles_[i].motion;
-  return {m.positionAt(t), m.velocityAt(t), m.acceleration};
+  const Motion& m = tracks_[i].motion;
+  const Vec3& a = accelerationOf(i);
+  return {m.positionAt(t, a), m.velocityAt(t, a), a};
 }
 
 template <typename F>
 void EventEngine::forEachNeighbour(int i, F&& f) const {
-  grid_.forEachNeighbourCell(grid_.coords(particles_[i].cell), [&](int cell) {
+  grid_.forEachNeighbourCell(particles_[i].coords, [&](int cell) {
     members_.forEachIn(cell, [&](int k) {
       if (k != i) f(k);
     });
@@ -134,49 +139,57 @@ void EventEngine::forEachNeighbour(int i, F&& f) const {
 }
 
 void EventEngine::predict(int i) {
-  Particle& p = particles_[i];
-  Prediction next;
-  double best = kNever;
-  if (!p.resting) {
+  contacts_[i] = {};
+  crossings_[i] = {};
+  if (!particles_[i].resting) {
     const BallPath path = pathAt(i, now_);
-    const double r = bodies_.radius[i];
-    for (int s = staticStart_[p.cell]; s < staticStart_[p.cell + 1]; ++s) {
-      const StaticRef ref = statics_[s];
-      const double t =
-          ref.cylinder ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], best)
-                       : ballPlaneContactTime(path, r, bodies_.planes[ref.index], best);
-      if (t < best) {
-        best = t;
-        next = {ref.cylinder ? EventKind::Cylinder : EventKind::Plane, 0, ref.index, 0};
-      }
-    }
-    forEachNeighbour(i, [&](int k) {
-      const double t = ballBallContactTime(path, pathAt(k, now_), r + bodies_.radius[k], best);
-      if (t < best) {
-        best = t;
-        next = {EventKind::Ball, 0, k, particles_[k].counter};
-      }
-    });
-    const CellGrid::Coords c = grid_.coords(p.cell);
-    for (int a = 0; a < 3; ++a) {
-      const double up = boundaryCrossingTime(path.position[a], path.velocity[a],
-                                             path.acceleration[a], grid_.upperFace(a, c[a]), true,
-                                             best);
-      if (up < best) {
-        best = up;
-        next = {EventKind::CellUp, static_cast<std::int8_t>(a), -1, 0};
-      }
-      const double down = boundaryCrossingTime(path.position[a], path.velocity[a],
-                                               path.acceleration[a], grid_.lowerFace(a, c[a]),
-                                               false, best);
-      if (down < best) {
-        best = down;
-        next = {EventKind::CellDown, static_cast<std::int8_t>(a), -1, 0};
-      }
+    findStaticContact(i, path);
+    forEachNeighbour(i, [&](int k) { findBallContact(i, path, k); });
+    findCrossing(i, path);
+  }
+  schedule(i);
+}
+
+void EventEngine::findStaticContact(int i, const BallPath& path) {
+  Contact& best = contacts_[i];
+  const int cell = particles_[i].cell;
+  const double r = bodies_.radius[i];
+  for (int s = staticStart_[cell]; s < staticStart_[cell + 1]; ++s) {
+    const StaticRef ref = statics_[s];
+    const double horizon = std::min(best.time, horizon_) - now_;
+    const double t =
+        ref.cylinder ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
+                     : ballPlaneContactTime(path, r, bodies_.planes[ref.index], horizon);
+    if (t < horizon)
+      best = {now_ + t, ref.cylinder ? EventKind::Cylinder : EventKind::Plane, ref.index, 0};
+  }
+}
+
+void EventEngine::findBallContact(int i, const BallPath& path, int k) {
+  Contact& best = contacts_[i];
+  const double horizon = std::min(best.time, horizon_) - now_;
+  const double t =
+      ballBallContactTime(path, pathAt(k, now_), tracks_[i].radius + tracks_[k].radius, horizon);
+  if (t < horizon) best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
+}
+
+void EventEngine::findCrossing(int i, const BallPath& path) {
+  Crossing& next = crossings_[i];
+  const CellGrid::Coords& c = particles_[i].coords;
+  for (int a = 0; a < 3; ++a) {
+    for (int direction : {1, -1}) {
+      const double face =
+          direction > 0 ? grid_.upperFace(a, c[a]) : grid_.lowerFace(a, c[a]);
+      const double horizon = std::min(next.time, horizon_) - now_;
+      const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
+                                            path.acceleration[a], face, direction > 0, horizon);
+      if (t < horizon) next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction)};
     }
   }
-  predictions_[i] = next;
-  queue_.set(i, now_ + best);
+}
+
+void EventEngine::schedule(int i) {
+  queue_.set(i, std::min(contacts_[i].time, crossings_[i].time));
 }
 
 void EventEngine::warnNeighbours(int i) {
@@ -185,11 +198,44 @@ void EventEngine::warnNeighbours(int i) {
     if (particles_[k].resting) return;
     const double t =
         ballBallContactTime(pathAt(k, now_), path, bodies_.radius[i] + bodies_.radius[k], kNever);
-    if (now_ + t < queue_.timeOf(k)) {
-      predictions_[k] = {EventKind::Ball, 0, i, particles_[i].counter};
-      queue_.set(k, now_ + t);
+    if (now_ + t < contacts_[k].time) {
+      contacts_[k] = {now_ + t, EventKind::Ball, i, particles_[i].counter};
+      schedule(k);
     }
   });
+}
+
+void EventEngine::cross(int i, RunStats& stats) {
+  ++stats.cellCrossings;
+  Particle& p = particles_[i];
+  const Crossing crossing = crossings_[i];
+  p.coords[crossing.axis] += crossing.direction;
+  members_.remove(i);
+  p.cell = grid_.index(p.coords);
+  members_.insert(i, p.cell);
+  // The path is unchanged, so the contact already predicted stays valid: only the statics of the
+  // new cell and the balls in the layer of cells that just came into reach can bring it forward.
+  const BallPath path = pathAt(i, now_);
+  findStaticContact(i, path);
+  CellGrid::Coords layer = p.coords;
+  layer[crossing.axis] += crossing.direction;
+  if (layer[crossing.axis] >= 0 && layer[crossing.axis] < grid_.counts()[crossing.axis]) {
+    const int u = (crossing.axis + 1) % 3, v = (crossing.axis + 2) % 3;
+    for (int du = -1; du <= 1; ++du) {
+      for (int dv = -1; dv <= 1; ++dv) {
+        CellGrid::Coords cell = layer;
+        cell[u] += du;
+        cell[v] += dv;
+        if (cell[u] < 0 || cell[u] >= grid_.counts()[u] || cell[v] < 0 ||
+            cell[v] >= grid_.counts()[v])
+          continue;
+        members_.forEachIn(grid_.index(cell), [&](int k) { findBallContact(i, path, k); });
+      }
+    }
+  }
+  crossings_[i] = {};
+  findCrossing(i, path);
+  schedule(i);
 }
 
 void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) {
@@ -203,43 +249,36 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
 
 void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* log) {
   ++stats.events;
-  const Prediction event = predictions_[i];
-  Particle& p = particles_[i];
+  if (crossings_[i].time <= contacts_[i].time) {
+    cross(i, stats);
+    return;
+  }
+  const Contact event = contacts_[i];
   switch (event.kind) {
     case EventKind::None:
-      queue_.set(i, kNever);
+      schedule(i);
       return;
-    case EventKind::CellUp:
-    case EventKind::CellDown: {
-      ++stats.cellCrossings;
-      CellGrid::Coords c = grid_.coords(p.cell);
-      c[event.axis] += event.kind == EventKind::CellUp ? 1 : -1;
-      members_.remove(i);
-      p.cell = grid_.index(c);
-      members_.insert(i, p.cell);
-      predict(i);  // the path is unchanged, so predictions involving i stay valid
-      return;
-    }
     case EventKind::Plane:
     case EventKind::Cylinder: {
-      p.motion.moveTo(now_);
+      moveTo(i, now_);
+      const Motion& m = tracks_[i].motion;
       const double r = bodies_.radius[i];
       Vec3 n;
       double gap, restitution;
       if (event.kind == EventKind::Plane) {
         const PlaneShape& plane = bodies_.planes[event.other];
         n = plane.normal;
-        gap = plane.gap(p.motion.position, r);
+        gap = plane.gap(m.position, r);
         restitution = std::min(bodies_.restitution[i], bodies_.planeRestitution[event.other]);
       } else {
         const CylinderShape& cylinder = bodies_.cylinders[event.other];
-        n = cylinder.perpendicular(p.motion.position - cylinder.point);
+        n = cylinder.perpendicular(m.position - cylinder.point);
         gap = n.norm() - cylinder.radius - r;
         n.normalize();
         restitution = std::min(bodies_.restitution[i], bodies_.cylinderRestitution[event.other]);
       }
       notePenetration(-gap, stats);
-      const double approach = -p.motion.velocity.dot(n);
+      const double approach = -m.velocity.dot(n);
       if (collideWithSurface(i, n, restitution, stats)) {
         if (event.kind == EventKind::Plane)
           ++stats.collisions.ballPlane;
@@ -249,7 +288,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
           log->push_back({now_,
                           event.kind == EventKind::Plane ? ContactKind::BallPlane
                                                          : ContactKind::BallCylinder,
-                          i, event.other, p.motion.position - r * n, approach});
+                          i, event.other, m.position - r * n, approach});
       }
       if (!particles_[i].resting) predict(i);
       return;
@@ -270,14 +309,16 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
 void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log) {
   Particle& a = particles_[i];
   Particle& b = particles_[j];
-  a.motion.moveTo(now_);
-  b.motion.moveTo(now_);
-  Vec3 n = b.motion.position - a.motion.position;
+  moveTo(i, now_);
+  moveTo(j, now_);
+  Motion& ma = tracks_[i].motion;
+  Motion& mb = tracks_[j].motion;
+  Vec3 n = mb.position - ma.position;
   const double distance = n.norm();
   const double radiusSum = bodies_.radius[i] + bodies_.radius[j];
   notePenetration(radiusSum - distance, stats);
   n /= distance;
-  const double approach = (a.motion.velocity - b.motion.velocity).dot(n);
+  const double approach = (ma.velocity - mb.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
   bool collided = false;
   if (b.resting && approach < tolerance::kWakeSpeedFactor * restSpeed_[i]) {
@@ -285,7 +326,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     collided = collideWithSurface(i, -n, restitution, stats);
   } else if (approach > 0.0) {
     if (b.resting) wake(j, stats);
-    resolveBallBall(a.motion.velocity, b.motion.velocity, bodies_.inverseMass[i],
+    resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i],
                     bodies_.inverseMass[j], n, restitution, collapseSpeed_);
     changed(i);
     changed(j);
@@ -295,7 +336,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     ++stats.collisions.ballBall;
     if (log)
       log->push_back({now_, ContactKind::BallBall, i, j,
-                      a.motion.position + bodies_.radius[i] * n, approach});
+                      ma.position + bodies_.radius[i] * n, approach});
   }
   if (!a.resting) predict(i);
   if (!b.resting) predict(j);
@@ -303,14 +344,15 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
 
 bool EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats) {
   Particle& p = particles_[i];
-  const double approach = -p.motion.velocity.dot(n);
+  Motion& m = tracks_[i].motion;
+  const double approach = -m.velocity.dot(n);
   const bool pressed = gravity_.dot(n) < 0.0;
   if (approach <= 0.0 && !pressed) return false;
   const double rest = restSpeed_[i];
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
   // wall and a resting ball would otherwise rattle between them.
   if (approach < rest) {
-    const Vec3 tangential = p.motion.velocity + approach * n;
+    const Vec3 tangential = m.velocity + approach * n;
     if (tangential.norm() < rest && supported(i)) {
       putToRest(i, stats);
       return true;
@@ -318,7 +360,7 @@ bool EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   }
   const double minimum = pressed ? rest : collapseSpeed_;
   if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
-  resolveAgainstSurface(p.motion.velocity, n, restitution, minimum);
+  resolveAgainstSurface(m.velocity, n, restitution, minimum);
   changed(i);
   // A zero-time cycle of contacts (a ball wedged between shapes) must not hang the run.
   if (p.instant == now_) {
@@ -334,14 +376,14 @@ void EventEngine::changed(int i) { ++particles_[i].counter; }
 
 void EventEngine::putToRest(int i, RunStats& stats) {
   Particle& p = particles_[i];
-  p.motion.moveTo(now_);
-  p.motion.velocity.setZero();
-  p.motion.acceleration.setZero();
+  moveTo(i, now_);
+  tracks_[i].motion.velocity.setZero();
   p.resting = true;
   changed(i);
   ++stats.restings;
-  predictions_[i] = {};
-  queue_.set(i, kNever);
+  contacts_[i] = {};
+  crossings_[i] = {};
+  schedule(i);
   warnNeighbours(i);
 }
 
@@ -355,14 +397,13 @@ void EventEngine::wake(int i, RunStats& stats) {
     pending.pop_back();
     Particle& p = particles_[k];
     ++stats.wakes;
-    p.motion.since = now_;
-    p.motion.acceleration = pathAcceleration_;
+    tracks_[k].motion.since = now_;  // starts to fall from here
     p.collisionsThisInstant = 0;
     changed(k);
     forEachNeighbour(k, [&](int m) {
       Particle& q = particles_[m];
       if (!q.resting) return;
-      const Vec3 offset = q.motion.position - p.motion.position;
+      const Vec3 offset = tracks_[m].motion.position - tracks_[k].motion.position;
       if (offset.dot(gravity_) >= 0.0) return;  // beside or below: it does not rest on k
       const double gap = offset.norm() - bodies_.radius[k] - bodies_.radius[m];
       if (gap <= tolerance::kSupportGapFraction * std::min(bodies_.radius[k], bodies_.radius[m])) {
@@ -378,7 +419,7 @@ void EventEngine::wake(int i, RunStats& stats) {
 // each other in a pile must be able to come to rest one after the other.
 bool EventEngine::supported(int i) const {
   const Particle& p = particles_[i];
-  const Vec3 centre = p.motion.positionAt(now_);
+  const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
   const double r = bodies_.radius[i];
   const double reach = tolerance::kSupportGapFraction * r;
   std::vector<Vec3> normals;
@@ -395,8 +436,9 @@ bool EventEngine::supported(int i) const {
   }
   forEachNeighbour(i, [&](int k) {
     const Particle& q = particles_[k];
-    if (!q.resting && q.motion.velocityAt(now_).norm() >= restSpeed_[i]) return;
-    const Vec3 d = centre - q.motion.positionAt(now_);
+    const Motion& mq = tracks_[k].motion;
+    if (!q.resting && mq.velocityAt(now_, pathAcceleration_).norm() >= restSpeed_[i]) return;
+    const Vec3 d = centre - mq.positionAt(now_, accelerationOf(k));
     if (d.norm() - r - bodies_.radius[k] <= reach) normals.push_back(d.normalized());
   });
   return holdsAgainstGravity(gravity_, normals);
@@ -415,7 +457,9 @@ std::string EventEngine::gridSummary() const {
 
 BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
-  return {p.motion.positionAt(now_), p.motion.velocityAt(now_), p.resting};
+  const Motion& m = tracks_[ball].motion;
+  const Vec3& a = accelerationOf(ball);
+  return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting};
 }
 
 std::vector<BallState> EventEngine::state() const {
@@ -428,8 +472,8 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
     Particle& p = particles_[i];
     if (p.resting) continue;
-    p.motion.moveTo(now_);
-    p.motion.velocity = velocities[i];
+    moveTo(i, now_);
+    tracks_[i].motion.velocity = velocities[i];
     changed(i);
   }
   predictAll();

@@ -15,6 +15,7 @@
 #include "run_stats.h"
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,25 +38,41 @@ class EventEngine {
   BallState stateOf(int ball) const;
   std::vector<BallState> state() const;
 
+  // Events after `time` need not be predicted (the end of a swept step): they are left out,
+  // which saves work; they are found when the engine is told about the next step.
+  void setHorizon(double time) { horizon_ = time; }
+
   // Replaces every ball's velocity at now() (for the integrator kicks of `swept`) and predicts
   // all events again.
   void setVelocities(const std::vector<Vec3>& velocities);
 
  private:
-  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, CellUp, CellDown };
-  struct Particle {
+  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder };
+  // What a neighbour search reads of every ball, in one cache line.
+  struct alignas(64) Track {
     Motion motion;
+    double radius;
+  };
+  struct Particle {
+    CellGrid::Coords coords{};
     int cell = 0;
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsThisInstant = 0;
     double instant = 0.0;
     bool resting = false;
   };
-  struct Prediction {
+  // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
+  // crossing, which leaves the path alone, need not predict the contact again.
+  struct Contact {
+    double time = std::numeric_limits<double>::infinity();  // absolute
     EventKind kind = EventKind::None;
-    std::int8_t axis = 0;
     int other = -1;
-    std::uint32_t otherCounter = 0;
+    std::uint32_t otherCounter = 0;  // the partner ball's counter when predicted
+  };
+  struct Crossing {
+    double time = std::numeric_limits<double>::infinity();  // absolute
+    std::int8_t axis = 0;
+    std::int8_t direction = 0;
   };
   struct StaticRef {
     bool cylinder;
@@ -65,7 +82,13 @@ class EventEngine {
   void buildGrid(const std::vector<BallState>& state);
   void buildStaticLists();
   void predictAll();
+  // Predicts ball i's next contact and crossing from scratch.
   void predict(int i);
+  void findStaticContact(int i, const BallPath& path);
+  void findBallContact(int i, const BallPath& path, int k);
+  void findCrossing(int i, const BallPath& path);
+  void schedule(int i);
+  void cross(int i, RunStats& stats);
   // After ball i came to rest: a resting ball has no event of its own, so balls about to hit
   // it must be told.
   void warnNeighbours(int i);
@@ -79,6 +102,11 @@ class EventEngine {
   void wake(int i, RunStats& stats);
   bool supported(int i) const;
   BallPath pathAt(int i, double t) const;
+  const Vec3& accelerationOf(int i) const {
+    // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).
+    return straightPaths_ || particles_[i].resting ? zero_ : pathAcceleration_;
+  }
+  void moveTo(int i, double t) { tracks_[i].motion.moveTo(t, accelerationOf(i)); }
   void notePenetration(double overlap, RunStats& stats) const;
   template <typename F>
   void forEachNeighbour(int i, F&& f) const;
@@ -86,10 +114,15 @@ class EventEngine {
   const Bodies& bodies_;
   Vec3 gravity_;
   Vec3 pathAcceleration_;
+  bool straightPaths_;
   double collapseSpeed_;
   double now_;
+  double horizon_ = std::numeric_limits<double>::infinity();
+  Vec3 zero_ = Vec3::Zero();
+  std::vector<Track> tracks_;
   std::vector<Particle> particles_;
-  std::vector<Prediction> predictions_;
+  std::vector<Contact> contacts_;
+  std::vector<Crossing> crossings_;
   std::vector<double> restSpeed_;
   CellGrid grid_;
   CellMembership members_;

@@ -1,5 +1,7 @@
 #include "event_queue.h"
 
+#include <algorithm>
+
 namespace carom {
 
 void EventQueue::reset(int ballCount) {
@@ -21,7 +23,7 @@ void EventQueue::set(int ball, double time) {
 void EventQueue::siftUp(int pos) {
   const int ball = heap_[pos];
   while (pos > 0) {
-    const int parent = (pos - 1) / 2;
+    const int parent = (pos - 1) / kArity;
     if (!before(ball, heap_[parent])) break;
     heap_[pos] = heap_[parent];
     position_[heap_[pos]] = pos;
@@ -35,9 +37,12 @@ void EventQueue::siftDown(int pos) {
   const int ball = heap_[pos];
   const int n = static_cast<int>(heap_.size());
   for (;;) {
-    int child = 2 * pos + 1;
-    if (child >= n) break;
-    if (child + 1 < n && before(heap_[child + 1], heap_[child])) ++child;
+    const int first = kArity * pos + 1;
+    if (first >= n) break;
+    int child = first;
+    const int last = std::min(first + kArity, n);
+    for (int c = first + 1; c < last; ++c)
+      if (before(heap_[c], heap_[child])) child = c;
     if (!before(heap_[child], ball)) break;
     heap_[pos] = heap_[child];
     position_[heap_[pos]] = pos;

@@ -32,6 +32,7 @@ namespace {
 using Coefficients = std::array<double, 5>;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2;  // unit round-off
 // Horner's rounding error is at most gamma_2n * sum |c_k| t^k (about 8u for degree 4); twice that
 // leaves room for the rounding of the sum itself.
@@ -47,9 +48,11 @@ constexpr int kMaxSteps = 160;
 constexpr double kTangentMargin = 1e-12;
 
 struct Sample {
+  // NaN where the terms leave the double range: then only the sign is known.
   double value;  // f(t); in twice the precision when plain Horner cannot tell its sign
   double slope;  // f'(t)
-  int sign;      // of f(t): -1, +1, or 0 when |f(t)| is within the evaluation error
+  double bend;   // f''(t) / 2
+  int sign;      // of f(t): +1, -1, or 0 when within the evaluation error of 0
 };
 
 // A polynomial of known degree with the evaluations the root finder needs (for t >= 0).
@@ -70,25 +73,31 @@ class Poly {
   Sample sample(double t) const {
     double value = c_[n_];
     double slope = 0.0;
+    double bend = 0.0;
     double size = std::abs(c_[n_]);  // sum |c_k| t^k, the scale of the rounding error
     for (int k = n_ - 1; k >= 0; --k) {
+      bend = bend * t + slope;
       slope = slope * t + value;
       value = value * t + c_[k];
       size = size * t + std::abs(c_[k]);
     }
-    if (std::isinf(value) || std::abs(value) > kHornerError * size) {
-      return {value, slope, value > 0 ? 1 : -1};
-    }
+    // Terms beyond the double range (or so small that the error bound underflows) leave only
+    // the sign, from an exactly rescaled copy.
+    if (!(size >= 0x1p-900 && size <= 0x1p1000)) return {kNaN, kNaN, kNaN, rescaledSign(t)};
+    if (std::abs(value) > kHornerError * size) return {value, slope, bend, value > 0 ? 1 : -1};
     // Near a root the sign of plain Horner is noise; compensated Horner resolves touches and
     // clustered roots down to about u^2 of the terms' size.
     const double accurate = compensated(t);
-    if (!std::isfinite(accurate)) return {value, slope, 0};
     const double error =
         2 * kUnit * std::abs(accurate) + kCompensatedError * size + kUnderflowError;
-    return {accurate, slope, accurate > error ? 1 : (accurate < -error ? -1 : 0)};
+    return {accurate, slope, bend, accurate > error ? 1 : (accurate < -error ? -1 : 0)};
   }
 
  private:
+  // The sign of f(t) from f(t) / 2^E = sum c_k 2^(k e - E) m^k, where t = m 2^e with m in [1, 2)
+  // and 2^E is about the largest term: all exact, and the terms that matter are of order 1.
+  int rescaledSign(double t) const;
+
   // Horner carrying the exact rounding error of every product (fma) and sum (TwoSum) along, as
   // if evaluated in twice the working precision (Graillat, Langlois and Louvet).
   double compensated(double t) const {
@@ -114,6 +123,25 @@ std::uint64_t bitsOf(double t) {
   return std::bit_cast<std::uint64_t>(t);
 }
 
+// floor(log2 |x|) for finite non-zero x, from the bits: std::ilogb is a library call.
+int exponentOf(double x) {
+  const int biased = static_cast<int>((bitsOf(x) >> 52) & 0x7ff);
+  return biased != 0 ? biased - 1023 : std::ilogb(x);
+}
+
+int Poly::rescaledSign(double t) const {
+  if (t == 0) return c_[0] > 0 ? 1 : (c_[0] < 0 ? -1 : 0);
+  const int e = exponentOf(t);
+  int largest = std::numeric_limits<int>::min();
+  for (int k = 0; k <= n_; ++k) {
+    if (c_[k] != 0) largest = std::max(largest, exponentOf(c_[k]) + k * e);
+  }
+  if (largest == std::numeric_limits<int>::min()) return 0;
+  Coefficients d{};
+  for (int k = 0; k <= n_; ++k) d[k] = std::ldexp(c_[k], k * e - largest);
+  return Poly(d, n_).sample(std::ldexp(t, -e)).sign;
+}
+
 // Halves 0 <= lo < hi in bit space: the arithmetic midpoint within a binade, roughly the
 // geometric one across binades, so that even [0, 1e300] closes in 64 halvings.
 double split(double lo, double hi) {
@@ -126,29 +154,41 @@ double split(double lo, double hi) {
 // so that the answer errs early.
 double refine(const Poly& p, int dir, double lo, double hi, double vlo, double vhi) {
   double t = lo + (hi - lo) * (vlo / (vlo - vhi));  // regula falsi for a start
-  for (int step = 0; step < kMaxSteps; ++step) {
+  for (int iteration = 0; iteration < kMaxSteps; ++iteration) {
     const std::uint64_t before = bitsOf(hi) - bitsOf(lo);
     if (before <= 1) break;
     if (!(t > lo && t < hi)) t = split(lo, hi);
     const Sample s = p.sample(t);
     const bool before0 = dir * s.sign > 0;
     (before0 ? lo : hi) = t;
-    // Newton creeps up on a root from one side; a probe one more step on lands just past it and
-    // closes the bracket from the other side as well.
+    // Step to the nearer root of the local quadratic model f + f' d + (f''/2) d^2 (the
+    // cancellation-free form), which unlike Newton is not slowed down by a root next to an
+    // extremum; Newton where the model misses 0.
     const double toward = before0 ? kInf : -kInf;
-    const double newton = -s.value / s.slope;
-    double next = t + newton;
+    const double disc = s.slope * s.slope - 4 * s.bend * s.value;
+    const double step = disc >= 0
+                            ? -2 * s.value / (s.slope + std::copysign(std::sqrt(disc), s.slope))
+                            : -s.value / s.slope;
+    double next = t + step;
     if (next == t) next = std::nextafter(t, toward);
+    // Converging from one side, a probe one more step on lands just past the root and closes the
+    // bracket from the other side as well.
     if (next > lo && next < hi) {
-      double probe = next + newton;
+      double probe = next + step;
       if (probe == next) probe = std::nextafter(next, toward);
       if (probe > lo && probe < hi) (dir * p.sample(probe).sign > 0 ? lo : hi) = probe;
     }
-    // Newton that does not halve the bracket is not converging: bisect instead.
+    // A step that does not halve the bracket is not converging: bisect instead.
     if (bitsOf(hi) - bitsOf(lo) > before / 2) next = split(lo, hi);
     t = next;
   }
   return lo;
+}
+
+double largestMagnitude(const Coefficients& c) {
+  double largest = 0.0;
+  for (const double x : c) largest = std::max(largest, std::abs(x));
+  return largest;
 }
 
 Coefficients shifted(Coefficients c, int shift) {
@@ -160,10 +200,9 @@ Coefficients shifted(Coefficients c, int shift) {
 // products of the coefficients can neither overflow nor underflow. The largest goes to 2^500,
 // not 1, so that much smaller ones stay normal.
 Coefficients forFormula(const Coefficients& c) {
-  double largest = 0.0;
-  for (const double x : c) largest = std::max(largest, std::abs(x));
+  const double largest = largestMagnitude(c);
   if (largest == 0.0 || (largest >= 0x1p-500 && largest < 0x1p501)) return c;
-  return shifted(c, 500 - std::ilogb(largest));
+  return shifted(c, 500 - exponentOf(largest));
 }
 
 // For evaluation: coefficients of extreme size rescaled by a power of two towards 1, so that
@@ -171,31 +210,34 @@ Coefficients forFormula(const Coefficients& c) {
 // small, leaves the normal range: coefficients can span more than the doubles' range at one
 // scale, and a tiny leading one still rules at large t.
 Coefficients forEvaluation(const Coefficients& c) {
-  int largest = std::numeric_limits<int>::min();
-  int smallest = std::numeric_limits<int>::max();
+  const double magnitude = largestMagnitude(c);
+  if (magnitude == 0.0 || (magnitude >= 0x1p-500 && magnitude < 0x1p501)) return c;
+  const int largest = exponentOf(magnitude);
+  int smallest = largest;
   for (const double x : c) {
-    if (x == 0.0) continue;
-    largest = std::max(largest, std::ilogb(x));
-    smallest = std::min(smallest, std::ilogb(x));
+    if (x != 0.0) smallest = std::min(smallest, exponentOf(x));
   }
-  if (largest == std::numeric_limits<int>::min() || (largest >= -500 && largest <= 500)) return c;
   return shifted(c, largest > 0 ? std::min(0, std::max(-largest, -1022 - smallest)) : -largest);
 }
 
-// Fujiwara's bound on the roots, 2 max_k |c_k / c_n|^(1/(n-k)), from the exponents alone: no
-// overflow and no pow. Infinite when beyond the double range, 0 for f = c_n t^n.
-double rootBound(const Poly& p) {
+// A bound on the positive roots (Kioustelidis): beyond 2 max |c_k / c_n|^(1/(n-k)), taken over
+// the c_k of sign opposite to c_n, the leading term outweighs them all. From the exponents
+// alone: no overflow and no pow. Infinite when beyond the double range, 0 when nothing opposes.
+double positiveRootBound(const Poly& p) {
   const int n = p.degree();
-  const int top = std::ilogb(p[n]);
+  const int top = exponentOf(p[n]);
   int largest = std::numeric_limits<int>::min();
   for (int k = 0; k < n; ++k) {
-    if (p[k] == 0.0) continue;
+    if (p[k] == 0.0 || (p[k] > 0) == (p[n] > 0)) continue;
     const int m = n - k;
-    const int e = std::ilogb(p[k]) + 1 - top;                           // |c_k / c_n| < 2^e
+    const int e = exponentOf(p[k]) + 1 - top;                           // |c_k / c_n| < 2^e
     largest = std::max(largest, e >= 0 ? (e + m - 1) / m : -(-e / m));  // ceil(e / m)
   }
   if (largest == std::numeric_limits<int>::min()) return 0.0;
-  return std::ldexp(1.0, largest + 1);
+  const int e = largest + 1;
+  if (e > 1023) return kInf;
+  if (e < -1022) return std::ldexp(1.0, e);  // subnormal or 0
+  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
 }
 
 // b^2 - 4ac with the rounding of both products recovered by fma (Kahan) when they nearly cancel,
@@ -231,7 +273,7 @@ double settle(const Poly& p, double root, double floor, double tMax) {
   double t = root + 0.0;  // never -0
   if (t > tMax) {
     // The formula may be a few ulps late; p has then already turned at tMax.
-    if (tMax < floor || p.sample(tMax).value > 0) return kInf;
+    if (tMax < floor || p.sample(tMax).sign > 0) return kInf;
     t = tMax;
   }
   Sample s = p.sample(t);
@@ -256,8 +298,8 @@ int departure(const Poly& p, double t) {
   Poly d = p;
   for (int k = 1; k <= p.degree(); ++k) {
     d = d.derivative();
-    const double v = d.sample(t).value;
-    if (v != 0) return v > 0 ? 1 : -1;
+    const int sign = d.sample(t).sign;
+    if (sign != 0) return sign;
   }
   return 0;
 }
@@ -280,6 +322,10 @@ double firstEntryQuadratic(double a, double b, double c, double tMax) {
     const double slope = b != 0.0 ? b : a;  // the first non-zero derivative at 0
     if (slope < 0) return 0.0;
     if (a >= 0) return kInf;  // opening up (or constant), never turning back
+  }
+  // The common case, cheaply: apart at 0 and unable to fall to 0 by tMax.
+  if (c > 0 && c > (std::max(-b, 0.0) * tMax + std::max(-a, 0.0) * tMax * tMax) * (1 + 1e-12)) {
+    return kInf;
   }
   const Poly p(forEvaluation({c, b, a, 0.0, 0.0}), a != 0.0 ? 2 : 1);
   if (a == 0.0) return b < 0 ? settle(p, -c / b, 0.0, tMax) : kInf;
@@ -312,8 +358,19 @@ double firstEntry(const Polynomial& f, double tMax) {
     positive = f.c[0] == 0.0;  // touching and opening: apart right after 0
   }
   const Poly p(forEvaluation(f.c), f.degree());
-  const double horizon = std::min({tMax, rootBound(p), std::numeric_limits<double>::max()});
+  const double horizon = std::min({tMax, positiveRootBound(p), std::numeric_limits<double>::max()});
   if (!(horizon > 0)) return kInf;
+  // The common case, cheaply: apart at 0 and unable to fall to 0 by the horizon even if every
+  // negative term took its largest value there.
+  if (p[0] > 0) {
+    double fall = 0.0;
+    double power = 1.0;
+    for (int k = 1; k <= p.degree(); ++k) {
+      power *= horizon;
+      if (p[k] < 0) fall -= p[k] * power;
+    }
+    if (p[0] > fall * (1 + 1e-12)) return kInf;
+  }
 
   // Cut [0, horizon] at the inflection points (roots of f'', a quadratic): f' is monotone on each
   // piece, so f has at most one extremum there and is monotone on either side of it.
@@ -339,8 +396,8 @@ double firstEntry(const Polynomial& f, double tMax) {
     // Inside, only a sign beyond round-off counts. At the horizon any negative value does (the
     // crossing is then at most round-off later), as does a zero that f leaves downwards.
     int signB = sb.sign;
-    if (i == pieces - 1) {
-      signB = sb.value < 0 ? -1 : (sb.value > 0 ? 1 : departure(p, b));
+    if (i == pieces - 1 && signB == 0) {
+      signB = sb.value < 0 ? -1 : (sb.value > 0 ? 0 : departure(p, b));
     }
     const bool minimum = sa < 0 && sb.slope > 0;
     const bool maximum = sa > 0 && sb.slope < 0;

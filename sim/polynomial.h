@@ -24,10 +24,13 @@ struct Polynomial {
 //   opening up is not an entry; the next one comes after f has been positive again.
 // * Otherwise the smallest t in (0, tMax] where f crosses from > 0 to < 0. A tangential touch (f
 //   reaches 0 and turns back up) is not an entry.
-// Signs are decided in about twice the working precision, so only a dip or touch shallower than
-// ~1e-30 of the terms' size is ambiguous. The result is the lower end of a bracket narrowed to
-// adjacent doubles: at most round-off before the true crossing, and f is not negative there.
-// Non-finite coefficients, a NaN or a negative tMax give +infinity. No allocation.
+// Signs are decided in about twice the working precision (compensated Horner), so only a dip or
+// touch shallower than ~1e-30 of the terms' size is ambiguous; an ambiguous sign counts as
+// overlap. The result is the lower end of a bracket narrowed to adjacent doubles, where f > 0
+// beyond doubt: a few ulps before the crossing at most, never after it. Only where the terms of f
+// near the crossing leave the double range (below ~1e-290 or above ~1e300) may it be further early.
+// Non-finite coefficients, a NaN or a negative tMax give +infinity. No allocation, no iteration
+// without a hard cap.
 double firstEntry(const Polynomial& f, double tMax);
 
 // The same for f(t) = a t^2 + b t + c, in closed form.

@@ -19,6 +19,7 @@ class SweptStepper final : public Stepper {
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
     const KickSplit split = kickSplit(settings_.integrator);
     stepUntil(engine_.now(), end, settings_.timeStep, [&](double h) {
+      engine_.setHorizon(engine_.now() + h);
       // The previous step's trailing kick and this step's leading one are given together.
       kick(pendingKick_ + split.before * h);
       pendingKick_ = split.after * h;

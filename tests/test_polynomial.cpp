@@ -164,13 +164,13 @@ double rootTolerance(const Polynomial& f, double r) {
   return 4 * ulpOf(r) + band;
 }
 
-// The entry t matches the exact crossing `expected` and does not lie in overlap.
 QByteArray describe(const Polynomial& f, double tMax) {
   return QString::asprintf("f = {%.17g, %.17g, %.17g, %.17g, %.17g}, tMax = %.17g", f.c[0], f.c[1],
                            f.c[2], f.c[3], f.c[4], tMax)
       .toLatin1();
 }
 
+// The entry t matches the exact crossing `expected` and does not lie in overlap.
 void checkEntry(const char* what, const Polynomial& f, double tMax, double t, double expected) {
   const QByteArray context = describe(f, tMax);
   VERIFY(!std::isnan(t), "%s: NaN (%s)", what, context.data());
@@ -180,8 +180,7 @@ void checkEntry(const char* what, const Polynomial& f, double tMax, double t, do
   }
   VERIFY(std::abs(t - expected) <= rootTolerance(f, expected), "%s: got %.17g, expected %.17g (%s)",
          what, t, expected, context.data());
-  VERIFY(exactValue(f, t) >= -1e-28 * termSize(f, t), "%s: %.17g is in overlap (%s)", what, t,
-         context.data());
+  VERIFY(exactValue(f, t) >= 0, "%s: %.17g is in overlap (%s)", what, t, context.data());
 }
 
 // A ball centre on a parabola, p(t) = p0 + v t + g t^2 / 2.
@@ -458,11 +457,11 @@ void TestPolynomial::touchingAtStart() {
   QCOMPARE(firstEntry(poly(0, 0, 1, -1), kInf), 1.0);          // t^2 (1 - t)
   QCOMPARE(firstEntry(poly(0, 0, 0, 1, -1), kInf), 1.0);       // t^3 (1 - t)
   QCOMPARE(firstEntry(poly(0, 1, 0, 0, 1), kInf), kInf);       // opening for good
-  // Opening for 1e-300, then falling. Near that crossing f is ~1e-600 and underflows: the answer
-  // may be early, but must be neither 0 nor late.
+  // Opening for 1e-300, then falling: near that crossing f is ~1e-600, far below the doubles.
   const Polynomial slowly = poly(0, 1e-300, -1, 0, 0.5);
-  const double tSlowly = firstEntry(slowly, kInf);
-  QVERIFY(tSlowly > 0 && tSlowly <= exactCrossing(slowly, 0.5e-300, 2e-300));
+  checkEntry("opening for 1e-300", slowly, kInf, firstEntry(slowly, kInf),
+             exactCrossing(slowly, 0.5e-300, 2e-300));
+  if (QTest::currentTestFailed()) return;
   QCOMPARE(firstEntryQuadratic(-1, 1, 0, kInf), 1.0);
 
   // Overlapping and opening skips to the next entry after f has been positive.
@@ -689,19 +688,30 @@ void TestPolynomial::randomCoefficientsAgainstSampling() {
   const int samples = 1500;
   int entries = 0;
   int narrowDips = 0;
-  for (int i = 0; i < 3000; ++i) {
+  for (int i = 0; i < 4000; ++i) {
     Polynomial f;
     const int degree = 2 + i % 3;
-    for (int k = 0; k <= degree; ++k) {
-      if (k > 0 && k < degree && unit(rng) < 0.15) continue;  // some zero coefficients
-      f.c[k] = (unit(rng) < 0.5 ? -1 : 1) * std::pow(10.0, -2 + 4 * unit(rng));
-    }
     const double tMax = 0.5 + 20 * unit(rng);
+    if (i % 4 == 3) {
+      // Near touches: (t - r)^2 (t^2 + p t + q) + delta, a dip or a gap of size |delta| that
+      // is usually narrower than the sample spacing.
+      const double r = tMax * unit(rng);
+      const double p = 4 * unit(rng) - 2;
+      const double q = p * p / 4 + 0.1 + unit(rng);
+      const double delta = (unit(rng) < 0.5 ? -1 : 1) * std::pow(10.0, -12 + 8 * unit(rng));
+      f = poly(r * r * q + delta, -2 * r * q + r * r * p, q - 2 * r * p + r * r, p - 2 * r, 1);
+    } else {
+      for (int k = 0; k <= degree; ++k) {
+        if (k > 0 && k < degree && unit(rng) < 0.15) continue;  // some zero coefficients
+        const double sign = (k == 0 ? unit(rng) < 0.2 : unit(rng) < 0.5) ? -1 : 1;
+        f.c[k] = sign * std::pow(10.0, -2 + 4 * unit(rng));
+      }
+    }
     const double reference = entryFromSamples(f, tMax, samples);
     const double t = firstEntry(f, tMax);
     const QByteArray context = describe(f, tMax);
     VERIFY(t == 0 || t == kInf || (t > 0 && t <= tMax), "t = %.17g (%s)", t, context.data());
-    if (degree == 2) {
+    if (f.degree() <= 2) {
       const double closed = firstEntryQuadratic(f.c[2], f.c[1], f.c[0], tMax);
       VERIFY(closed == t, "closed form %.17g, general %.17g (%s)", closed, t, context.data());
     }
@@ -729,7 +739,8 @@ void TestPolynomial::randomCoefficientsAgainstSampling() {
     }
   }
   qInfo("%d sampled entries matched, %d narrow dips found between samples", entries, narrowDips);
-  QVERIFY(entries > 1000);
+  QVERIFY(entries > 1200);
+  QVERIFY(narrowDips > 200);
 }
 
 void TestPolynomial::generalPathMatchesClosedForm() {
@@ -782,8 +793,7 @@ void TestPolynomial::extremeInputsStaySane() {
     const QByteArray context = describe(f, tMax);
     VERIFY(t == kInf || (t >= 0 && t <= tMax), "t = %.17g (%s)", t, context.data());
     if (t > 0 && t < kInf) {
-      VERIFY(exactValue(f, t) >= -1e-28 * termSize(f, t), "overlap at t = %.17g (%s)", t,
-             context.data());
+      VERIFY(exactValue(f, t) >= 0, "overlap at t = %.17g (%s)", t, context.data());
     }
     const double q = firstEntryQuadratic(f.c[2], f.c[1], f.c[0], tMax);
     VERIFY(q == kInf || (q >= 0 && q <= tMax), "q = %.17g (%s)", q, context.data());
