@@ -21,6 +21,10 @@ CellGrid::CellGrid(const Vec3& lower, const Vec3& upper, double minCellSize, std
     size_[a] = extent[a] / counts_[a];  // >= size, so neighbours stay within one cell
     origin_[a] = lower[a];
   }
+  int k = 0;
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x) neighbourOffsets_[k++] = (z * counts_[1] + y) * counts_[0] + x;
 }
 
 CellGrid::Coords CellGrid::coordsOf(const Vec3& p) const {

@@ -44,6 +44,12 @@ class CellGrid {
   // Calls f(cell) for the up to 27 cells around `centre` (itself included).
   template <typename F>
   void forEachNeighbourCell(const Coords& centre, F&& f) const {
+    if (centre[0] > 0 && centre[1] > 0 && centre[2] > 0 && centre[0] + 1 < counts_[0] &&
+        centre[1] + 1 < counts_[1] && centre[2] + 1 < counts_[2]) {
+      const int base = index(centre);  // inside: fixed offsets, no bounds to check
+      for (int offset : neighbourOffsets_) f(base + offset);
+      return;
+    }
     const int x0 = centre[0] > 0 ? centre[0] - 1 : 0;
     const int x1 = centre[0] + 1 < counts_[0] ? centre[0] + 1 : centre[0];
     const int y0 = centre[1] > 0 ? centre[1] - 1 : 0;
@@ -59,6 +65,7 @@ class CellGrid {
   Vec3 origin_ = Vec3::Zero();
   Vec3 size_ = Vec3::Ones();
   Coords counts_{1, 1, 1};
+  std::array<int, 27> neighbourOffsets_{};
 };
 
 // Which balls are in which cell: an intrusive doubly linked list per cell, O(1) moves.

@@ -85,6 +85,11 @@ double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSu
   return firstEntry(squaredLengthMinus(u0, u1, u2, radiusSum), horizon);
 }
 
+double ballBallStraightContactTime(const Vec3& relativePosition, const Vec3& relativeVelocity,
+                                   double radiusSum, double horizon) {
+  return straightEntry(relativePosition, relativeVelocity, radiusSum, horizon);
+}
+
 double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
                             double horizon) {
   const double sign = upwards ? 1.0 : -1.0;

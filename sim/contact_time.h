@@ -8,6 +8,8 @@
 
 #include "shapes.h"
 
+#include <limits>
+
 namespace carom {
 
 // A ball's state at "now": centre, velocity and constant acceleration.
@@ -26,9 +28,21 @@ double ballCylinderContactTime(const BallPath& ball, double radius, const Cylind
 // Balls a and b with radii summing to `radiusSum`.
 double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSum, double horizon);
 
+// The same when the balls' relative path is straight (both free under the same gravity, or no
+// gravity): b's position and velocity relative to a's. The hot path of the event engine.
+double ballBallStraightContactTime(const Vec3& relativePosition, const Vec3& relativeVelocity,
+                                   double radiusSum, double horizon);
+
 // Time until coordinate x(t) = x0 + v t + a t^2 / 2 first passes `bound` going upwards
 // (x0 <= bound), or downwards when `upwards` is false; for moving balls between grid cells.
 double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
                             double horizon);
+
+// Time until a straight path x0 + v t leaves [lower, upper] (either may be infinite).
+inline double straightExitTime(double x0, double v, double lower, double upper) {
+  if (v > 0.0) return x0 < upper ? (upper - x0) / v : 0.0;
+  if (v < 0.0) return x0 > lower ? (lower - x0) / v : 0.0;
+  return std::numeric_limits<double>::infinity();
+}
 
 }  // namespace carom

@@ -166,16 +166,37 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
 }
 
 void EventEngine::findBallContact(int i, const BallPath& path, int k) {
+  ++pairTests_;
   Contact& best = contacts_[i];
   const double horizon = std::min(best.time, horizon_) - now_;
-  const double t =
-      ballBallContactTime(path, pathAt(k, now_), tracks_[i].radius + tracks_[k].radius, horizon);
+  const Track& other = tracks_[k];
+  const double radiusSum = tracks_[i].radius + other.radius;
+  double t;
+  if (straightPaths_) {
+    // Inlined path of the neighbour: this loop is where the engine spends its time.
+    const Motion& m = other.motion;
+    const Vec3 relativePosition = m.position + (now_ - m.since) * m.velocity - path.position;
+    t = ballBallStraightContactTime(relativePosition, m.velocity - path.velocity, radiusSum,
+                                    horizon);
+  } else {
+    t = ballBallContactTime(path, pathAt(k, now_), radiusSum, horizon);
+  }
   if (t < horizon) best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
 }
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = crossings_[i];
   const CellGrid::Coords& c = particles_[i].coords;
+  if (straightPaths_) {
+    for (int a = 0; a < 3; ++a) {
+      const double t = straightExitTime(path.position[a], path.velocity[a],
+                                        grid_.lowerFace(a, c[a]), grid_.upperFace(a, c[a]));
+      if (now_ + t < std::min(next.time, horizon_))
+        next = {now_ + t, static_cast<std::int8_t>(a),
+                static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1)};
+    }
+    return;
+  }
   for (int a = 0; a < 3; ++a) {
     for (int direction : {1, -1}) {
       const double face =
@@ -245,6 +266,8 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
     process(i, stats, log);
   }
   now_ = std::max(now_, end);
+  stats.pairTests += pairTests_;
+  pairTests_ = 0;
 }
 
 void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* log) {

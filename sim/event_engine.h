@@ -118,6 +118,7 @@ class EventEngine {
   double collapseSpeed_;
   double now_;
   double horizon_ = std::numeric_limits<double>::infinity();
+  std::uint64_t pairTests_ = 0;  // added to the stats when advanceTo returns
   Vec3 zero_ = Vec3::Zero();
   std::vector<Track> tracks_;
   std::vector<Particle> particles_;

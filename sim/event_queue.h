@@ -13,22 +13,26 @@ class EventQueue {
  public:
   void reset(int ballCount);  // every ball at +infinity
   void set(int ball, double time);
-  int top() const { return heap_[0]; }
-  double topTime() const { return time_[heap_[0]]; }
-  double timeOf(int ball) const { return time_[ball]; }
+  int top() const { return heap_[0].ball; }
+  double topTime() const { return heap_[0].time; }
+  double timeOf(int ball) const { return heap_[position_[ball]].time; }
   bool empty() const { return heap_.empty(); }
 
  private:
-  bool before(int a, int b) const {
-    return time_[a] < time_[b] || (time_[a] == time_[b] && a < b);
+  // Each heap slot keeps its key, so sifting reads one array.
+  struct Entry {
+    double time;
+    int ball;
+  };
+  static bool before(const Entry& a, const Entry& b) {
+    return a.time < b.time || (a.time == b.time && a.ball < b.ball);
   }
   void siftUp(int pos);
   void siftDown(int pos);
 
   static constexpr int kArity = 4;
-  std::vector<int> heap_;      // ball indices in heap order
-  std::vector<int> position_;  // position of each ball in heap_
-  std::vector<double> time_;
+  std::vector<Entry> heap_;
+  std::vector<int> position_;  // where each ball is in heap_
 };
 
 }  // namespace carom

@@ -196,13 +196,20 @@ Coefficients shifted(Coefficients c, int shift) {
   return c;
 }
 
-// For the root formulas: rescaled by a power of two (roots unchanged) so that squares and
-// products of the coefficients can neither overflow nor underflow. The largest goes to 2^500,
-// not 1, so that much smaller ones stay normal.
+// For the root formula of c0 + c1 t + c2 t^2: rescaled by a power of two (roots unchanged) that
+// brings the larger of c1^2 and c0 c2, which the discriminant compares, near 1. Neither can then
+// overflow, and whatever underflows is negligible next to the other. No coefficient is taken
+// within 2^4 of overflow, leaving room for the small factors of derivatives.
 Coefficients forFormula(const Coefficients& c) {
-  const double largest = largestMagnitude(c);
-  if (largest == 0.0 || (largest >= 0x1p-500 && largest < 0x1p501)) return c;
-  return shifted(c, 500 - exponentOf(largest));
+  int e = std::numeric_limits<int>::min();
+  if (c[1] != 0.0) e = 2 * exponentOf(c[1]);
+  if (c[0] != 0.0 && c[2] != 0.0) e = std::max(e, exponentOf(c[0]) + exponentOf(c[2]));
+  if (e == std::numeric_limits<int>::min() || (e > -900 && e < 900)) return c;
+  int top = std::numeric_limits<int>::min();
+  for (int k = 0; k < 3; ++k) {
+    if (c[k] != 0.0) top = std::max(top, exponentOf(c[k]));
+  }
+  return shifted(c, std::min(-e / 2, 1019 - top));
 }
 
 // For evaluation: coefficients of extreme size rescaled by a power of two towards 1, so that
@@ -392,7 +399,9 @@ double firstEntry(const Polynomial& f, double tMax) {
   double sa = p[1];
   for (int i = 0; i < pieces; ++i) {
     const double b = cuts[i];
-    const Sample sb = p.sample(b);
+    Sample sb = p.sample(b);
+    // Where only the sign of f is known, that of f' tells minimum from maximum.
+    if (std::isnan(sb.slope)) sb.slope = slope.sample(b).sign;
     // Inside, only a sign beyond round-off counts. At the horizon any negative value does (the
     // crossing is then at most round-off later), as does a zero that f leaves downwards.
     int signB = sb.sign;

@@ -30,6 +30,7 @@ struct RunStats {
   std::uint64_t events = 0;         // events processed (exact and swept), collisions included
   std::uint64_t cellCrossings = 0;  // exact and swept: balls moving between grid cells
   std::uint64_t staleEvents = 0;    // predictions found out of date when their time came
+  std::uint64_t pairTests = 0;      // ball-ball contact times computed (exact and swept)
   std::uint64_t steps = 0;          // time steps taken (swept and discrete)
   std::uint64_t ballSteps = 0;      // balls times steps (swept and discrete)
   std::uint64_t restings = 0;       // times a ball was put to rest

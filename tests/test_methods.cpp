@@ -103,6 +103,21 @@ class TestMethods : public QObject {
     QVERIFY(std::abs(sim.kineticEnergy() - e0) < 1e-12 * e0);
   }
 
+  void costPerEventDoesNotGrowWithBalls() {
+    // The tutorial re-tested all pairs after every event. Here the number of ball-ball contact
+    // times computed per event stays about the same from 500 to 16,000 balls.
+    double perEvent[2];
+    const int sizes[2] = {500, 16000};
+    for (int k = 0; k < 2; ++k) {
+      Simulation sim(makeGasInBox(sizes[k], 0.25, Vec3::Zero(), 3));
+      while (sim.stats().collisions.total() < 200000) sim.advance(0.2);
+      perEvent[k] = double(sim.stats().pairTests) / double(sim.stats().events);
+    }
+    QVERIFY2(perEvent[0] < 30 && perEvent[1] < 30,
+             qPrintable(QString("%1 and %2 pair tests per event").arg(perEvent[0]).arg(perEvent[1])));
+    QVERIFY(perEvent[1] < 1.5 * perEvent[0]);
+  }
+
   void sweptNeverPassesThroughAtAnyStep_data() {
     QTest::addColumn<double>("dt");
     QTest::addColumn<QString>("integrator");

@@ -515,6 +515,27 @@ void TestPolynomial::degenerateAndExtreme() {
     if (QTest::currentTestFailed()) return;
   }
 
+  // Coefficients spanning more than the double range at one scale: terms overflow or underflow
+  // away from the crossing (found by stress testing).
+  {
+    const Polynomial f = poly(9.5517330598169835e+242, -7.8211496984216139e+295,
+                              2.0208054541038458e-202, 6.3445517040667159e+40,
+                              -2.4267875899985811e-95);  // crossing near 1.2e-53
+    const double tMax = 9.2442764238009618e+152;
+    checkEntry("extreme span, early crossing", f, tMax, firstEntry(f, tMax),
+               exactCrossing(f, 1e-53, 1.5e-53));
+    if (QTest::currentTestFailed()) return;
+    const Polynomial g = poly(5.1146429974981216e+251, 1.7691481983110929e+151, 0,
+                              -3.5526588354887071e-295, -2.68640371793766e-254);
+    checkEntry("extreme span, far crossing", g, kInf, firstEntry(g, kInf),
+               exactCrossing(g, 1e134, 1e136));
+    if (QTest::currentTestFailed()) return;
+    // Always negative (4ac outweighs b^2 by 1e31), though b^2 alone would suggest two roots.
+    QCOMPARE(firstEntryQuadratic(-5.3864964915851905e+296, 2.4716324949458143e+41,
+                                 -5.5285268417156413e-184, kInf),
+             kInf);
+  }
+
   // Horizons: zero, infinite, invalid.
   const Polynomial f = fromRoots(1, {1, 2, 3, 4});
   QCOMPARE(firstEntry(f, 0.0), kInf);
