@@ -53,12 +53,16 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   contacts_.resize(n);
   crossings_.resize(n);
   restSpeed_.resize(n);
+  burstFlight_.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& p = particles_[i];
     p.resting = state[i].resting;
     tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
                   bodies.radius[i]};
     restSpeed_[i] = restSpeed(gravity_, bodies.radius[i]);
+    burstFlight_[i] = restSpeed_[i] > 0.0 ? tolerance::kBurstFlightFraction * bodies.radius[i] /
+                                                restSpeed_[i]
+                                          : 0.0;
   }
   buildGrid(state);
   buildStaticLists();
@@ -302,17 +306,16 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       }
       notePenetration(-gap, stats);
       const double approach = -m.velocity.dot(n);
-      if (collideWithSurface(i, n, restitution, stats)) {
-        if (event.kind == EventKind::Plane)
-          ++stats.collisions.ballPlane;
-        else
-          ++stats.collisions.ballCylinder;
-        if (log)
-          log->push_back({now_,
-                          event.kind == EventKind::Plane ? ContactKind::BallPlane
-                                                         : ContactKind::BallCylinder,
-                          i, event.other, m.position - r * n, approach});
-      }
+      collideWithSurface(i, n, restitution, stats);
+      if (event.kind == EventKind::Plane)
+        ++stats.collisions.ballPlane;
+      else
+        ++stats.collisions.ballCylinder;
+      if (log)
+        log->push_back({now_,
+                        event.kind == EventKind::Plane ? ContactKind::BallPlane
+                                                       : ContactKind::BallCylinder,
+                        i, event.other, m.position - r * n, approach});
       if (!particles_[i].resting) predict(i);
       return;
     }
@@ -343,56 +346,54 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   n /= distance;
   const double approach = (ma.velocity - mb.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
-  bool collided = false;
-  if (b.resting && approach < tolerance::kWakeSpeedFactor * restSpeed_[i]) {
+  // The contact was predicted, so it is resolved even when round-off makes the approach look
+  // zero or negative here: the minimum separation then parts the pair, and the same contact
+  // cannot be predicted again at this instant.
+  if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
     // Too gentle to move a resting ball: it acts as an immovable surface.
-    collided = collideWithSurface(i, -n, restitution, stats);
-  } else if (approach > 0.0) {
+    collideWithSurface(i, -n, restitution, stats);
+  } else {
     if (b.resting) wake(j, stats);
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i],
                     bodies_.inverseMass[j], n, restitution, collapseSpeed_);
     changed(i);
     changed(j);
-    collided = true;
   }
-  if (collided) {
-    ++stats.collisions.ballBall;
-    if (log)
-      log->push_back({now_, ContactKind::BallBall, i, j,
-                      ma.position + bodies_.radius[i] * n, approach});
-  }
+  ++stats.collisions.ballBall;
+  if (log)
+    log->push_back(
+        {now_, ContactKind::BallBall, i, j, ma.position + bodies_.radius[i] * n, approach});
   if (!a.resting) predict(i);
   if (!b.resting) predict(j);
 }
 
-bool EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats) {
+void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats) {
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
   const bool pressed = gravity_.dot(n) < 0.0;
-  if (approach <= 0.0 && !pressed) return false;
   const double rest = restSpeed_[i];
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
   // wall and a resting ball would otherwise rattle between them.
-  if (approach < rest) {
+  const double settle = tolerance::kSettleSpeedFactor * rest;
+  if (approach < settle) {
     const Vec3 tangential = m.velocity + approach * n;
-    if (tangential.norm() < rest && supported(i)) {
+    if (tangential.norm() < settle && supported(i)) {
       putToRest(i, stats);
-      return true;
+      return;
     }
   }
   const double minimum = pressed ? rest : collapseSpeed_;
   if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
   resolveAgainstSurface(m.velocity, n, restitution, minimum);
   changed(i);
-  // A zero-time cycle of contacts (a ball wedged between shapes) must not hang the run.
-  if (p.instant == now_) {
-    if (++p.collisionsThisInstant > tolerance::kMaxCollisionsAtOneInstant) putToRest(i, stats);
+  // A cycle of contacts that lets time advance by round-off only must not hang the run.
+  if (now_ - p.lastSurfaceCollision <= burstFlight_[i]) {
+    if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) putToRest(i, stats);
   } else {
-    p.instant = now_;
-    p.collisionsThisInstant = 0;
+    p.collisionsInBurst = 0;
   }
-  return true;
+  p.lastSurfaceCollision = now_;
 }
 
 void EventEngine::changed(int i) { ++particles_[i].counter; }
@@ -421,7 +422,7 @@ void EventEngine::wake(int i, RunStats& stats) {
     Particle& p = particles_[k];
     ++stats.wakes;
     tracks_[k].motion.since = now_;  // starts to fall from here
-    p.collisionsThisInstant = 0;
+    p.collisionsInBurst = 0;
     changed(k);
     forEachNeighbour(k, [&](int m) {
       Particle& q = particles_[m];

@@ -57,8 +57,8 @@ class EventEngine {
     CellGrid::Coords coords{};
     int cell = 0;
     std::uint32_t counter = 0;  // changes whenever the path changes
-    int collisionsThisInstant = 0;
-    double instant = 0.0;
+    int collisionsInBurst = 0;
+    double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
     bool resting = false;
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
@@ -95,8 +95,8 @@ class EventEngine {
   void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
-  // n pointing to the ball. Returns false when the contact turned out not to be a collision.
-  bool collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats);
+  // n pointing to the ball.
+  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats);
   void changed(int i);
   void putToRest(int i, RunStats& stats);
   void wake(int i, RunStats& stats);
@@ -125,6 +125,7 @@ class EventEngine {
   std::vector<Contact> contacts_;
   std::vector<Crossing> crossings_;
   std::vector<double> restSpeed_;
+  std::vector<double> burstFlight_;  // a flight shorter than this is negligible (tolerances.h)
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell

@@ -1,5 +1,6 @@
 #include "response.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace carom {
@@ -9,9 +10,13 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
   const double approach = (va - vb).dot(n);
   const double totalInverse = inverseMassA + inverseMassB;
   if (totalInverse <= 0.0) return approach;
+  // A pair that (by round-off) already separates keeps separating at no less than the minimum.
+  const double closing = std::max(approach, 0.0);
+  const double separation = std::max(separationSpeed(closing, restitution, minimumSeparation),
+                                     -approach);
   // Change of relative normal speed, shared in proportion to inverse mass; written with weights
   // rather than an impulse so that mass ratios of 1e12 lose nothing to rounding.
-  const double change = approach + separationSpeed(approach, restitution, minimumSeparation);
+  const double change = approach + separation;
   va -= (change * (inverseMassA / totalInverse)) * n;
   vb += (change * (inverseMassB / totalInverse)) * n;
   return approach;
@@ -20,7 +25,8 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
 bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation) {
   const double approach = -v.dot(n);
   Vec3 tangential = v + approach * n;
-  const double bounce = restitution * approach;
+  // A ball that (by round-off) already leaves the surface keeps its own speed if that is more.
+  const double bounce = std::max(restitution * approach, -approach);
   double separation = bounce;
   bool addedEnergy = false;
   if (bounce < minimumSeparation) {

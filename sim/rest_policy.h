@@ -6,7 +6,7 @@
 //     separates at no less than the rest speed: the speed of a bounce kRestHeightFraction of the
 //     ball's radius high. The extra speed is taken from the ball's tangential motion when it has
 //     enough, so sliding balls hop along at constant energy.
-//  2. A ball that meets a surface slower than the rest speed in every direction, while the
+//  2. A ball that meets a surface slower than twice the rest speed in every direction, while the
 //     static shapes, resting balls and slow balls it touches hold it against gravity, is put to
 //     rest: it stops and is no longer scheduled.
 //  3. A resting ball hit at twice the rest speed or faster wakes, and so does every resting ball

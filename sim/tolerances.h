@@ -14,9 +14,10 @@ inline constexpr double kTouchFraction = 1e-9;
 // contact becomes resting (see docs/physics.md, "Resting contact").
 inline constexpr double kRestHeightFraction = 1e-3;
 
-// A resting ball wakes only when hit at this many times the rest speed: a neighbour hopping at
-// the rest speed (rule 1 of rest_policy.h) must not wake it.
-inline constexpr double kWakeSpeedFactor = 2.0;
+// A supported ball slower than this many rest speeds comes to rest, and a resting ball wakes
+// only when hit faster than that: a ball hopping at the rest speed (rule 1 of rest_policy.h)
+// settles, and does not wake its neighbours.
+inline constexpr double kSettleSpeedFactor = 2.0;
 
 // Gap (as a fraction of the radius) within which a slow ball is considered supported by a
 // surface when deciding whether it can be put to rest.
@@ -47,8 +48,12 @@ namespace carom::tolerance {
 // distance (a slope shallower than about this many radians counts as level).
 inline constexpr double kSupportSlope = 1e-6;
 
-// A ball that takes part in more collisions than this without time advancing is put to rest: the
-// last guard against a zero-time cycle of contacts.
-inline constexpr int kMaxCollisionsAtOneInstant = 64;
+// A ball that takes part in more surface collisions than this in a row, each within a negligible
+// flight of the last, is put to rest: the last guard against a cycle of contacts that lets time
+// advance by mere round-off (a ball wedged between shapes).
+inline constexpr int kMaxCollisionsInBurst = 64;
+// A flight is negligible when shorter than this fraction of the time the rest speed takes to
+// cross the ball's radius.
+inline constexpr double kBurstFlightFraction = 1e-6;
 
 }  // namespace carom::tolerance

@@ -1,0 +1,675 @@
+// carom-cli as a user runs it from a shell: the real executable under QProcess, judged by its
+// exit code, stdout and stderr only.
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+// A run must end by itself, without crashing, with the given exit code.
+#define VERIFY_EXIT(run, code)                                                                 \
+  QVERIFY2((run).finished && (run).status == QProcess::NormalExit && (run).exitCode == (code), \
+           qPrintable((run).describe()))
+
+namespace {
+
+constexpr int kTimeoutMs = 60000;
+// bench --quick runs several small benchmarks; a slow or busy machine gets plenty of room.
+constexpr int kBenchTimeoutMs = 120000;
+
+struct CliRun {
+  QStringList arguments;
+  bool finished = false;  // ended by itself within the timeout
+  QProcess::ExitStatus status = QProcess::CrashExit;
+  int exitCode = -1;
+  QString processError;
+  QByteArray out;
+  QByteArray err;
+
+  // What a failing check prints: enough to see what the CLI did without rerunning it.
+  QString describe() const {
+    return QString(
+               "carom-cli %1\n  finished: %2, crashed: %3, exit code: %4 %5\n  stdout: %6\n"
+               "  stderr: %7")
+        .arg(arguments.join(' '))
+        .arg(finished)
+        .arg(status == QProcess::CrashExit)
+        .arg(exitCode)
+        .arg(processError)
+        .arg(QString::fromUtf8(out.left(1500)))
+        .arg(QString::fromUtf8(err.left(1500)));
+  }
+};
+
+// Stdin is the null device so that a CLI waiting for input sees end of file instead of hanging.
+CliRun runCli(const QStringList& arguments, int timeoutMs = kTimeoutMs,
+              const QString& stdoutFile = QString()) {
+  CliRun run;
+  run.arguments = arguments;
+  QProcess process;
+  process.setProgram(QStringLiteral(CAROM_CLI_PATH));
+  process.setArguments(arguments);
+  process.setStandardInputFile(QProcess::nullDevice());
+  if (!stdoutFile.isEmpty()) process.setStandardOutputFile(stdoutFile);
+  process.start();
+  run.finished = process.waitForFinished(timeoutMs);
+  if (!run.finished) {
+    run.processError = process.errorString();
+    process.kill();
+    process.waitForFinished(5000);
+  }
+  run.status = process.exitStatus();
+  run.exitCode = process.exitCode();
+  run.out = process.readAllStandardOutput();
+  run.err = process.readAllStandardError();
+  return run;
+}
+
+QString scenesDir() {
+  return QStringLiteral(CAROM_SOURCE_DIR "/resources/scenes");
+}
+QString sceneFile(const QString& name) {
+  return scenesDir() + '/' + name;
+}
+QString magicRoom() {
+  return sceneFile("magic-room.json");
+}
+
+// A version-`version` scene whose top level holds `fields` besides format and version.
+QByteArray sceneText(const QByteArray& fields, int version = 1) {
+  return R"({"format": "carom-scene", "version": )" + QByteArray::number(version) +
+         (fields.isEmpty() ? QByteArray() : ", " + fields) + "}\n";
+}
+
+QJsonObject readJsonObject(const QString& fileName) {
+  QFile file(fileName);
+  if (!file.open(QIODevice::ReadOnly)) return {};
+  return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+bool isVector(const QJsonValue& value) {
+  const QJsonArray array = value.toArray();
+  if (!value.isArray() || array.size() != 3) return false;
+  for (const QJsonValue& x : array)
+    if (!x.isDouble() || !std::isfinite(x.toDouble())) return false;
+  return true;
+}
+
+bool isCount(const QJsonValue& value) {
+  const double x = value.toDouble(-1.0);
+  return value.isDouble() && x >= 0.0 && x == std::floor(x);
+}
+
+// The bytes of the array that follows `"key":` in compact JSON. The arrays looked at here hold
+// only numbers, booleans and objects of those, so brackets are never inside strings.
+QByteArray rawArray(const QByteArray& json, const QByteArray& key) {
+  const qsizetype start = json.indexOf('"' + key + "\":[");
+  if (start < 0) return {};
+  const qsizetype open = json.indexOf('[', start);
+  int depth = 0;
+  for (qsizetype i = open; i < json.size(); ++i) {
+    if (json[i] == '[') ++depth;
+    if (json[i] == ']' && --depth == 0) return json.mid(open, i - open + 1);
+  }
+  return {};
+}
+
+// Significant digits of a number written in JSON, such as 4 for "-0.01234e5".
+int significantDigits(QByteArray number) {
+  const qsizetype e = number.indexOf('e') >= 0 ? number.indexOf('e') : number.indexOf('E');
+  if (e >= 0) number.truncate(e);
+  number.replace("-", "").replace(".", "");
+  while (number.startsWith('0')) number.remove(0, 1);
+  return static_cast<int>(number.size());
+}
+
+QList<QByteArray> nonEmptyLines(const QByteArray& text) {
+  QList<QByteArray> lines;
+  for (const QByteArray& line : text.split('\n'))
+    if (!line.trimmed().isEmpty()) lines << line;
+  return lines;
+}
+
+}  // namespace
+
+class TestCli : public QObject {
+  Q_OBJECT
+
+ private:
+  QTemporaryDir dir_;
+
+  QString writeFile(const QString& name, const QByteArray& content) {
+    const QString path = dir_.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+        file.write(content) != content.size())
+      return QString();
+    return path;
+  }
+
+  // The current data row's tag as a file name, so that messages can be checked for it.
+  static QString rowFileName() {
+    return QString::fromUtf8(QTest::currentDataTag())
+        .toLower()
+        .replace(QRegularExpression("[^a-z0-9]+"), "-");
+  }
+  QString writeRowFile(const QByteArray& content) {
+    return writeFile(rowFileName() + ".json", content);
+  }
+
+ private slots:
+  void initTestCase() {
+    QVERIFY(dir_.isValid());
+    QVERIFY2(QFileInfo(QStringLiteral(CAROM_CLI_PATH)).isExecutable(), CAROM_CLI_PATH);
+  }
+
+  // --- help and version ---
+
+  void help_data() {
+    QTest::addColumn<QString>("flag");
+    for (const char* flag : {"--help", "-h", "help"}) QTest::newRow(flag) << QString(flag);
+  }
+  void help() {
+    QFETCH(QString, flag);
+    const CliRun run = runCli({flag});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.out.contains("carom-cli run"), run.out.constData());
+    QVERIFY2(run.out.contains("carom-cli validate"), run.out.constData());
+    QVERIFY2(run.out.contains("carom-cli bench"), run.out.constData());
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+  }
+
+  void version() {
+    const CliRun run = runCli({"--version"});
+    VERIFY_EXIT(run, 0);
+    const QRegularExpression expected("^carom-cli \\d+\\.\\d+\\.\\d+\\n$");
+    QVERIFY2(expected.match(QString::fromUtf8(run.out)).hasMatch(), run.out.constData());
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+  }
+
+  // --- validate ---
+
+  void bundledScenesExist() {
+    const QStringList scenes = QDir(scenesDir()).entryList({"*.json"}, QDir::Files);
+    QVERIFY2(scenes.size() >= 5, qPrintable(scenes.join(", ")));
+    QVERIFY(scenes.contains("magic-room.json"));
+  }
+
+  void validateBundledScene_data() {
+    QTest::addColumn<QString>("path");
+    for (const QString& name : QDir(scenesDir()).entryList({"*.json"}, QDir::Files))
+      QTest::newRow(qPrintable(name)) << sceneFile(name);
+  }
+  void validateBundledScene() {
+    QFETCH(QString, path);
+    const CliRun run = runCli({"validate", path});
+    VERIFY_EXIT(run, 0);
+    QCOMPARE(run.out, QByteArray("ok\n"));
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+  }
+
+  // Shapes that touch to within the 1e-9 tolerance of docs/scene-format.md are a valid start.
+  void touchingIsAccepted_data() {
+    QTest::addColumn<QByteArray>("scene");
+    QTest::newRow("balls two radii apart") << sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [0.2, 0, 0], "radius": 0.1},
+        {"position": [0.4, 0, 0], "radius": 0.1}])");
+    // 0.3 - 0.1 is one ulp short of 0.2 in doubles.
+    QTest::newRow("balls a rounding error closer") << sceneText(R"("balls": [
+        {"position": [0.1, 0, 0], "radius": 0.1}, {"position": [0.3, 0, 0], "radius": 0.1},
+        {"position": [0.7, 0, 0], "radius": 0.3}])");
+    QTest::newRow("ball on a plane") << sceneText(R"(
+        "planes": [{"point": [0, 0, 0], "normal": [0, 2, 0]}],
+        "balls": [{"position": [0, 0.1, 0], "radius": 0.1}])");
+    QTest::newRow("ball on a cylinder") << sceneText(R"(
+        "cylinders": [{"point": [0, 0, 0], "axis": [0, 1, 0], "radius": 0.3}],
+        "balls": [{"position": [0.4, 0, 0], "radius": 0.1}])");
+    QTest::newRow("ball on a slanted cylinder") << sceneText(R"(
+        "cylinders": [{"point": [0, 0, 0], "axis": [0, 1, 1], "radius": 0.3}],
+        "balls": [{"position": [0.4, 5, 5], "radius": 0.1}])");
+  }
+  void touchingIsAccepted() {
+    QFETCH(QByteArray, scene);
+    const QString path = writeRowFile(scene);
+    QVERIFY(!path.isEmpty());
+    const CliRun validate = runCli({"validate", path});
+    VERIFY_EXIT(validate, 0);
+    QCOMPARE(validate.out, QByteArray("ok\n"));
+    const CliRun run = runCli({"run", path, "--duration", "1", "--json"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(QJsonDocument::fromJson(run.out).isObject(), run.out.constData());
+  }
+
+  // --- run ---
+
+  void runJsonMagicRoom() {
+    const QStringList arguments{"run", magicRoom(), "--duration", "2", "--json"};
+    const CliRun run = runCli(arguments);
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    // One object on one line: scripts read it whole.
+    QVERIFY2(run.out.endsWith("}\n") && run.out.count('\n') == 1, run.out.constData());
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(run.out, &error);
+    QVERIFY2(error.error == QJsonParseError::NoError, qPrintable(error.errorString()));
+    QVERIFY(document.isObject());
+    const QJsonObject report = document.object();
+
+    QVERIFY(report["simulatedTime"].isDouble());
+    QVERIFY(report["simulatedTime"].toDouble() == 2.0);
+    QVERIFY(report["wallSeconds"].isDouble());
+    QVERIFY(report["wallSeconds"].toDouble(-1.0) >= 0.0);
+
+    const QJsonObject collisions = report["collisions"].toObject();
+    double total = 0.0;
+    for (const char* kind : {"ballBall", "ballPlane", "ballCylinder"}) {
+      QVERIFY2(isCount(collisions[kind]), kind);
+      total += collisions[kind].toDouble();
+    }
+    QVERIFY(total > 0.0);
+
+    // The magic room is elastic and the exact method keeps its energy to rounding.
+    const QJsonObject energy = report["energy"].toObject();
+    QVERIFY(energy["initial"].isDouble() && energy["final"].isDouble());
+    const double initial = energy["initial"].toDouble();
+    const double final = energy["final"].toDouble();
+    QVERIFY(initial > 0.0);
+    QVERIFY2(std::abs(final - initial) <= 1e-9 * std::abs(initial),
+             qPrintable(
+                 QString("initial %1, final %2").arg(initial, 0, 'g', 17).arg(final, 0, 'g', 17)));
+
+    QVERIFY(report["maxPenetration"].isDouble());
+    QVERIFY(report["maxPenetration"].toDouble(1.0) < 1e-9);
+    QVERIFY(report["escaped"].isDouble());
+    QVERIFY(report["escaped"].toDouble(-1.0) == 0.0);
+
+    const QJsonArray balls = report["balls"].toArray();
+    QCOMPARE(balls.size(), 10);
+    QCOMPARE(balls.size(), readJsonObject(magicRoom())["balls"].toArray().size());
+    for (const QJsonValue& ball : balls) {
+      QVERIFY(ball.isObject());
+      QVERIFY(isVector(ball["position"]));
+      QVERIFY(isVector(ball["velocity"]));
+    }
+
+    // Full precision: positions after two seconds of bouncing need all 17 digits, and a report
+    // rounded for reading would show far fewer.
+    const QByteArray rawBalls = rawArray(run.out, "balls");
+    QVERIFY(!rawBalls.isEmpty());
+    int mostDigits = 0;
+    const QRegularExpression number("-?\\d+(\\.\\d+)?([eE][-+]?\\d+)?");
+    for (const QRegularExpressionMatch& m : number.globalMatch(QString::fromUtf8(rawBalls)))
+      mostDigits = std::max(mostDigits, significantDigits(m.captured().toUtf8()));
+    QVERIFY2(mostDigits >= 15, rawBalls.constData());
+
+    // Determinism: the same run prints the same final state, byte for byte.
+    const CliRun again = runCli(arguments);
+    VERIFY_EXIT(again, 0);
+    QCOMPARE(rawArray(again.out, "balls"), rawBalls);
+  }
+
+  void runMethods_data() {
+    QTest::addColumn<QString>("method");
+    QTest::addColumn<QString>("integrator");
+    for (const char* method : {"exact", "swept", "discrete"})
+      for (const char* integrator : {"explicit-euler", "symplectic-euler", "velocity-verlet"})
+        QTest::addRow("%s %s", method, integrator) << QString(method) << QString(integrator);
+  }
+  void runMethods() {
+    QFETCH(QString, method);
+    QFETCH(QString, integrator);
+    const CliRun run = runCli({"run", magicRoom(), "--duration", "2", "--method", method,
+                               "--integrator", integrator, "--dt", "0.01", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    QCOMPARE(report["method"].toString(), method);
+    QCOMPARE(report["integrator"].toString(), integrator);
+    QVERIFY(report["timeStep"].toDouble() == 0.01);
+    QVERIFY(report["simulatedTime"].toDouble() == 2.0);
+    QCOMPARE(report["balls"].toArray().size(), 10);
+    // The stepping methods take steps and the event-driven one does not.
+    QVERIFY(isCount(report["steps"]));
+    QCOMPARE(report["steps"].toDouble() > 0.0, method != "exact");
+  }
+
+  void textReport() {
+    const CliRun run = runCli({"run", magicRoom(), "--duration", "2"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(!run.out.startsWith('{'), run.out.constData());
+    bool collisions = false;
+    bool energy = false;
+    for (const QByteArray& line : run.out.split('\n')) {
+      collisions = collisions || (line.startsWith("collisions:") && line.contains("ball-ball"));
+      energy = energy || (line.startsWith("energy:") && line.contains("initial"));
+    }
+    QVERIFY2(collisions, run.out.constData());
+    QVERIFY2(energy, run.out.constData());
+  }
+
+  void trajectory_data() {
+    QTest::addColumn<QStringList>("options");
+    QTest::addColumn<double>("duration");
+    QTest::addColumn<double>("timeStep");
+    QTest::addColumn<int>("samples");  // 0: not known in advance
+    // The scene's 1/60 s step does not divide 2 s exactly in doubles.
+    QTest::newRow("exact, scene step") << QStringList{"--duration", "2"} << 2.0 << 1.0 / 60.0 << 0;
+    QTest::newRow("swept, quarter step")
+        << QStringList{"--duration", "2", "--method", "swept", "--dt", "0.25"} << 2.0 << 0.25 << 9;
+    QTest::newRow("zero duration") << QStringList{"--duration", "0"} << 0.0 << 1.0 / 60.0 << 1;
+  }
+  void trajectory() {
+    QFETCH(QStringList, options);
+    QFETCH(double, duration);
+    QFETCH(double, timeStep);
+    QFETCH(int, samples);
+    const QString csv = dir_.filePath(rowFileName() + ".csv");
+    const CliRun run =
+        runCli(QStringList{"run", magicRoom(), "--json", "--trajectory", csv} + options);
+    VERIFY_EXIT(run, 0);
+    const QJsonArray finalBalls = QJsonDocument::fromJson(run.out).object()["balls"].toArray();
+    const QJsonArray sceneBalls = readJsonObject(magicRoom())["balls"].toArray();
+    const int ballCount = static_cast<int>(sceneBalls.size());
+    QCOMPARE(ballCount, 10);
+    QCOMPARE(finalBalls.size(), ballCount);
+
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray text = file.readAll();
+    QVERIFY(text.endsWith('\n'));
+    QList<QByteArray> lines = text.split('\n');
+    lines.removeLast();  // after the final newline
+    QVERIFY(!lines.isEmpty());
+    QCOMPARE(lines.takeFirst(), QByteArray("time,ball,x,y,z,vx,vy,vz"));
+    QVERIFY(!lines.isEmpty());
+    QCOMPARE(lines.size() % ballCount, 0);
+    if (samples > 0) QCOMPARE(lines.size(), samples * ballCount);
+
+    // rows[i] = {time, ball, x, y, z, vx, vy, vz}
+    QList<QList<double>> rows;
+    for (const QByteArray& line : lines) {
+      const QList<QByteArray> fields = line.split(',');
+      QVERIFY2(fields.size() == 8, line.constData());
+      QList<double> row;
+      for (const QByteArray& field : fields) {
+        bool ok = false;
+        row << field.toDouble(&ok);
+        QVERIFY2(ok && std::isfinite(row.last()), line.constData());
+      }
+      rows << row;
+    }
+
+    double previousSample = 0.0;
+    for (int i = 0; i < rows.size(); ++i) {
+      const QList<double>& row = rows[i];
+      // Each sample lists every ball in scene order at one time.
+      QVERIFY2(row[1] == i % ballCount, lines[i].constData());
+      const double sampleTime = rows[i - i % ballCount][0];
+      QVERIFY2(row[0] == sampleTime, lines[i].constData());
+      if (i > 0) QVERIFY2(row[0] >= rows[i - 1][0], lines[i].constData());
+      // A sample for every time step: no gap longer than one step.
+      if (i % ballCount == 0 && i > 0) {
+        QVERIFY2(row[0] - previousSample <= timeStep * (1.0 + 1e-9), lines[i].constData());
+        previousSample = row[0];
+      }
+    }
+    QVERIFY(rows.first()[0] == 0.0);
+    QVERIFY(rows.last()[0] == duration);
+
+    // The first sample is the scene as written, the last the state the report ends with; both
+    // to the last bit, which checks the precision of the CSV and of the JSON against each other.
+    for (int b = 0; b < ballCount; ++b) {
+      const QList<double>& first = rows[b];
+      const QList<double>& last = rows[rows.size() - ballCount + b];
+      const QJsonObject scene = sceneBalls[b].toObject();
+      const QJsonObject report = finalBalls[b].toObject();
+      for (int k = 0; k < 3; ++k) {
+        QVERIFY2(first[2 + k] == scene["position"][k].toDouble(), lines[b].constData());
+        QVERIFY2(first[5 + k] == scene["velocity"][k].toDouble(), lines[b].constData());
+        QVERIFY2(last[2 + k] == report["position"][k].toDouble(), qPrintable(QString::number(b)));
+        QVERIFY2(last[5 + k] == report["velocity"][k].toDouble(), qPrintable(QString::number(b)));
+      }
+    }
+  }
+
+  // --- bench ---
+
+  void benchQuick() {
+    const CliRun run = runCli({"bench", "--quick"}, kBenchTimeoutMs);
+    VERIFY_EXIT(run, 0);
+    QList<QByteArray> rows = nonEmptyLines(run.out);
+    QVERIFY(!rows.isEmpty());
+    const QByteArray header = rows.takeFirst();
+    for (const char* column :
+         {"method", "balls", "gravity", "collisions", "energy drift", "wall s"})
+      QVERIFY2(header.contains(column), header.constData());
+
+    QSet<QByteArray> methods;
+    for (const QByteArray& row : rows) {
+      const QList<QByteArray> cells = row.simplified().split(' ');
+      QVERIFY2(cells.size() == 9, row.constData());
+      methods << cells[0];
+      bool ok = false;
+      QVERIFY2(cells[1].toInt(&ok) > 0 && ok, row.constData());
+      QVERIFY2(cells[2] == "yes" || cells[2] == "no", row.constData());
+    }
+    QCOMPARE(methods, (QSet<QByteArray>{"exact", "swept", "discrete"}));
+
+    const QList<QByteArray> progress = nonEmptyLines(run.err);
+    for (const QByteArray& line : progress) QVERIFY2(line.startsWith("bench:"), line.constData());
+    QCOMPARE(progress.size(), rows.size());
+    QEXPECT_FAIL("", "bench --quick runs 2 exact sizes where the full bench runs 3: 5 cases",
+                 Continue);
+    QCOMPARE(rows.size(), 6);
+  }
+
+  // --- bad input: exit code 2, nothing on stdout, a short message naming the problem ---
+
+  void badArguments_data() {
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QStringList>("message");  // substrings of stderr
+    const QString scene = magicRoom();
+    const QString other = sceneFile("gas-box.json");
+    const QString missing = dir_.filePath("missing.json");
+    const QString noDir = dir_.filePath("no/such/dir/trajectory.csv");
+    QTest::newRow("no arguments") << QStringList{} << QStringList{"no command"};
+    QTest::newRow("unknown command")
+        << QStringList{"simulate", scene} << QStringList{"unknown command", "simulate"};
+    QTest::newRow("unknown option")
+        << QStringList{"run", scene, "--fast"} << QStringList{"unknown option", "--fast"};
+    QTest::newRow("unknown bench option")
+        << QStringList{"bench", "--slow"} << QStringList{"--slow"};
+    QTest::newRow("run without a scene")
+        << QStringList{"run", "--json"} << QStringList{"no scene file"};
+    QTest::newRow("validate without a scene")
+        << QStringList{"validate"} << QStringList{"no scene file"};
+    QTest::newRow("two scene files")
+        << QStringList{"run", scene, other} << QStringList{other, "one scene file"};
+    QTest::newRow("missing file") << QStringList{"run", missing}
+                                  << QStringList{missing, "cannot open"};
+    QTest::newRow("validate missing file")
+        << QStringList{"validate", missing} << QStringList{missing, "cannot open"};
+    QTest::newRow("directory as scene")
+        << QStringList{"run", dir_.path()} << QStringList{dir_.path(), "directory"};
+    QTest::newRow("--method fast") << QStringList{"run", scene, "--method", "fast"}
+                                   << QStringList{"unknown method", "fast", "exact"};
+    QTest::newRow("--integrator rk4")
+        << QStringList{"run", scene, "--integrator", "rk4"}
+        << QStringList{"unknown integrator", "rk4", "velocity-verlet"};
+    QTest::newRow("--dt 0") << QStringList{"run", scene, "--dt", "0"}
+                            << QStringList{"--dt", "positive"};
+    QTest::newRow("--dt -1") << QStringList{"run", scene, "--dt", "-1"}
+                             << QStringList{"--dt", "positive"};
+    QTest::newRow("--dt nan") << QStringList{"run", scene, "--dt", "nan"}
+                              << QStringList{"--dt", "nan"};
+    QTest::newRow("--dt inf") << QStringList{"run", scene, "--dt", "inf"}
+                              << QStringList{"--dt", "inf"};
+    QTest::newRow("--dt 1e7") << QStringList{"run", scene, "--dt", "1e7"}
+                              << QStringList{"--dt", "1e7"};
+    QTest::newRow("--duration -5")
+        << QStringList{"run", scene, "--duration", "-5"} << QStringList{"--duration", "-5"};
+    QTest::newRow("--duration abc")
+        << QStringList{"run", scene, "--duration", "abc"} << QStringList{"--duration", "abc"};
+    QTest::newRow("--duration without value")
+        << QStringList{"run", scene, "--duration"} << QStringList{"--duration", "value"};
+    QTest::newRow("--trajectory into missing directory")
+        << QStringList{"run", scene, "--json", "--trajectory", noDir}
+        << QStringList{"trajectory", noDir};
+  }
+  void badArguments() {
+    QFETCH(QStringList, arguments);
+    QFETCH(QStringList, message);
+    const CliRun run = runCli(arguments);
+    VERIFY_EXIT(run, 2);
+    QVERIFY2(run.out.isEmpty(), qPrintable(run.describe()));
+    QVERIFY2(run.err.endsWith('\n'), qPrintable(run.describe()));
+    const qsizetype lines = run.err.count('\n');
+    QVERIFY2(lines >= 1 && lines <= 2, qPrintable(run.describe()));
+    for (const QString& part : message)
+      QVERIFY2(QString::fromUtf8(run.err).contains(part), qPrintable(part + '\n' + run.describe()));
+  }
+
+  void badScene_data() {
+    QTest::addColumn<QByteArray>("scene");
+    QTest::addColumn<QStringList>("message");  // substrings of stderr besides the file name
+    QTest::newRow("invalid json") << QByteArray(R"({"format": "carom-scene", "version": 1,
+ "balls": [
+  {"position": [0, 0, 0], "radius": 0.1,}
+ ]
+}
+)") << QStringList{"invalid JSON", "line 3"};
+    QTest::newRow("empty file") << QByteArray() << QStringList{"invalid JSON"};
+    QTest::newRow("top-level array") << QByteArray(R"([{"format": "carom-scene", "version": 1}])")
+                                     << QStringList{"object", "array"};
+    QTest::newRow("no format") << QByteArray(R"({"version": 1})")
+                               << QStringList{"format", "missing"};
+    QTest::newRow("newer version") << sceneText("", 2) << QStringList{"version 2", "newer"};
+    QTest::newRow("wrong type") << sceneText(
+                                       R"("balls": [{"position": [0, 0, 0], "radius": "big"}])")
+                                << QStringList{"balls[0].radius", "number", "string"};
+    QTest::newRow("short vector") << sceneText(R"("balls": [{"position": [0, 0], "radius": 0.1}])")
+                                  << QStringList{"balls[0].position", "3 numbers"};
+    QTest::newRow("missing position") << sceneText(R"("balls": [{"radius": 0.1}])")
+                                      << QStringList{"balls[0].position", "missing"};
+    QTest::newRow("absurd position")
+        << sceneText(R"("balls": [{"position": [1e300, 0, 0], "radius": 1}])")
+        << QStringList{"balls[0].position", "1e300"};
+    QTest::newRow("absurd velocity")
+        << sceneText(
+               R"("balls": [{"position": [0, 0, 0], "velocity": [0, -1e300, 0],
+                                     "radius": 1}])")
+        << QStringList{"balls[0].velocity", "1e300"};
+    QTest::newRow("absurd mass")
+        << sceneText(R"("balls": [{"position": [0, 0, 0], "radius": 1, "mass": 1e300}])")
+        << QStringList{"balls[0].mass", "1e300"};
+    QTest::newRow("beyond double")
+        << sceneText(R"("balls": [{"position": [1e400, 0, 0], "radius": 1}])")
+        << QStringList{"invalid JSON"};
+    QTest::newRow("nan literal") << sceneText(
+                                        R"("balls": [{"position": [NaN, 0, 0], "radius": 1}])")
+                                 << QStringList{"invalid JSON"};
+    QTest::newRow("zero normal") << sceneText(
+                                        R"("planes": [{"point": [0, 0, 0], "normal": [0, 0, 0]}])")
+                                 << QStringList{"planes[0].normal", "zero"};
+    QTest::newRow("zero axis")
+        << sceneText(R"("cylinders": [{"point": [0, 0, 0], "axis": [0, 0, 0], "radius": 1}])")
+        << QStringList{"cylinders[0].axis", "zero"};
+    QTest::newRow("negative radius")
+        << sceneText(R"("balls": [{"position": [0, 0, 0], "radius": -0.1}])")
+        << QStringList{"balls[0].radius", "positive"};
+    QTest::newRow("zero mass")
+        << sceneText(R"("balls": [{"position": [0, 0, 0], "radius": 0.1, "mass": 0}])")
+        << QStringList{"balls[0].mass", "positive"};
+    QTest::newRow("restitution 1.5") << sceneText(
+                                            R"("balls": [{"position": [0, 0, 0], "radius": 0.1,
+                                     "restitution": 1.5}])")
+                                     << QStringList{"balls[0].restitution", "1.5"};
+    QTest::newRow("world restitution") << sceneText(R"("world": {"restitution": -0.5})")
+                                       << QStringList{"world.restitution", "-0.5"};
+    QTest::newRow("zero time step")
+        << sceneText(R"("world": {"timeStep": 0})") << QStringList{"world.timeStep", "positive"};
+    QTest::newRow("unknown method")
+        << sceneText(R"("world": {"method": "fast"})") << QStringList{"world.method", "fast"};
+    QTest::newRow("unknown integrator")
+        << sceneText(R"("world": {"integrator": "rk4"})") << QStringList{"world.integrator", "rk4"};
+    QTest::newRow("only the fourth ball bad") << sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [1, 0, 0], "radius": 0.1},
+        {"position": [2, 0, 0], "radius": 0.1}, {"position": [3, 0, 0], "radius": 0},
+        {"position": [4, 0, 0], "radius": 0.1}])")
+                                              << QStringList{"balls[3].radius", "positive"};
+    QTest::newRow("overlapping balls") << sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [0.15, 0, 0], "radius": 0.1}])")
+                                       << QStringList{"balls[1].position", "overlaps balls[0]"};
+    // Far beyond rounding and far below anything visible: still an overlap.
+    QTest::newRow("balls overlapping by 1e-5")
+        << sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [0.19999, 0, 0], "radius": 0.1}])")
+        << QStringList{"balls[1].position", "overlaps balls[0]"};
+    QTest::newRow("ball overlapping a plane")
+        << sceneText(R"(
+        "planes": [{"point": [0, 0, 0], "normal": [0, 1, 0]}],
+        "balls": [{"position": [0, 0.05, 0], "radius": 0.1}])")
+        << QStringList{"balls[0].position", "overlaps planes[0]"};
+    QTest::newRow("ball behind a plane") << sceneText(R"(
+        "planes": [{"point": [0, 0, 0], "normal": [0, 1, 0]}],
+        "balls": [{"position": [0, -0.1, 0], "radius": 0.1}])")
+                                         << QStringList{"balls[0].position", "planes[0]", "behind"};
+    QTest::newRow("ball inside a cylinder")
+        << sceneText(R"(
+        "cylinders": [{"point": [0, 0, 0], "axis": [0, 1, 0], "radius": 1}],
+        "balls": [{"position": [0.5, 0, 0], "radius": 0.1}])")
+        << QStringList{"balls[0].position", "overlaps cylinders[0]"};
+  }
+  void badScene() {
+    QFETCH(QByteArray, scene);
+    QFETCH(QStringList, message);
+    const QString path = writeRowFile(scene);
+    QVERIFY(!path.isEmpty());
+    for (const QStringList& arguments :
+         {QStringList{"validate", path}, QStringList{"run", path, "--json"}}) {
+      const CliRun run = runCli(arguments);
+      VERIFY_EXIT(run, 2);
+      QVERIFY2(run.out.isEmpty(), qPrintable(run.describe()));
+      QVERIFY2(run.err.endsWith('\n'), qPrintable(run.describe()));
+      const qsizetype lines = run.err.count('\n');
+      QVERIFY2(lines >= 1 && lines <= 2, qPrintable(run.describe()));
+      const QString err = QString::fromUtf8(run.err);
+      QVERIFY2(err.contains(path), qPrintable(run.describe()));
+      for (const QString& part : message)
+        QVERIFY2(err.contains(part), qPrintable(part + '\n' + run.describe()));
+    }
+  }
+
+  // A refused scene must not leave an empty or partial trajectory behind.
+  void badSceneWritesNoTrajectory() {
+    const QString scene = writeFile("bad-for-trajectory.json", sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [0.1, 0, 0], "radius": 0.1}])"));
+    QVERIFY(!scene.isEmpty());
+    const QString csv = dir_.filePath("never-written.csv");
+    const CliRun run = runCli({"run", scene, "--trajectory", csv});
+    VERIFY_EXIT(run, 2);
+    QVERIFY2(!QFileInfo::exists(csv), qPrintable(run.describe()));
+  }
+
+  // Output that cannot be written must not look like success to a script.
+  void stdoutWriteFailureIsAnError() {
+    if (!QFileInfo::exists("/dev/full")) QSKIP("needs /dev/full");
+    const CliRun run =
+        runCli({"run", magicRoom(), "--duration", "1", "--json"}, kTimeoutMs, "/dev/full");
+    QVERIFY2(run.finished && run.status == QProcess::NormalExit, qPrintable(run.describe()));
+    QEXPECT_FAIL("", "carom-cli never checks that stdout was written and exits 0", Continue);
+    QVERIFY2(run.exitCode != 0, qPrintable(run.describe()));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"
