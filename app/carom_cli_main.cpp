@@ -10,5 +10,12 @@ int main(int argc, char** argv) {
   QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION));
   QTextStream out(stdout);
   QTextStream err(stderr);
-  return carom::cli::runCli(QCoreApplication::arguments().mid(1), out, err);
+  const int code = carom::cli::runCli(QCoreApplication::arguments().mid(1), out, err);
+  out.flush();
+  // A report that could not be written (a full disk, a closed pipe) is a failure, not a success.
+  if (out.status() != QTextStream::Ok || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    err << "carom-cli: cannot write the output\n";
+    return carom::cli::kInternalError;
+  }
+  return code;
 }

@@ -74,7 +74,7 @@ QString rate(double count, double seconds) {
 int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err) {
   const bool quick = options.quick;
   std::vector<BenchCase> cases;
-  for (int n : quick ? std::vector<int>{500, 2000} : std::vector<int>{4000, 32000, 108000})
+  for (int n : quick ? std::vector<int>{500, 1000, 2000} : std::vector<int>{4000, 32000, 108000})
     cases.push_back({Method::Exact, n, false, quick ? 1e5 : 3e6, 0, 0.0});
   const int stepBalls = quick ? 1000 : 10000;
   cases.push_back({Method::Swept, stepBalls, false, 0, quick ? 20 : 200, 0.0});

@@ -30,8 +30,8 @@ std::optional<Scene> prepareScene(const RunOptions& options, QTextStream& err) {
   if (options.method) {
     const auto method = methodFromName(options.method->toStdString());
     if (!method) {
-      err << "carom-cli: unknown method '" << *options.method << "' (choose " << joined(methodNames())
-          << ")\n";
+      err << "carom-cli: unknown method '" << *options.method << "' (choose "
+          << joined(methodNames()) << ")\n";
       return std::nullopt;
     }
     scene.world.method = *method;

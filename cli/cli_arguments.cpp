@@ -13,7 +13,9 @@ std::optional<double> parseNumber(const QString& text, double low, double high) 
   return value;
 }
 
-ParseResult failure(const QString& message) { return {std::nullopt, message}; }
+ParseResult failure(const QString& message) {
+  return {std::nullopt, message};
+}
 
 ParseResult success(Command::Kind kind) {
   Command command;
@@ -28,15 +30,17 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
   bool haveScene = false;
   for (int i = 0; i < args.size(); ++i) {
     const QString& arg = args[i];
-    const bool takesValue = !validateOnly && (arg == "--duration" || arg == "--method" ||
-                                              arg == "--integrator" || arg == "--dt" ||
-                                              arg == "--trajectory");
+    const bool takesValue =
+        !validateOnly && (arg == "--duration" || arg == "--method" || arg == "--integrator" ||
+                          arg == "--dt" || arg == "--trajectory");
     if (takesValue) {
       if (i + 1 >= args.size()) return failure(QString("%1 needs a value").arg(arg));
       const QString value = args[++i];
       if (arg == "--duration") {
         const auto d = parseNumber(value, 0.0, 1e12);
-        if (!d) return failure(QString("--duration must be a number of seconds from 0 to 1e12 (got '%1')").arg(value));
+        if (!d)
+          return failure(QString("--duration must be a number of seconds from 0 to 1e12 (got '%1')")
+                             .arg(value));
         run.duration = *d;
       } else if (arg == "--dt") {
         const auto d = parseNumber(value, -1e300, 1e300);

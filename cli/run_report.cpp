@@ -20,9 +20,13 @@ namespace {
 // contact, so that a missed collision shows up in the report.
 constexpr int kOverlapCheckpoints = 100;
 
-QJsonArray vectorJson(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+QJsonArray vectorJson(const Vec3& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
-QString text(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<int>(s.size())); }
+QString text(std::string_view s) {
+  return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
+}
 
 struct RunResult {
   double initialEnergy = 0.0;
@@ -33,7 +37,7 @@ struct RunResult {
   int resting = 0;
 };
 
-void writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>& state) {
+bool writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>& state) {
   QByteArray rows;
   for (int i = 0; i < static_cast<int>(state.size()); ++i) {
     const Vec3& p = state[i].position;
@@ -43,7 +47,12 @@ void writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>&
       rows += ',' + QByteArray::number(x, 'g', 17);
     rows += '\n';
   }
-  file.write(rows);
+  return file.write(rows) == rows.size();
+}
+
+int trajectoryFailed(const QFile& file, QTextStream& err) {
+  err << "carom-cli: writing " << file.fileName() << " failed: " << file.errorString() << "\n";
+  return kInternalError;
 }
 
 QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
@@ -86,13 +95,14 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
   const RunStats& stats = sim.stats();
   const World& world = sim.world();
   out << "method: " << text(methodName(world.method));
-  if (world.method != Method::Exact) out << " (" << text(integratorName(world.integrator)) << ", dt " << world.timeStep << " s)";
+  if (world.method != Method::Exact)
+    out << " (" << text(integratorName(world.integrator)) << ", dt " << world.timeStep << " s)";
   out << "\nsimulated: " << sim.time() << " s in " << result.wallSeconds << " s wall\n";
   out << "collisions: ball-ball " << stats.collisions.ballBall << ", ball-plane "
       << stats.collisions.ballPlane << ", ball-cylinder " << stats.collisions.ballCylinder << "\n";
-  const double drift = result.initialEnergy != 0.0
-                           ? (result.finalEnergy - result.initialEnergy) / std::abs(result.initialEnergy)
-                           : result.finalEnergy - result.initialEnergy;
+  const double drift = result.initialEnergy != 0.0 ? (result.finalEnergy - result.initialEnergy) /
+                                                         std::abs(result.initialEnergy)
+                                                   : result.finalEnergy - result.initialEnergy;
   out << "energy: initial " << QString::number(result.initialEnergy, 'g', 12) << ", final "
       << QString::number(result.finalEnergy, 'g', 12) << " (relative change "
       << QString::number(drift, 'g', 3) << ")\n";
@@ -117,13 +127,14 @@ int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QT
           << trajectory.errorString() << "\n";
       return kBadInput;
     }
-    trajectory.write("time,ball,x,y,z,vx,vy,vz\n");
   }
 
   Simulation sim(scene);
   RunResult result;
   result.initialEnergy = sim.totalEnergy();
-  if (trajectory.isOpen()) writeTrajectoryRows(trajectory, 0.0, sim.state());
+  if (trajectory.isOpen() && (trajectory.write("time,ball,x,y,z,vx,vy,vz\n") < 0 ||
+                              !writeTrajectoryRows(trajectory, 0.0, sim.state())))
+    return trajectoryFailed(trajectory, err);
 
   // Chunks are whole time steps so that `swept` and `discrete` take the same steps as one call.
   const double dt = scene.world.timeStep;
@@ -134,29 +145,29 @@ int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QT
   QElapsedTimer timer;
   timer.start();
   double measured = 0.0;
-  while (sim.time() < options.duration) {
-    const double next = std::min(options.duration, sim.time() + chunk);
-    sim.advance(next - sim.time());
+  // Chunk ends come from a counter, not a running sum, and a step that divides the duration up
+  // to rounding gives no extra sliver of a chunk at the end.
+  const double chunks = std::max(1.0, std::ceil(options.duration / chunk - 1e-9));
+  for (double k = 1; sim.time() < options.duration; ++k) {
+    sim.advance((k >= chunks ? options.duration : std::min(options.duration, k * chunk)) -
+                sim.time());
     const double before = timer.nsecsElapsed() * 1e-9;
     const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
     result.maxPenetration = std::max(result.maxPenetration, overlaps.maxPenetration);
-    if (trajectory.isOpen()) writeTrajectoryRows(trajectory, sim.time(), sim.state());
+    if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
+      return trajectoryFailed(trajectory, err);
     measured += timer.nsecsElapsed() * 1e-9 - before;
   }
   result.wallSeconds = timer.nsecsElapsed() * 1e-9 - measured;
 
   const OverlapReport final = measureOverlaps(sim.bodies(), sim.positions());
-  result.maxPenetration = std::max({result.maxPenetration, final.maxPenetration,
-                                    sim.stats().maxPenetration});
+  result.maxPenetration =
+      std::max({result.maxPenetration, final.maxPenetration, sim.stats().maxPenetration});
   result.escaped = final.escaped;
   result.finalEnergy = sim.totalEnergy();
   for (const BallState& s : sim.state()) result.resting += s.resting ? 1 : 0;
 
-  if (trajectory.isOpen() && !trajectory.flush()) {
-    err << "carom-cli: writing " << trajectory.fileName() << " failed: " << trajectory.errorString()
-        << "\n";
-    return kBadInput;
-  }
+  if (trajectory.isOpen() && !trajectory.flush()) return trajectoryFailed(trajectory, err);
   if (options.json)
     out << QJsonDocument(reportJson(sim, result)).toJson(QJsonDocument::Compact) << "\n";
   else

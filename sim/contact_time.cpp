@@ -32,8 +32,8 @@ double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon)
   // margins well above the rounding of the cheap form. (The contact comes no sooner than
   // c / (-2b).)
   const double roughC = length2 - rho * rho;
-  if (roughC > 0.0 && (b * b - a * roughC < -1e-12 * a * length2 ||
-                       roughC > -2.0 * b * horizon * (1.0 + 1e-12)))
+  if (roughC > 0.0 &&
+      (b * b - a * roughC < -1e-12 * a * length2 || roughC > -2.0 * b * horizon * (1.0 + 1e-12)))
     return kNever;
   const double length = std::sqrt(length2);
   const double c = (length - rho) * (length + rho);
@@ -64,8 +64,8 @@ double ballPlaneContactTime(const BallPath& ball, double radius, const PlaneShap
   return firstEntryQuadratic(0.5 * normalAcceleration, normalVelocity, gap, horizon);
 }
 
-double ballCylinderContactTime(const BallPath& ball, double radius,
-                               const CylinderShape& cylinder, double horizon) {
+double ballCylinderContactTime(const BallPath& ball, double radius, const CylinderShape& cylinder,
+                               double horizon) {
   const Vec3 u0 = cylinder.perpendicular(ball.position - cylinder.point);
   const Vec3 u1 = cylinder.perpendicular(ball.velocity);
   const Vec3 u2 = 0.5 * cylinder.perpendicular(ball.acceleration);
@@ -75,8 +75,7 @@ double ballCylinderContactTime(const BallPath& ball, double radius,
   return firstEntry(squaredLengthMinus(u0, u1, u2, rho), horizon);
 }
 
-double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSum,
-                           double horizon) {
+double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSum, double horizon) {
   const Vec3 u0 = b.position - a.position;
   const Vec3 u1 = b.velocity - a.velocity;
   const Vec3 u2 = 0.5 * (b.acceleration - a.acceleration);

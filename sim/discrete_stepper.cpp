@@ -73,7 +73,8 @@ class DiscreteStepper final : public Stepper {
       const Vec3 out = cylinder.perpendicular(positions_[i] - cylinder.point);
       const double gap = out.norm() - cylinder.radius - r;
       if (gap >= 0.0) continue;
-      const Vec3 n = out.norm() > 0.0 ? Vec3(out.normalized()) : cylinder.perpendicular(Vec3::UnitX()).normalized();
+      const Vec3 n = out.norm() > 0.0 ? Vec3(out.normalized())
+                                      : cylinder.perpendicular(Vec3::UnitX()).normalized();
       pushOut(i, n, -gap, std::min(bodies_.restitution[i], bodies_.cylinderRestitution[k]),
               ContactKind::BallCylinder, k, time, stats, log);
     }
@@ -90,7 +91,8 @@ class DiscreteStepper final : public Stepper {
       ++stats.collisions.ballPlane;
     else
       ++stats.collisions.ballCylinder;
-    if (log) log->push_back({time, kind, i, other, positions_[i] - bodies_.radius[i] * n, approach});
+    if (log)
+      log->push_back({time, kind, i, other, positions_[i] - bodies_.radius[i] * n, approach});
   }
 
   void resolvePair(int i, int j, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
@@ -112,8 +114,8 @@ class DiscreteStepper final : public Stepper {
                     n, std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
     ++stats.collisions.ballBall;
     if (log)
-      log->push_back({time, ContactKind::BallBall, i, j, positions_[i] + bodies_.radius[i] * n,
-                      approach});
+      log->push_back(
+          {time, ContactKind::BallBall, i, j, positions_[i] + bodies_.radius[i] * n, approach});
   }
 
   const Bodies& bodies_;
@@ -127,8 +129,7 @@ class DiscreteStepper final : public Stepper {
 
 }  // namespace
 
-std::unique_ptr<Stepper> makeDiscreteStepper(const Bodies& bodies,
-                                             const StepperSettings& settings,
+std::unique_ptr<Stepper> makeDiscreteStepper(const Bodies& bodies, const StepperSettings& settings,
                                              const std::vector<BallState>& state, double now) {
   return std::make_unique<DiscreteStepper>(bodies, settings, state, now);
 }

@@ -60,9 +60,9 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
                   bodies.radius[i]};
     restSpeed_[i] = restSpeed(gravity_, bodies.radius[i]);
-    burstFlight_[i] = restSpeed_[i] > 0.0 ? tolerance::kBurstFlightFraction * bodies.radius[i] /
-                                                restSpeed_[i]
-                                          : 0.0;
+    burstFlight_[i] = restSpeed_[i] > 0.0
+                          ? tolerance::kBurstFlightFraction * bodies.radius[i] / restSpeed_[i]
+                          : 0.0;
   }
   buildGrid(state);
   buildStaticLists();
@@ -103,7 +103,8 @@ void EventEngine::buildStaticLists() {
       // Nearest corner of the cell to the surface (or behind it) decides.
       double nearest = -plane.offset;
       if (!border)
-        for (int a = 0; a < 3; ++a) nearest += plane.normal[a] * (plane.normal[a] > 0 ? lo[a] : hi[a]);
+        for (int a = 0; a < 3; ++a)
+          nearest += plane.normal[a] * (plane.normal[a] > 0 ? lo[a] : hi[a]);
       if (border || nearest <= reach) statics_.push_back({false, k});
     }
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
@@ -161,9 +162,9 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
   for (int s = staticStart_[cell]; s < staticStart_[cell + 1]; ++s) {
     const StaticRef ref = statics_[s];
     const double horizon = std::min(best.time, horizon_) - now_;
-    const double t =
-        ref.cylinder ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
-                     : ballPlaneContactTime(path, r, bodies_.planes[ref.index], horizon);
+    const double t = ref.cylinder
+                         ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
+                         : ballPlaneContactTime(path, r, bodies_.planes[ref.index], horizon);
     if (t < horizon)
       best = {now_ + t, ref.cylinder ? EventKind::Cylinder : EventKind::Plane, ref.index, 0};
   }
@@ -203,12 +204,12 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
   }
   for (int a = 0; a < 3; ++a) {
     for (int direction : {1, -1}) {
-      const double face =
-          direction > 0 ? grid_.upperFace(a, c[a]) : grid_.lowerFace(a, c[a]);
+      const double face = direction > 0 ? grid_.upperFace(a, c[a]) : grid_.lowerFace(a, c[a]);
       const double horizon = std::min(next.time, horizon_) - now_;
       const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
                                             path.acceleration[a], face, direction > 0, horizon);
-      if (t < horizon) next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction)};
+      if (t < horizon)
+        next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction)};
     }
   }
 }
@@ -312,10 +313,10 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       else
         ++stats.collisions.ballCylinder;
       if (log)
-        log->push_back({now_,
-                        event.kind == EventKind::Plane ? ContactKind::BallPlane
-                                                       : ContactKind::BallCylinder,
-                        i, event.other, m.position - r * n, approach});
+        log->push_back(
+            {now_,
+             event.kind == EventKind::Plane ? ContactKind::BallPlane : ContactKind::BallCylinder, i,
+             event.other, m.position - r * n, approach});
       if (!particles_[i].resting) predict(i);
       return;
     }
@@ -354,8 +355,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     collideWithSurface(i, -n, restitution, stats);
   } else {
     if (b.resting) wake(j, stats);
-    resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i],
-                    bodies_.inverseMass[j], n, restitution, collapseSpeed_);
+    resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
+                    restitution, collapseSpeed_);
     changed(i);
     changed(j);
   }
@@ -396,7 +397,9 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   p.lastSurfaceCollision = now_;
 }
 
-void EventEngine::changed(int i) { ++particles_[i].counter; }
+void EventEngine::changed(int i) {
+  ++particles_[i].counter;
+}
 
 void EventEngine::putToRest(int i, RunStats& stats) {
   Particle& p = particles_[i];

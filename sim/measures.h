@@ -16,6 +16,7 @@ OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& pos
 
 double kineticEnergy(const Bodies& bodies, const std::vector<Vec3>& velocities);
 // Relative to the origin: the sum of -m g . p.
-double potentialEnergy(const Bodies& bodies, const Vec3& gravity, const std::vector<Vec3>& positions);
+double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
+                       const std::vector<Vec3>& positions);
 
 }  // namespace carom

@@ -12,8 +12,8 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
   if (totalInverse <= 0.0) return approach;
   // A pair that (by round-off) already separates keeps separating at no less than the minimum.
   const double closing = std::max(approach, 0.0);
-  const double separation = std::max(separationSpeed(closing, restitution, minimumSeparation),
-                                     -approach);
+  const double separation =
+      std::max(separationSpeed(closing, restitution, minimumSeparation), -approach);
   // Change of relative normal speed, shared in proportion to inverse mass; written with weights
   // rather than an impulse so that mass ratios of 1e12 lose nothing to rounding.
   const double change = approach + separation;
@@ -32,8 +32,8 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
   if (bounce < minimumSeparation) {
     separation = minimumSeparation;
     // Energy left for the tangential motion if the bounce is to add none.
-    const double budget = tangential.squaredNorm() + approach * approach -
-                          minimumSeparation * minimumSeparation;
+    const double budget =
+        tangential.squaredNorm() + approach * approach - minimumSeparation * minimumSeparation;
     const double tangential2 = tangential.squaredNorm();
     if (budget >= 0.0 && tangential2 > 0.0) {
       if (budget < tangential2) tangential *= std::sqrt(budget / tangential2);

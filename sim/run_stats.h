@@ -27,16 +27,16 @@ struct CollisionRecord {
 
 struct RunStats {
   CollisionCounts collisions;
-  std::uint64_t events = 0;         // events processed (exact and swept), collisions included
-  std::uint64_t cellCrossings = 0;  // exact and swept: balls moving between grid cells
-  std::uint64_t staleEvents = 0;    // predictions found out of date when their time came
-  std::uint64_t pairTests = 0;      // ball-ball contact times computed (exact and swept)
-  std::uint64_t steps = 0;          // time steps taken (swept and discrete)
-  std::uint64_t ballSteps = 0;      // balls times steps (swept and discrete)
-  std::uint64_t restings = 0;       // times a ball was put to rest
-  std::uint64_t wakes = 0;          // times a resting ball was set moving again
-  std::uint64_t minimumBounces = 0; // bounces raised to the minimum separation speed
-  double maxPenetration = 0.0;      // largest overlap of a ball with anything seen
+  std::uint64_t events = 0;          // events processed (exact and swept), collisions included
+  std::uint64_t cellCrossings = 0;   // exact and swept: balls moving between grid cells
+  std::uint64_t staleEvents = 0;     // predictions found out of date when their time came
+  std::uint64_t pairTests = 0;       // ball-ball contact times computed (exact and swept)
+  std::uint64_t steps = 0;           // time steps taken (swept and discrete)
+  std::uint64_t ballSteps = 0;       // balls times steps (swept and discrete)
+  std::uint64_t restings = 0;        // times a ball was put to rest
+  std::uint64_t wakes = 0;           // times a resting ball was set moving again
+  std::uint64_t minimumBounces = 0;  // bounces raised to the minimum separation speed
+  double maxPenetration = 0.0;       // largest overlap of a ball with anything seen
 };
 
 }  // namespace carom

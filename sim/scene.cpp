@@ -42,13 +42,23 @@ std::vector<std::string_view> namesOf(const Table& table) {
 
 }  // namespace
 
-std::string_view methodName(Method method) { return nameOf(kMethods, method); }
-std::string_view integratorName(Integrator integrator) { return nameOf(kIntegrators, integrator); }
-std::optional<Method> methodFromName(std::string_view name) { return valueOf(kMethods, name); }
+std::string_view methodName(Method method) {
+  return nameOf(kMethods, method);
+}
+std::string_view integratorName(Integrator integrator) {
+  return nameOf(kIntegrators, integrator);
+}
+std::optional<Method> methodFromName(std::string_view name) {
+  return valueOf(kMethods, name);
+}
 std::optional<Integrator> integratorFromName(std::string_view name) {
   return valueOf(kIntegrators, name);
 }
-std::vector<std::string_view> methodNames() { return namesOf(kMethods); }
-std::vector<std::string_view> integratorNames() { return namesOf(kIntegrators); }
+std::vector<std::string_view> methodNames() {
+  return namesOf(kMethods);
+}
+std::vector<std::string_view> integratorNames() {
+  return namesOf(kIntegrators);
+}
 
 }  // namespace carom

@@ -18,6 +18,18 @@ double standardNormal(std::mt19937_64& engine) {
 
 }  // namespace
 
+void addBoxWalls(Scene& scene, double halfSide, std::initializer_list<int> axes) {
+  for (int a : axes) {
+    for (double side : {-1.0, 1.0}) {
+      Plane wall;
+      wall.point = Vec3::Zero();
+      wall.point[a] = side * halfSide;
+      wall.normal = -side * Vec3::Unit(a);
+      scene.planes.push_back(wall);
+    }
+  }
+}
+
 Scene makeGasInBox(int ballCount, double packingFraction, const Vec3& gravity, std::uint64_t seed,
                    double radius) {
   Scene scene;
@@ -29,16 +41,7 @@ Scene makeGasInBox(int ballCount, double packingFraction, const Vec3& gravity, s
   const int perSide = static_cast<int>(std::ceil(std::cbrt(static_cast<double>(ballCount))));
   const double spacing = side / perSide;
   const double half = 0.5 * side;
-  for (int a = 0; a < 3; ++a) {
-    Plane low, high;
-    low.point = Vec3::Zero();
-    low.point[a] = -half;
-    low.normal = Vec3::Unit(a);
-    high.point = -low.point;
-    high.normal = -Vec3::Unit(a);
-    scene.planes.push_back(low);
-    scene.planes.push_back(high);
-  }
+  addBoxWalls(scene, half);
   std::mt19937_64 engine(seed);
   Vec3 total = Vec3::Zero();
   for (int i = 0; i < ballCount; ++i) {

@@ -4,8 +4,12 @@
 #include "scene.h"
 
 #include <cstdint>
+#include <initializer_list>
 
 namespace carom {
+
+// Planes at -halfSide and +halfSide on each of the given axes (0, 1, 2 for x, y, z), facing in.
+void addBoxWalls(Scene& scene, double halfSide, std::initializer_list<int> axes = {0, 1, 2});
 
 // `ballCount` balls of radius `radius` on a cubic lattice inside a closed box of six planes,
 // sized so that the balls fill `packingFraction` of it. Velocities are normal with unit variance

@@ -8,7 +8,9 @@ namespace carom {
 struct PlaneShape {
   Vec3 normal;    // unit, towards the free side
   double offset;  // normal . point: the surface is normal . x == offset
-  double gap(const Vec3& centre, double radius) const { return normal.dot(centre) - offset - radius; }
+  double gap(const Vec3& centre, double radius) const {
+    return normal.dot(centre) - offset - radius;
+  }
 };
 
 struct CylinderShape {

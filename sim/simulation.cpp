@@ -44,7 +44,9 @@ void Simulation::advance(double duration) {
                       logCollisions_ ? &collisionLog_ : nullptr);
 }
 
-double Simulation::time() const { return stepper_->now(); }
+double Simulation::time() const {
+  return stepper_->now();
+}
 
 void Simulation::setGravity(const Vec3& gravity) {
   const std::vector<BallState> current = state();
@@ -74,7 +76,9 @@ void Simulation::setIntegrator(Integrator integrator) {
   rebuildStepper(current, now);
 }
 
-std::vector<BallState> Simulation::state() const { return stepper_->state(); }
+std::vector<BallState> Simulation::state() const {
+  return stepper_->state();
+}
 
 std::vector<Vec3> Simulation::positions() const {
   std::vector<Vec3> out;
@@ -88,7 +92,9 @@ std::vector<Vec3> Simulation::velocities() const {
   return out;
 }
 
-double Simulation::kineticEnergy() const { return carom::kineticEnergy(bodies_, velocities()); }
+double Simulation::kineticEnergy() const {
+  return carom::kineticEnergy(bodies_, velocities());
+}
 
 double Simulation::potentialEnergy() const {
   return carom::potentialEnergy(bodies_, world_.gravity, positions());

@@ -1,6 +1,7 @@
 // The `exact` method against analytic answers: bounces, projectiles, collisions of any masses,
 // Newton's cradle, cylinders.
 
+#include "scene_helpers.h"
 #include "simulation.h"
 #include "tolerances.h"
 #include "validation.h"
@@ -10,24 +11,10 @@
 #include <cmath>
 
 using namespace carom;
+using carom::testing::makeBall;
+using carom::testing::makePlane;
 
 namespace {
-
-Ball ball(const Vec3& p, const Vec3& v, double r = 0.1, double m = 1.0) {
-  Ball b;
-  b.position = p;
-  b.velocity = v;
-  b.radius = r;
-  b.mass = m;
-  return b;
-}
-
-Plane plane(const Vec3& point, const Vec3& normal) {
-  Plane p;
-  p.point = point;
-  p.normal = normal;
-  return p;
-}
 
 Scene emptyScene(const Vec3& gravity) {
   Scene s;
@@ -43,7 +30,7 @@ class TestExact : public QObject {
  private slots:
   void projectile() {
     Scene s = emptyScene({0, -9.81, 0});
-    s.balls.push_back(ball({1, 2, 3}, {4, 5, -6}));
+    s.balls.push_back(makeBall({1, 2, 3}, {4, 5, -6}));
     Simulation sim(s);
     sim.advance(1.5);
     const Vec3 expected =
@@ -57,8 +44,8 @@ class TestExact : public QObject {
     // height forever.
     const double g = 9.81, h = 1.0, r = 0.1;
     Scene s = emptyScene({0, -g, 0});
-    s.planes.push_back(plane({0, 0, 0}, {0, 1, 0}));
-    s.balls.push_back(ball({0, r + h, 0}, {0, 0, 0}, r));
+    s.planes.push_back(makePlane({0, 0, 0}, {0, 1, 0}));
+    s.balls.push_back(makeBall({0, r + h, 0}, {0, 0, 0}, r));
     Simulation sim(s);
     const double period = 2.0 * std::sqrt(2.0 * h / g);
     const int bounces = 1000;
@@ -75,10 +62,10 @@ class TestExact : public QObject {
     // The tutorial kicked gravity once per frame, so its motion depended on the frame rate and
     // gained energy at large steps. `exact` gives bit-identical states however the time is cut.
     Scene s = emptyScene({0, -9.81, 0});
-    s.planes.push_back(plane({0, 0, 0}, {0, 1, 0}));
-    s.planes.push_back(plane({2, 0, 0}, {-1, 0, 0}));
-    s.balls.push_back(ball({0, 1, 0}, {1.3, 0, 0.2}));
-    s.balls.push_back(ball({1, 2, 0.05}, {-0.4, 1, 0}));
+    s.planes.push_back(makePlane({0, 0, 0}, {0, 1, 0}));
+    s.planes.push_back(makePlane({2, 0, 0}, {-1, 0, 0}));
+    s.balls.push_back(makeBall({0, 1, 0}, {1.3, 0, 0.2}));
+    s.balls.push_back(makeBall({1, 2, 0.05}, {-0.4, 1, 0}));
     Simulation coarse(s), fine(s);
     coarse.advance(10.0);
     for (int k = 0; k < 10240; ++k) fine.advance(1.0 / 1024);  // sums to 10 exactly
@@ -104,8 +91,8 @@ class TestExact : public QObject {
     Scene s = emptyScene(Vec3::Zero());
     s.world.restitution = restitution;
     const double m1 = 1.0, m2 = ratio, u1 = 2.0, u2 = -1.0;
-    s.balls.push_back(ball({0, 0, 0}, {u1, 0, 0}, 0.5, m1));
-    s.balls.push_back(ball({3, 0, 0}, {u2, 0, 0}, 0.5, m2));
+    s.balls.push_back(makeBall({0, 0, 0}, {u1, 0, 0}, 0.5, m1));
+    s.balls.push_back(makeBall({3, 0, 0}, {u2, 0, 0}, 0.5, m2));
     Simulation sim(s);
     sim.advance(0.5);  // they meet at t = 2/3: not yet
     QCOMPARE(sim.stats().collisions.ballBall, std::uint64_t(0));
@@ -132,8 +119,8 @@ class TestExact : public QObject {
     // and the others stand still.
     Scene s = emptyScene(Vec3::Zero());
     const double r = 0.1;
-    s.balls.push_back(ball({-0.5, 0, 0}, {1, 0, 0}, r));
-    for (int i = 1; i < 5; ++i) s.balls.push_back(ball({2 * r * i, 0, 0}, {0, 0, 0}, r));
+    s.balls.push_back(makeBall({-0.5, 0, 0}, {1, 0, 0}, r));
+    for (int i = 1; i < 5; ++i) s.balls.push_back(makeBall({2 * r * i, 0, 0}, {0, 0, 0}, r));
     QVERIFY(validateScene(s).empty());
     Simulation sim(s);
     sim.advance(2.0);
@@ -146,9 +133,9 @@ class TestExact : public QObject {
   void cornerHitReflectsStraightBack() {
     // Simultaneous contact with two perpendicular walls: the velocity comes straight back.
     Scene s = emptyScene(Vec3::Zero());
-    s.planes.push_back(plane({1, 0, 0}, {-1, 0, 0}));
-    s.planes.push_back(plane({0, 1, 0}, {0, -1, 0}));
-    s.balls.push_back(ball({0, 0, 0}, {1, 1, 0}, 0.1));
+    s.planes.push_back(makePlane({1, 0, 0}, {-1, 0, 0}));
+    s.planes.push_back(makePlane({0, 1, 0}, {0, -1, 0}));
+    s.balls.push_back(makeBall({0, 0, 0}, {1, 1, 0}, 0.1));
     Simulation sim(s);
     sim.advance(2.0);
     QVERIFY((sim.velocities()[0] - Vec3(-1, -1, 0)).norm() < 1e-14);
@@ -160,9 +147,9 @@ class TestExact : public QObject {
     // momentum and energy are kept.
     Scene s = emptyScene(Vec3::Zero());
     const double r = 0.5;
-    s.balls.push_back(ball({-3, 0, 0}, {2, 0, 0}, r));
-    s.balls.push_back(ball({std::sqrt(3.0) * r, r, 0}, {0, 0, 0}, r));
-    s.balls.push_back(ball({std::sqrt(3.0) * r, -r, 0}, {0, 0, 0}, r));
+    s.balls.push_back(makeBall({-3, 0, 0}, {2, 0, 0}, r));
+    s.balls.push_back(makeBall({std::sqrt(3.0) * r, r, 0}, {0, 0, 0}, r));
+    s.balls.push_back(makeBall({std::sqrt(3.0) * r, -r, 0}, {0, 0, 0}, r));
     Simulation sim(s);
     const double e0 = sim.kineticEnergy();
     sim.advance(5.0);
@@ -178,9 +165,9 @@ class TestExact : public QObject {
     c.axis = Vec3(0, 1, 0);
     c.radius = 1.0;
     s.cylinders.push_back(c);
-    s.balls.push_back(ball({-5, 0, 0}, {1, 0, 0}, 0.5));                 // head-on
-    s.balls.push_back(ball({-5, 3, 1.5 * (1 - 1e-9)}, {1, 0, 0}, 0.5));  // grazes
-    s.balls.push_back(ball({-5, 6, 1.5 * (1 + 1e-9)}, {1, 0, 0}, 0.5));  // misses
+    s.balls.push_back(makeBall({-5, 0, 0}, {1, 0, 0}, 0.5));                 // head-on
+    s.balls.push_back(makeBall({-5, 3, 1.5 * (1 - 1e-9)}, {1, 0, 0}, 0.5));  // grazes
+    s.balls.push_back(makeBall({-5, 6, 1.5 * (1 + 1e-9)}, {1, 0, 0}, 0.5));  // misses
     Simulation sim(s);
     sim.advance(10.0);
     const std::vector<Vec3> v = sim.velocities();
@@ -197,7 +184,7 @@ class TestExact : public QObject {
     c.axis = Vec3(0, 1, 0);
     c.radius = 1.0;
     s.cylinders.push_back(c);
-    s.balls.push_back(ball({1.5, 0, 0}, {0, 3, 0}, 0.5));
+    s.balls.push_back(makeBall({1.5, 0, 0}, {0, 3, 0}, 0.5));
     Simulation sim(s);
     sim.advance(3.0);
     QCOMPARE(sim.stats().collisions.total(), std::uint64_t(0));
@@ -212,7 +199,7 @@ class TestExact : public QObject {
     c.axis = Vec3(0, 1, 1);
     c.radius = 0.3;
     s.cylinders.push_back(c);
-    s.balls.push_back(ball({-2.05, 2.0, 0.0}, {0.1, 0, 0.1}, 0.2));
+    s.balls.push_back(makeBall({-2.05, 2.0, 0.0}, {0.1, 0, 0.1}, 0.2));
     Simulation sim(s);
     for (int k = 0; k < 200; ++k) {
       sim.advance(0.01);

@@ -3,6 +3,7 @@
 
 #include "measures.h"
 #include "scene_builders.h"
+#include "scene_helpers.h"
 #include "simulation.h"
 #include "validation.h"
 
@@ -12,17 +13,9 @@
 #include <random>
 
 using namespace carom;
+using carom::testing::makeBall;
 
 namespace {
-
-Ball ball(const Vec3& p, const Vec3& v, double r, double m = 1.0) {
-  Ball b;
-  b.position = p;
-  b.velocity = v;
-  b.radius = r;
-  b.mass = m;
-  return b;
-}
 
 // Random balls of random sizes and masses, not overlapping, in a closed box of six planes, with
 // cylinders through it.
@@ -32,14 +25,7 @@ Scene randomScene(std::uint64_t seed, const Vec3& gravity, int balls) {
   Scene s = makeGasInBox(0, 0.25, gravity, seed);
   const double half = 4.0;
   s.planes.clear();
-  for (int a = 0; a < 3; ++a)
-    for (double side : {-1.0, 1.0}) {
-      Plane p;
-      p.point = Vec3::Zero();
-      p.point[a] = side * half;
-      p.normal = -side * Vec3::Unit(a);
-      s.planes.push_back(p);
-    }
+  addBoxWalls(s, half);
   Cylinder c1;
   c1.point = Vec3(1, 0, 1);
   c1.axis = Vec3(0, 1, 0);
@@ -51,9 +37,9 @@ Scene randomScene(std::uint64_t seed, const Vec3& gravity, int balls) {
   s.cylinders = {c1, c2};
   while (static_cast<int>(s.balls.size()) < balls) {
     const double r = 0.1 + 0.2 * unit(rng);
-    Ball b =
-        ball(Vec3(unit(rng), unit(rng), unit(rng)) * (2 * half - 2 * r) - Vec3::Constant(half - r),
-             Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 6.0, r, 0.5 + 2 * unit(rng));
+    Ball b = makeBall(
+        Vec3(unit(rng), unit(rng), unit(rng)) * (2 * half - 2 * r) - Vec3::Constant(half - r),
+        Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5) * 6.0, r, 0.5 + 2 * unit(rng));
     s.balls.push_back(b);
     if (!validateScene(s).empty()) s.balls.pop_back();
   }
@@ -113,8 +99,9 @@ class TestMethods : public QObject {
       while (sim.stats().collisions.total() < 200000) sim.advance(0.2);
       perEvent[k] = double(sim.stats().pairTests) / double(sim.stats().events);
     }
-    QVERIFY2(perEvent[0] < 30 && perEvent[1] < 30,
-             qPrintable(QString("%1 and %2 pair tests per event").arg(perEvent[0]).arg(perEvent[1])));
+    QVERIFY2(
+        perEvent[0] < 30 && perEvent[1] < 30,
+        qPrintable(QString("%1 and %2 pair tests per event").arg(perEvent[0]).arg(perEvent[1])));
     QVERIFY(perEvent[1] < 1.5 * perEvent[0]);
   }
 
@@ -163,9 +150,9 @@ class TestMethods : public QObject {
     thin.axis = Vec3(0, 1, 0);
     thin.radius = 0.001;
     s.cylinders.push_back(thin);
-    s.balls.push_back(ball({0, 0, 0}, {speed, 0, 0}, r));
-    s.balls.push_back(ball({10, 0, 0}, {0, 0, 0}, r));
-    s.balls.push_back(ball({0, 0, 5}, {speed, 0, 0}, r));
+    s.balls.push_back(makeBall({0, 0, 0}, {speed, 0, 0}, r));
+    s.balls.push_back(makeBall({10, 0, 0}, {0, 0, 0}, r));
+    s.balls.push_back(makeBall({0, 0, 5}, {speed, 0, 0}, r));
     Simulation sim(s);
     for (int k = 0; k < 20; ++k) {
       sim.step();
@@ -190,9 +177,9 @@ class TestMethods : public QObject {
     Scene s;
     s.world.gravity = Vec3::Zero();
     const double r1 = 1.0, r2 = ratio;
-    s.balls.push_back(ball({0, 0, 0}, {1, 0, 0}, r1, 1.0));
-    s.balls.push_back(
-        ball({r1 + r2 + 1.0, 0.3 * std::min(r1, r2), 0}, {-1, 0, 0}, r2, ratio * ratio * ratio));
+    s.balls.push_back(makeBall({0, 0, 0}, {1, 0, 0}, r1, 1.0));
+    s.balls.push_back(makeBall({r1 + r2 + 1.0, 0.3 * std::min(r1, r2), 0}, {-1, 0, 0}, r2,
+                               ratio * ratio * ratio));
     Simulation sim(s);
     const Vec3 p0 = sim.momentum();
     const double e0 = sim.kineticEnergy();
@@ -214,8 +201,8 @@ class TestMethods : public QObject {
     wall.point = Vec3(25, 0, 0);
     wall.normal = Vec3(-1, 0, 0);
     s.planes.push_back(wall);
-    s.balls.push_back(ball({0, 0, 0}, {100, 0, 0}, 0.1));
-    s.balls.push_back(ball({5.05, 0, 0}, {0, 0, 0}, 0.1));
+    s.balls.push_back(makeBall({0, 0, 0}, {100, 0, 0}, 0.1));
+    s.balls.push_back(makeBall({5.05, 0, 0}, {0, 0, 0}, 0.1));
     Simulation sim(s);
     sim.advance(1.0);
     QVERIFY(sim.stats().maxPenetration > 0.1);                    // seen deep in the wall
@@ -271,7 +258,8 @@ class TestMethods : public QObject {
                  qPrintable(QString("run %1: %2").arg(run).arg(o.maxPenetration)));
         QCOMPARE(o.escaped, 0);
       }
-      for (const BallState& b : sim.state()) QVERIFY(b.position.allFinite() && b.velocity.allFinite());
+      for (const BallState& b : sim.state())
+        QVERIFY(b.position.allFinite() && b.velocity.allFinite());
     }
   }
 

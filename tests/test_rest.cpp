@@ -2,6 +2,8 @@
 // wake when hit, and sliding stays frictionless.
 
 #include "measures.h"
+#include "scene_builders.h"
+#include "scene_helpers.h"
 #include "simulation.h"
 #include "tolerances.h"
 
@@ -10,37 +12,16 @@
 #include <cmath>
 
 using namespace carom;
+using carom::testing::makeBall;
 
 namespace {
-
-Ball ball(const Vec3& p, const Vec3& v, double r = 0.1) {
-  Ball b;
-  b.position = p;
-  b.velocity = v;
-  b.radius = r;
-  return b;
-}
 
 Scene floorScene(double restitution) {
   Scene s;
   s.world.gravity = Vec3(0, -9.81, 0);
   s.world.restitution = restitution;
-  Plane floor;
-  floor.point = Vec3::Zero();
-  floor.normal = Vec3::UnitY();
-  s.planes.push_back(floor);
+  s.planes.push_back(carom::testing::makePlane(Vec3::Zero(), Vec3::UnitY()));
   return s;
-}
-
-void addWalls(Scene& s, double half) {
-  for (int a : {0, 2})
-    for (double side : {-1.0, 1.0}) {
-      Plane p;
-      p.point = Vec3::Zero();
-      p.point[a] = side * half;
-      p.normal = -side * Vec3::Unit(a);
-      s.planes.push_back(p);
-    }
 }
 
 }  // namespace
@@ -55,7 +36,7 @@ class TestRest : public QObject {
   void inelasticBounceComesToRest() {
     QFETCH(double, restitution);
     Scene s = floorScene(restitution);
-    s.balls.push_back(ball({0, 1.1, 0}, {0, 0, 0}));
+    s.balls.push_back(makeBall({0, 1.1, 0}, {0, 0, 0}));
     Simulation sim(s);
     // Bounce heights fall by e^2 each time: the bounces would take 2 v0 / (g (1 - e)), 90 s at
     // e = 0.99, and end after finitely many events.
@@ -71,7 +52,7 @@ class TestRest : public QObject {
 
   void ballPlacedAtRestDoesNotStall() {
     Scene s = floorScene(1.0);
-    s.balls.push_back(ball({0, 0.1, 0}, {0, 0, 0}));
+    s.balls.push_back(makeBall({0, 0.1, 0}, {0, 0, 0}));
     Simulation sim(s);
     sim.advance(100.0);
     QVERIFY(sim.state()[0].resting);
@@ -82,7 +63,7 @@ class TestRest : public QObject {
     // A bouncing ball with a horizontal velocity ends up hopping along the floor at the rest
     // speed, keeping its horizontal speed exactly: no friction.
     Scene s = floorScene(0.5);
-    s.balls.push_back(ball({0, 0.6, 0}, {0.7, 0, 0.2}));
+    s.balls.push_back(makeBall({0, 0.6, 0}, {0.7, 0, 0.2}));
     Simulation sim(s);
     sim.advance(20.0);
     const BallState end = sim.state()[0];
@@ -101,12 +82,12 @@ class TestRest : public QObject {
     // 64 inelastic balls dropped into a box settle into resting piles, without overlaps or
     // escapes, in a bounded number of events.
     Scene s = floorScene(0.5);
-    addWalls(s, 0.5);
+    addBoxWalls(s, 0.5, {0, 2});
     for (int i = 0; i < 64; ++i)
-      s.balls.push_back(
-          ball(Vec3(-0.35 + 0.23 * (i % 4), 0.3 + 0.25 * (i / 16), -0.35 + 0.23 * ((i / 4) % 4)) +
-                   Vec3(0.01 * (i % 3), 0, 0.013 * (i % 5)),
-               Vec3(0.3 * ((i * 7) % 5 - 2), 0, 0.3 * ((i * 3) % 5 - 2))));
+      s.balls.push_back(makeBall(
+          Vec3(-0.35 + 0.23 * (i % 4), 0.3 + 0.25 * (i / 16), -0.35 + 0.23 * ((i / 4) % 4)) +
+              Vec3(0.01 * (i % 3), 0, 0.013 * (i % 5)),
+          Vec3(0.3 * ((i * 7) % 5 - 2), 0, 0.3 * ((i * 3) % 5 - 2))));
     Simulation sim(s);
     for (int k = 0; k < 30; ++k) {
       sim.advance(1.0);
@@ -124,8 +105,8 @@ class TestRest : public QObject {
 
   void restingBallWakesWhenHit() {
     Scene s = floorScene(1.0);
-    s.balls.push_back(ball({0, 0.1, 0}, {0, 0, 0}));
-    s.balls.push_back(ball({-1, 0.1, 0}, {1, 0, 0}));
+    s.balls.push_back(makeBall({0, 0.1, 0}, {0, 0, 0}));
+    s.balls.push_back(makeBall({-1, 0.1, 0}, {1, 0, 0}));
     Simulation sim(s);
     sim.advance(0.5);
     QVERIFY(sim.state()[0].resting);
