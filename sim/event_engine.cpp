@@ -50,8 +50,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   const int n = bodies.ballCount();
   particles_.resize(n);
   tracks_.resize(n);
-  contacts_.resize(n);
-  crossings_.resize(n);
+  predictions_.resize(n);
   restSpeed_.resize(n);
   burstFlight_.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -66,6 +65,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   }
   buildGrid(state);
   buildStaticLists();
+  for (int i = 0; i < n; ++i) noteStatics(i);
   predictAll();
 }
 
@@ -120,6 +120,12 @@ void EventEngine::buildStaticLists() {
   staticStart_[cells] = static_cast<int>(statics_.size());
 }
 
+void EventEngine::noteStatics(int i) {
+  Particle& p = particles_[i];
+  p.staticBegin = staticStart_[p.cell];
+  p.staticEnd = staticStart_[p.cell + 1];
+}
+
 void EventEngine::predictAll() {
   queue_.reset(static_cast<int>(particles_.size()));
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) predict(i);
@@ -144,22 +150,21 @@ void EventEngine::forEachNeighbour(int i, F&& f) const {
 }
 
 void EventEngine::predict(int i) {
-  contacts_[i] = {};
-  crossings_[i] = {};
+  predictions_[i].contact = {};
+  predictions_[i].crossing = {};
   if (!particles_[i].resting) {
     const BallPath path = pathAt(i, now_);
     findStaticContact(i, path);
-    forEachNeighbour(i, [&](int k) { findBallContact(i, path, k); });
+    findBallContacts(i, path, [&](auto&& visit) { forEachNeighbour(i, visit); });
     findCrossing(i, path);
   }
   schedule(i);
 }
 
 void EventEngine::findStaticContact(int i, const BallPath& path) {
-  Contact& best = contacts_[i];
-  const int cell = particles_[i].cell;
+  Contact& best = predictions_[i].contact;
   const double r = bodies_.radius[i];
-  for (int s = staticStart_[cell]; s < staticStart_[cell + 1]; ++s) {
+  for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
     const double horizon = std::min(best.time, horizon_) - now_;
     const double t = ref.cylinder
@@ -170,9 +175,28 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
   }
 }
 
+template <typename ForEachBall>
+void EventEngine::findBallContacts(int i, const BallPath& path, ForEachBall&& forEachBall) {
+  // Gather the candidates first and ask for their tracks ahead: the tests then find them in
+  // cache instead of waiting on each in turn.
+  constexpr int kBatch = 32;
+  int batch[kBatch];
+  int count = 0;
+  auto flush = [&] {
+    for (int b = 0; b < count; ++b) findBallContact(i, path, batch[b]);
+    count = 0;
+  };
+  forEachBall([&](int k) {
+    __builtin_prefetch(&tracks_[k]);
+    batch[count++] = k;
+    if (count == kBatch) flush();
+  });
+  flush();
+}
+
 void EventEngine::findBallContact(int i, const BallPath& path, int k) {
   ++pairTests_;
-  Contact& best = contacts_[i];
+  Contact& best = predictions_[i].contact;
   const double horizon = std::min(best.time, horizon_) - now_;
   const Track& other = tracks_[k];
   const double radiusSum = tracks_[i].radius + other.radius;
@@ -190,7 +214,7 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
 }
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
-  Crossing& next = crossings_[i];
+  Crossing& next = predictions_[i].crossing;
   const CellGrid::Coords& c = particles_[i].coords;
   if (straightPaths_) {
     for (int a = 0; a < 3; ++a) {
@@ -215,7 +239,7 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
 }
 
 void EventEngine::schedule(int i) {
-  queue_.set(i, std::min(contacts_[i].time, crossings_[i].time));
+  queue_.set(i, std::min(predictions_[i].contact.time, predictions_[i].crossing.time));
 }
 
 void EventEngine::warnNeighbours(int i) {
@@ -224,8 +248,8 @@ void EventEngine::warnNeighbours(int i) {
     if (particles_[k].resting) return;
     const double t =
         ballBallContactTime(pathAt(k, now_), path, bodies_.radius[i] + bodies_.radius[k], kNever);
-    if (now_ + t < contacts_[k].time) {
-      contacts_[k] = {now_ + t, EventKind::Ball, i, particles_[i].counter};
+    if (now_ + t < predictions_[k].contact.time) {
+      predictions_[k].contact = {now_ + t, EventKind::Ball, i, particles_[i].counter};
       schedule(k);
     }
   });
@@ -234,17 +258,20 @@ void EventEngine::warnNeighbours(int i) {
 void EventEngine::cross(int i, RunStats& stats) {
   ++stats.cellCrossings;
   Particle& p = particles_[i];
-  const Crossing crossing = crossings_[i];
+  const Crossing crossing = predictions_[i].crossing;
   p.coords[crossing.axis] += crossing.direction;
   members_.remove(i);
   p.cell = grid_.index(p.coords);
   members_.insert(i, p.cell);
+  noteStatics(i);
   // The path is unchanged, so the contact already predicted stays valid: only the statics of the
   // new cell and the balls in the layer of cells that just came into reach can bring it forward.
   const BallPath path = pathAt(i, now_);
   findStaticContact(i, path);
   CellGrid::Coords layer = p.coords;
   layer[crossing.axis] += crossing.direction;
+  int cells[9];
+  int cellCount = 0;
   if (layer[crossing.axis] >= 0 && layer[crossing.axis] < grid_.counts()[crossing.axis]) {
     const int u = (crossing.axis + 1) % 3, v = (crossing.axis + 2) % 3;
     for (int du = -1; du <= 1; ++du) {
@@ -255,11 +282,14 @@ void EventEngine::cross(int i, RunStats& stats) {
         if (cell[u] < 0 || cell[u] >= grid_.counts()[u] || cell[v] < 0 ||
             cell[v] >= grid_.counts()[v])
           continue;
-        members_.forEachIn(grid_.index(cell), [&](int k) { findBallContact(i, path, k); });
+        cells[cellCount++] = grid_.index(cell);
       }
     }
   }
-  crossings_[i] = {};
+  findBallContacts(i, path, [&](auto&& visit) {
+    for (int c = 0; c < cellCount; ++c) members_.forEachIn(cells[c], visit);
+  });
+  predictions_[i].crossing = {};
   findCrossing(i, path);
   schedule(i);
 }
@@ -277,11 +307,11 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
 
 void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* log) {
   ++stats.events;
-  if (crossings_[i].time <= contacts_[i].time) {
+  if (predictions_[i].crossing.time <= predictions_[i].contact.time) {
     cross(i, stats);
     return;
   }
-  const Contact event = contacts_[i];
+  const Contact event = predictions_[i].contact;
   switch (event.kind) {
     case EventKind::None:
       schedule(i);
@@ -408,8 +438,8 @@ void EventEngine::putToRest(int i, RunStats& stats) {
   p.resting = true;
   changed(i);
   ++stats.restings;
-  contacts_[i] = {};
-  crossings_[i] = {};
+  predictions_[i].contact = {};
+  predictions_[i].crossing = {};
   schedule(i);
   warnNeighbours(i);
 }
@@ -450,7 +480,7 @@ bool EventEngine::supported(int i) const {
   const double r = bodies_.radius[i];
   const double reach = tolerance::kSupportGapFraction * r;
   std::vector<Vec3> normals;
-  for (int s = staticStart_[p.cell]; s < staticStart_[p.cell + 1]; ++s) {
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
     if (ref.cylinder) {
       const CylinderShape& cylinder = bodies_.cylinders[ref.index];

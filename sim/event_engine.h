@@ -56,6 +56,8 @@ class EventEngine {
   struct Particle {
     CellGrid::Coords coords{};
     int cell = 0;
+    int staticBegin = 0;  // the cell's static shapes in statics_, kept here to save a lookup
+    int staticEnd = 0;
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
@@ -81,11 +83,15 @@ class EventEngine {
 
   void buildGrid(const std::vector<BallState>& state);
   void buildStaticLists();
+  void noteStatics(int i);
   void predictAll();
   // Predicts ball i's next contact and crossing from scratch.
   void predict(int i);
   void findStaticContact(int i, const BallPath& path);
   void findBallContact(int i, const BallPath& path, int k);
+  // Tests every ball that forEachBall(visit) visits.
+  template <typename ForEachBall>
+  void findBallContacts(int i, const BallPath& path, ForEachBall&& forEachBall);
   void findCrossing(int i, const BallPath& path);
   void schedule(int i);
   void cross(int i, RunStats& stats);
@@ -122,8 +128,11 @@ class EventEngine {
   Vec3 zero_ = Vec3::Zero();
   std::vector<Track> tracks_;
   std::vector<Particle> particles_;
-  std::vector<Contact> contacts_;
-  std::vector<Crossing> crossings_;
+  struct Prediction {
+    Contact contact;
+    Crossing crossing;
+  };
+  std::vector<Prediction> predictions_;
   std::vector<double> restSpeed_;
   std::vector<double> burstFlight_;  // a flight shorter than this is negligible (tolerances.h)
   CellGrid grid_;

@@ -263,6 +263,39 @@ class TestMethods : public QObject {
     }
   }
 
+  void scaleDoesNotMatter_data() {
+    QTest::addColumn<double>("scale");
+    for (double scale : {1e-6, 1e-3, 1e3, 1e6}) QTest::addRow("%g", scale) << scale;
+  }
+  void scaleDoesNotMatter() {
+    // The same inelastic scene in millimetres or kilometres: lengths, speeds and gravity scaled
+    // alike, times unchanged. Every contact and rest happens at the same time.
+    QFETCH(double, scale);
+    Scene base = randomScene(21, Vec3(0, -9.81, 0), 30);
+    base.world.restitution = 0.7;
+    Scene scaled = base;
+    scaled.world.gravity *= scale;
+    for (Plane& p : scaled.planes) p.point *= scale;
+    for (Cylinder& c : scaled.cylinders) {
+      c.point *= scale;
+      c.radius *= scale;
+    }
+    for (Ball& b : scaled.balls) {
+      b.position *= scale;
+      b.velocity *= scale;
+      b.radius *= scale;
+    }
+    Simulation a(base), b(scaled);
+    a.advance(3.0);
+    b.advance(3.0);
+    QCOMPARE(a.stats().collisions.total(), b.stats().collisions.total());
+    QCOMPARE(a.stats().restings, b.stats().restings);
+    const std::vector<Vec3> pa = a.positions(), pb = b.positions();
+    for (std::size_t i = 0; i < pa.size(); ++i)
+      QVERIFY2((pb[i] / scale - pa[i]).norm() < 1e-6,
+               qPrintable(QString::number((pb[i] / scale - pa[i]).norm())));
+  }
+
   void switchingMethodsLiveKeepsState() {
     Scene s = randomScene(9, Vec3(0, -9.81, 0), 30);
     Simulation sim(s);
