@@ -88,6 +88,10 @@ void EventEngine::buildStaticLists() {
   const int cells = grid_.cellCount();
   staticStart_.assign(cells + 1, 0);
   statics_.clear();
+  sharedStatics_ = false;
+  // Many shapes in many cells would take more memory than the lists save time: then every cell
+  // shares one list of all shapes.
+  const std::size_t budget = 16 * (particles_.size() + 1024);
   const double reach = bodies_.maxRadius * (1.0 + 1e-9);
   for (int cell = 0; cell < cells; ++cell) {
     staticStart_[cell] = static_cast<int>(statics_.size());
@@ -116,14 +120,23 @@ void EventEngine::buildStaticLists() {
       }
       if (near) statics_.push_back({true, k});
     }
+    if (statics_.size() > budget) {
+      statics_.clear();
+      for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
+        statics_.push_back({false, k});
+      for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
+        statics_.push_back({true, k});
+      sharedStatics_ = true;
+      return;
+    }
   }
   staticStart_[cells] = static_cast<int>(statics_.size());
 }
 
 void EventEngine::noteStatics(int i) {
   Particle& p = particles_[i];
-  p.staticBegin = staticStart_[p.cell];
-  p.staticEnd = staticStart_[p.cell + 1];
+  p.staticBegin = sharedStatics_ ? 0 : staticStart_[p.cell];
+  p.staticEnd = sharedStatics_ ? static_cast<int>(statics_.size()) : staticStart_[p.cell + 1];
 }
 
 void EventEngine::predictAll() {
@@ -507,9 +520,11 @@ void EventEngine::notePenetration(double overlap, RunStats& stats) const {
 
 std::string EventEngine::gridSummary() const {
   const CellGrid::Coords& c = grid_.counts();
-  return "cell grid " + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
-         std::to_string(c[2]) + ", " + std::to_string(statics_.size()) +
-         " static-shape entries in cells";
+  const std::string grid =
+      "cell grid " + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" + std::to_string(c[2]);
+  if (sharedStatics_)
+    return grid + ", all " + std::to_string(statics_.size()) + " static shapes in every cell";
+  return grid + ", " + std::to_string(statics_.size()) + " static-shape entries in cells";
 }
 
 BallState EventEngine::stateOf(int ball) const {

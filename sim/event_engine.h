@@ -138,6 +138,7 @@ class EventEngine {
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell
+  bool sharedStatics_ = false;    // every cell uses all of statics_
   std::vector<StaticRef> statics_;
   EventQueue queue_;
 };

@@ -263,6 +263,39 @@ class TestMethods : public QObject {
     }
   }
 
+  void manyShapesShareOneList() {
+    // 2,500 pegs and a few balls: per-cell shape lists would outgrow their use, so every cell
+    // shares one list. Collisions stay exact.
+    Scene s;
+    s.world.gravity = Vec3(0, -9.81, 0);
+    addBoxWalls(s, 6.0);
+    for (int i = 0; i < 50; ++i)
+      for (int j = 0; j < 50; ++j) {
+        Cylinder peg;
+        peg.point = Vec3(-5.0 + 0.2 * i + 0.1 * (j % 2), -5.0 + 0.2 * j, 0);
+        peg.axis = Vec3(0, 0, 1);
+        peg.radius = 0.01;
+        s.cylinders.push_back(peg);
+      }
+    for (int b = 0; b < 8; ++b)
+      s.balls.push_back(makeBall(Vec3(-4.05 + b, 5.5, 0.3 * b - 1), Vec3(0.3, 0, 0.1), 0.04));
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    bool shared = false;
+    for (const std::string& note : sim.modelNotes())
+      shared = shared || note.find("in every cell") != std::string::npos;
+    QVERIFY(shared);
+    const double e0 = sim.totalEnergy();
+    for (int k = 0; k < 20; ++k) {
+      sim.advance(0.1);
+      const OverlapReport o = measureOverlaps(sim.bodies(), sim.positions());
+      QVERIFY(o.maxPenetration < 1e-9);
+      QCOMPARE(o.escaped, 0);
+    }
+    QVERIFY(sim.stats().collisions.ballCylinder > 20);
+    QVERIFY(std::abs(sim.totalEnergy() - e0) < 1e-9 * std::abs(e0));
+  }
+
   void scaleDoesNotMatter_data() {
     QTest::addColumn<double>("scale");
     for (double scale : {1e-6, 1e-3, 1e3, 1e6}) QTest::addRow("%g", scale) << scale;
