@@ -21,6 +21,16 @@
   QVERIFY2((run).finished && (run).status == QProcess::NormalExit && (run).exitCode == (code), \
            qPrintable((run).describe()))
 
+// Bad input: exit code 2, nothing on stdout, a message of one or two lines on stderr.
+#define VERIFY_REFUSED(run)                                                 \
+  do {                                                                      \
+    VERIFY_EXIT(run, 2);                                                    \
+    QVERIFY2((run).out.isEmpty(), qPrintable((run).describe()));            \
+    QVERIFY2((run).err.endsWith('\n'), qPrintable((run).describe()));       \
+    const qsizetype errLines = (run).err.count('\n');                       \
+    QVERIFY2(errLines >= 1 && errLines <= 2, qPrintable((run).describe())); \
+  } while (false)
+
 namespace {
 
 constexpr int kTimeoutMs = 60000;
@@ -528,11 +538,7 @@ class TestCli : public QObject {
     QFETCH(QStringList, arguments);
     QFETCH(QStringList, message);
     const CliRun run = runCli(arguments);
-    VERIFY_EXIT(run, 2);
-    QVERIFY2(run.out.isEmpty(), qPrintable(run.describe()));
-    QVERIFY2(run.err.endsWith('\n'), qPrintable(run.describe()));
-    const qsizetype lines = run.err.count('\n');
-    QVERIFY2(lines >= 1 && lines <= 2, qPrintable(run.describe()));
+    VERIFY_REFUSED(run);
     for (const QString& part : message)
       QVERIFY2(QString::fromUtf8(run.err).contains(part), qPrintable(part + '\n' + run.describe()));
   }
@@ -636,11 +642,7 @@ class TestCli : public QObject {
     for (const QStringList& arguments :
          {QStringList{"validate", path}, QStringList{"run", path, "--json"}}) {
       const CliRun run = runCli(arguments);
-      VERIFY_EXIT(run, 2);
-      QVERIFY2(run.out.isEmpty(), qPrintable(run.describe()));
-      QVERIFY2(run.err.endsWith('\n'), qPrintable(run.describe()));
-      const qsizetype lines = run.err.count('\n');
-      QVERIFY2(lines >= 1 && lines <= 2, qPrintable(run.describe()));
+      VERIFY_REFUSED(run);
       const QString err = QString::fromUtf8(run.err);
       QVERIFY2(err.contains(path), qPrintable(run.describe()));
       for (const QString& part : message)
