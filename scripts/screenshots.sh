@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Takes the README's screenshots of the running program under Xvfb (Mesa's OpenGL).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mkdir -p docs/screenshots
+shoot() {  # shoot NAME SCENE SECONDS
+  xvfb-run -a -s "-screen 0 1280x1024x24" ./build/app/carom "$2" --run-for "$3" \
+    --screenshot "docs/screenshots/$1.png"
+}
+shoot magic-room resources/scenes/magic-room.json 3
+shoot galton-board resources/scenes/galton-board.json 4
+shoot inelastic-pile resources/scenes/inelastic-pile.json 2

@@ -1,0 +1,160 @@
+// The sandbox window as a user meets it, under a real X server (Xvfb) with Mesa's OpenGL.
+
+#include "main_window.h"
+#include "scene_file.h"
+#include "scene_view.h"
+#include "simulation_controller.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QTest>
+#include <QTimer>
+
+using carom::ui::MainWindow;
+using carom::ui::SimulationSnapshot;
+
+namespace {
+
+carom::Scene magicRoom() {
+  return *carom::loadSceneFile(":/scenes/magic-room.json").scene;
+}
+
+// Waits until the latest snapshot satisfies `ready`; null when it does not within ten seconds.
+template <typename Predicate>
+std::shared_ptr<const SimulationSnapshot> waitForSnapshot(MainWindow& window, Predicate ready) {
+  std::shared_ptr<const SimulationSnapshot> snapshot;
+  const bool reached = QTest::qWaitFor(
+      [&] {
+        snapshot = window.simulation().latest();
+        return snapshot && ready(*snapshot);
+      },
+      10000);
+  return reached ? snapshot : nullptr;
+}
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+  Q_OBJECT
+ public:
+  static void initMain() { carom::render::SceneView::setDefaultFormat(); }
+
+ private slots:
+  void init() {
+    window_ = std::make_unique<MainWindow>();
+    window_->openScene(magicRoom(), "magic-room");
+    window_->resize(1000, 700);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    // No window manager under Xvfb: make the window active ourselves so shortcuts apply.
+    QApplication::setActiveWindow(window_.get());
+    QVERIFY(waitForSnapshot(*window_,
+                            [](const SimulationSnapshot& s) { return s.positions.size() == 10; }));
+  }
+  void cleanup() { window_.reset(); }
+
+  void startsWithTheMagicRoomAndShowsItsBalls() {
+    auto* view = qobject_cast<carom::render::SceneView*>(window_->view());
+    QVERIFY(view);
+    QTRY_VERIFY(window_->framesRendered() > 0);
+    const carom::Scene scene = magicRoom();
+    const QImage frame = view->grabFramebuffer();
+    const double ratio = frame.width() / double(view->width());
+    int matched = 0;
+    for (const carom::Ball& ball : scene.balls) {
+      const QPointF at = view->project(ball.position) * ratio;
+      if (!frame.rect().contains(at.toPoint())) continue;
+      const QColor seen = frame.pixelColor(at.toPoint());
+      const QColor expected(QString::fromStdString(ball.color));
+      // Lighting changes brightness, not hue (grey-ish colours have no stable hue).
+      const int hueDistance = std::abs(seen.hsvHue() - expected.hsvHue());
+      if (expected.hsvSaturation() > 80 && std::min(hueDistance, 360 - hueDistance) < 25) ++matched;
+    }
+    QVERIFY2(matched >= 5, qPrintable(QString("%1 balls seen in their colour").arg(matched)));
+  }
+
+  void spaceRunsAndPausesTheSimulation() {
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    auto moving = waitForSnapshot(
+        *window_, [](const SimulationSnapshot& s) { return s.running && s.time > 0.2; });
+    QVERIFY(moving);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    auto paused = waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return !s.running; });
+    QVERIFY(paused);
+    const double pausedAt = paused->time;
+    QVERIFY(pausedAt >= moving->time);
+    QTest::qWait(300);
+    QCOMPARE(window_->simulation().latest()->time, pausedAt);
+  }
+
+  void stepAndReset() {
+    const double dt = magicRoom().world.timeStep;
+    QTest::keyClick(window_.get(), Qt::Key_S);
+    auto stepped =
+        waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.time > 0; });
+    QVERIFY(stepped);
+    QVERIFY(std::abs(stepped->time - dt) < 1e-12);
+    QTest::keyClick(window_.get(), Qt::Key_S);
+    QVERIFY(waitForSnapshot(
+        *window_, [dt](const SimulationSnapshot& s) { return std::abs(s.time - 2 * dt) < 1e-12; }));
+    QTest::keyClick(window_.get(), Qt::Key_R);
+    auto reset = waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.time == 0; });
+    QVERIFY(reset);
+    const carom::Scene scene = magicRoom();
+    for (std::size_t i = 0; i < scene.balls.size(); ++i)
+      QVERIFY(reset->positions[i] == scene.balls[i].position);
+  }
+
+  void timeStepKeysAndGravityAreLive() {
+    auto* step = window_->findChild<QDoubleSpinBox*>("timeStep");
+    QVERIFY(step);
+    const double before = step->value();
+    QTest::keyClick(window_.get(), Qt::Key_Plus);
+    QTRY_VERIFY(step->value() > before);
+    QVERIFY(waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
+      return std::abs(s.world.timeStep - step->value()) < 1e-12;
+    }));
+    auto* gravityY = window_->findChild<QDoubleSpinBox*>("gravityY");
+    QVERIFY(gravityY);
+    gravityY->setValue(-1.0);
+    QVERIFY(waitForSnapshot(
+        *window_, [](const SimulationSnapshot& s) { return s.world.gravity.y() == -1.0; }));
+  }
+
+  void guiNeverWaitsOnThePhysics() {
+    // The worker is held inside a batch of steps for two seconds; meanwhile the window keeps
+    // handling input and repainting, and its controls respond. A GUI that waited on the worker
+    // would do none of this until the two seconds were over.
+    window_->simulation().stallNextBatch(2.0);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QTest::qWait(100);  // the worker is now stalled
+    int ticks = 0;
+    QTimer ticker;
+    connect(&ticker, &QTimer::timeout, [&] { ++ticks; });
+    ticker.start(10);
+    const int framesBefore = window_->framesRendered();
+    auto* step = window_->findChild<QDoubleSpinBox*>("timeStep");
+    QVERIFY(step);
+    const double stepBefore = step->value();
+    for (int k = 0; k < 4; ++k) {
+      window_->view()->update();
+      QTest::qWait(150);
+    }
+    QTest::keyClick(window_.get(), Qt::Key_Plus);  // input is handled at once
+    QVERIFY(step->value() > stepBefore);
+    QVERIFY2(ticks > 20, qPrintable(QString::number(ticks)));
+    QVERIFY(window_->framesRendered() >= framesBefore + 3);
+    // The stall is not over yet, and afterwards the physics carries on.
+    QVERIFY(window_->simulation().latest()->time < 0.05);
+    QVERIFY(waitForSnapshot(*window_,
+                            [](const SimulationSnapshot& s) { return s.running && s.time > 0.1; }));
+  }
+
+ private:
+  std::unique_ptr<MainWindow> window_;
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"

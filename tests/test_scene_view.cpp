@@ -1,0 +1,401 @@
+// The 3D view: camera math, the static render data, and what actually lands in the framebuffer.
+
+#include "camera.h"
+#include "render_scene.h"
+#include "scene_view.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QSignalSpy>
+#include <QWheelEvent>
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+
+using carom::Vec3;
+using carom::render::Bounds;
+using carom::render::Camera;
+using carom::render::makeRenderScene;
+using carom::render::RenderScene;
+using carom::render::SceneView;
+
+namespace {
+
+enum Channel { Red, Green, Blue };
+
+// Lighting scales a colour and adds a little white, but the ball's own channel stays on top.
+bool hasHue(QRgb pixel, Channel channel) {
+  const int values[3] = {qRed(pixel), qGreen(pixel), qBlue(pixel)};
+  const int own = values[channel];
+  for (int other = 0; other < 3; ++other) {
+    if (other != channel && own < values[other] + 50) return false;
+  }
+  return own >= 80;
+}
+
+bool hasAnyBallHue(QRgb pixel) {
+  return hasHue(pixel, Red) || hasHue(pixel, Green) || hasHue(pixel, Blue);
+}
+
+QString describe(QRgb pixel) {
+  return QStringLiteral("rgb(%1, %2, %3)").arg(qRed(pixel)).arg(qGreen(pixel)).arg(qBlue(pixel));
+}
+
+carom::Ball ball(const Vec3& position, const char* color) {
+  carom::Ball b;
+  b.position = position;
+  b.radius = 0.5;
+  b.color = color;
+  return b;
+}
+
+// A grey floor, a grey post, and three balls in pure red, green and blue side by side.
+carom::Scene testScene() {
+  carom::Scene scene;
+  carom::Plane floor;
+  floor.point = Vec3(0, 0, 0);
+  floor.normal = Vec3(0, 1, 0);
+  floor.color = "#808080";
+  scene.planes.push_back(floor);
+  carom::Cylinder post;
+  post.point = Vec3(2.5, 0, -1.5);
+  post.axis = Vec3(0, 1, 0);
+  post.radius = 0.3;
+  post.color = "#a0a0a0";
+  scene.cylinders.push_back(post);
+  scene.balls.push_back(ball(Vec3(-1.5, 1, 0), "#ff0000"));
+  scene.balls.push_back(ball(Vec3(0, 1, 0), "#00ff00"));
+  scene.balls.push_back(ball(Vec3(1.5, 1, 0), "#0000ff"));
+  return scene;
+}
+
+// The room of resources/scenes/magic-room.json, without its balls' motion.
+carom::Scene magicRoom() {
+  carom::Scene scene;
+  const auto plane = [&](Vec3 point, Vec3 normal) {
+    carom::Plane p;
+    p.point = point;
+    p.normal = normal;
+    scene.planes.push_back(p);
+  };
+  plane(Vec3(0, -3.2, 0), Vec3(0, 1, 0));
+  plane(Vec3(3.2, 0, 0), Vec3(-1, 0, 0));
+  plane(Vec3(-3.2, 0, 0), Vec3(1, 0, 0));
+  plane(Vec3(0, 0, 3.2), Vec3(0, 0, -1));
+  plane(Vec3(0, 0, -3.2), Vec3(0, 0, 1));
+  carom::Cylinder rod;
+  rod.point = Vec3(-2, 0, 0);
+  rod.axis = Vec3(0, 1, 1);
+  rod.radius = 0.3;
+  scene.cylinders.push_back(rod);
+  scene.balls.push_back(ball(Vec3(1.99, 1.8, 0.1), ""));
+  scene.balls.push_back(ball(Vec3(-2.75, 3, -2.5), ""));
+  return scene;
+}
+
+double distanceBetween(const QPointF& a, const QPointF& b) {
+  return std::hypot(a.x() - b.x(), a.y() - b.y());
+}
+
+}  // namespace
+
+class TestSceneView : public QObject {
+  Q_OBJECT
+
+ public:
+  // QtTest calls this before it creates the QApplication.
+  static void initMain() { SceneView::setDefaultFormat(); }
+
+ private slots:
+  void cameraFramePutsCentreInTheMiddle();
+  void cameraOrbitKeepsDistance();
+  void cameraZoomAndPan();
+  void renderSceneClipsToTheRoom();
+  void renderSceneDefaultsColours();
+  void ballsShowTheirColours();
+  void movingABallMovesItsColour();
+  void leftDragOrbits();
+  void wheelZooms();
+  void arrowKeysRotateAndHomeFrames();
+  void followingKeepsTheBallCentred();
+
+ private:
+  struct ShownView {
+    std::unique_ptr<SceneView> view;
+    std::shared_ptr<int> frames = std::make_shared<int>(0);
+  };
+  ShownView showView(const carom::Scene& scene);
+  QRgb pixelAt(SceneView& view, const QImage& image, const Vec3& world);
+};
+
+TestSceneView::ShownView TestSceneView::showView(const carom::Scene& scene) {
+  ShownView shown;
+  shown.view = std::make_unique<SceneView>();
+  auto frames = shown.frames;
+  QObject::connect(shown.view.get(), &SceneView::frameRendered, [frames](double) { ++*frames; });
+  shown.view->resize(640, 480);
+  shown.view->setScene(std::make_shared<const RenderScene>(makeRenderScene(scene)));
+  shown.view->show();
+  if (!QTest::qWaitForWindowExposed(shown.view.get())) qWarning("view was never exposed");
+  return shown;
+}
+
+QRgb TestSceneView::pixelAt(SceneView& view, const QImage& image, const Vec3& world) {
+  const QPointF point = view.project(world) * view.devicePixelRatioF();
+  return image.pixel(qBound(0, qRound(point.x()), image.width() - 1),
+                     qBound(0, qRound(point.y()), image.height() - 1));
+}
+
+void TestSceneView::cameraFramePutsCentreInTheMiddle() {
+  const Bounds bounds{Vec3(-1, 2, -3), Vec3(5, 4, 1)};
+  for (double yaw : {0.0, 0.7, -2.5}) {
+    for (double pitch : {0.0, 0.6, -1.2}) {
+      Camera camera;
+      camera.setAspectRatio(16.0 / 9.0);
+      camera.setYaw(yaw);
+      camera.setPitch(pitch);
+      camera.frame(bounds);
+      const QPointF centre = camera.projectToNdc(bounds.center());
+      QVERIFY2(std::abs(centre.x()) < 1e-4 && std::abs(centre.y()) < 1e-4,
+               qPrintable(QStringLiteral("centre at %1, %2").arg(centre.x()).arg(centre.y())));
+      // Every corner visible, and the box fills the view rather than floating in it.
+      double widest = 0.0;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 point((corner & 1) ? bounds.max.x() : bounds.min.x(),
+                         (corner & 2) ? bounds.max.y() : bounds.min.y(),
+                         (corner & 4) ? bounds.max.z() : bounds.min.z());
+        const QPointF ndc = camera.projectToNdc(point);
+        QVERIFY(std::abs(ndc.x()) <= 1.0 && std::abs(ndc.y()) <= 1.0);
+        widest = std::max({widest, std::abs(ndc.x()), std::abs(ndc.y())});
+      }
+      QVERIFY2(widest > 0.8, qPrintable(QString::number(widest)));
+      QCOMPARE(camera.yaw(), yaw);
+      QCOMPARE(camera.pitch(), pitch);
+    }
+  }
+}
+
+void TestSceneView::cameraOrbitKeepsDistance() {
+  Camera camera;
+  camera.setTarget(QVector3D(1, 2, 3));
+  camera.setDistance(7.5);
+  const double yaw = camera.yaw();
+  const double pitch = camera.pitch();
+  camera.orbit(0.4, -0.3);
+  QVERIFY(std::abs(camera.yaw() - (yaw + 0.4)) < 1e-12);
+  QVERIFY(std::abs(camera.pitch() - (pitch - 0.3)) < 1e-12);
+  QVERIFY(std::abs((camera.eye() - camera.target()).length() - 7.5) < 1e-4);
+  QCOMPARE(camera.distance(), 7.5);
+  // Never over the top: the view would flip.
+  camera.orbit(0.0, 10.0);
+  QCOMPARE(camera.pitch(), Camera::kMaxPitch);
+  QVERIFY(std::abs((camera.eye() - camera.target()).length() - 7.5) < 1e-4);
+}
+
+void TestSceneView::cameraZoomAndPan() {
+  Camera camera;
+  camera.setDistance(10.0);
+  camera.zoom(2.0);
+  QVERIFY(std::abs(camera.distance() - 10.0 * Camera::kZoomFactor * Camera::kZoomFactor) < 1e-9);
+  camera.zoom(-2.0);
+  QVERIFY(std::abs(camera.distance() - 10.0) < 1e-9);
+
+  // Panning by a whole view height moves the old target to the top edge of the view.
+  const QVector3D target = camera.target();
+  camera.pan(0.0, 0.5);
+  QVERIFY((camera.target() - target).length() > 1.0);
+  QCOMPARE(camera.distance(), 10.0);
+  const QPointF old = camera.projectToNdc(Vec3(target.x(), target.y(), target.z()));
+  QVERIFY2(std::abs(old.x()) < 1e-4 && std::abs(old.y() + 1.0) < 1e-3,
+           qPrintable(QStringLiteral("%1, %2").arg(old.x()).arg(old.y())));
+}
+
+void TestSceneView::renderSceneClipsToTheRoom() {
+  const RenderScene scene = makeRenderScene(magicRoom());
+  const Bounds& b = scene.bounds;
+  QCOMPARE(b.min.x(), -3.2);
+  QCOMPARE(b.max.x(), 3.2);
+  QCOMPARE(b.min.z(), -3.2);
+  QCOMPARE(b.max.z(), 3.2);
+  QCOMPARE(b.min.y(), -3.2);
+  QVERIFY(b.max.y() > 3.2 + 0.1 && b.max.y() < 5.0);  // a bit above the highest ball
+
+  QCOMPARE(scene.planes.size(), std::size_t{5});
+  for (const auto& plane : scene.planes) {
+    QCOMPARE(plane.polygon.size(), std::size_t{4});  // each face of the box is a rectangle
+    for (std::size_t i = 0; i < plane.polygon.size(); ++i) {
+      const Vec3& p = plane.polygon[i];
+      QVERIFY(((p - b.min).array() >= -1e-9).all() && ((b.max - p).array() >= -1e-9).all());
+      // Counter-clockwise seen from the normal's side: the room's inside.
+      const Vec3 turn = (plane.polygon[(i + 1) % 4] - p).cross(plane.polygon[(i + 2) % 4] - p);
+      QVERIFY(turn.dot(plane.normal) > 0.0);
+    }
+  }
+  const Vec3 floorSize = scene.planes[0].polygon[2] - scene.planes[0].polygon[0];
+  QVERIFY(std::abs(std::abs(floorSize.x()) - 6.4) < 1e-9);
+  QVERIFY(std::abs(std::abs(floorSize.z()) - 6.4) < 1e-9);
+
+  // The slanted rod runs from the floor at the back to the front wall.
+  QCOMPARE(scene.cylinders.size(), std::size_t{1});
+  const auto& rod = scene.cylinders[0];
+  const Vec3 low = rod.start.y() < rod.end.y() ? rod.start : rod.end;
+  const Vec3 high = rod.start.y() < rod.end.y() ? rod.end : rod.start;
+  QVERIFY((low - Vec3(-2, -3.2, -3.2)).norm() < 1e-9);
+  QVERIFY((high - Vec3(-2, 3.2, 3.2)).norm() < 1e-9);
+
+  // A plane that misses the box has nothing to draw.
+  QVERIFY(carom::render::clipPlaneToBounds(Vec3(0, 50, 0), Vec3(0, 1, 0), b).empty());
+  // A diagonal plane through the centre cuts a hexagon.
+  QCOMPARE(carom::render::clipPlaneToBounds(b.center(), Vec3(1, 1, 1), b).size(), std::size_t{6});
+}
+
+void TestSceneView::renderSceneDefaultsColours() {
+  const RenderScene scene = makeRenderScene(magicRoom());
+  QCOMPARE(scene.ballColors.size(), std::size_t{2});
+  QCOMPARE(scene.ballRadii.size(), std::size_t{2});
+  QVERIFY(scene.ballColors[0].isValid() && scene.ballColors[1].isValid());
+  QVERIFY(scene.ballColors[0] != scene.ballColors[1]);
+  const RenderScene colored = makeRenderScene(testScene());
+  QCOMPARE(colored.ballColors[1], QColor(0, 255, 0));
+  QCOMPARE(colored.planes[0].color, QColor(128, 128, 128));
+}
+
+void TestSceneView::ballsShowTheirColours() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QImage image = view.grabFramebuffer();
+  QVERIFY(!image.isNull());
+  const Channel channels[3] = {Red, Green, Blue};
+  for (int i = 0; i < 3; ++i) {
+    const QRgb pixel = pixelAt(view, image, scene.balls[i].position);
+    QVERIFY2(hasHue(pixel, channels[i]), qPrintable(describe(pixel)));
+  }
+  // Near the top corner there is floor or background, nothing ball-coloured.
+  const QRgb corner = image.pixel(4, 4);
+  QVERIFY2(!hasAnyBallHue(corner), qPrintable(describe(corner)));
+  const QRgb floor = pixelAt(view, image, Vec3(-1.5, 0, 1.5));
+  QVERIFY2(!hasAnyBallHue(floor), qPrintable(describe(floor)));
+}
+
+void TestSceneView::movingABallMovesItsColour() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Vec3 from = scene.balls[0].position;
+  const Vec3 to(0, 1, 1.5);
+  QVERIFY(hasHue(pixelAt(view, view.grabFramebuffer(), from), Red));
+  QVERIFY(!hasHue(pixelAt(view, view.grabFramebuffer(), to), Red));
+
+  const int before = *shown.frames;
+  view.setBallPositions({to, scene.balls[1].position, scene.balls[2].position});
+  QTRY_VERIFY(*shown.frames > before);  // the view asked for a frame by itself
+  const QImage image = view.grabFramebuffer();
+  QVERIFY2(hasHue(pixelAt(view, image, to), Red), qPrintable(describe(pixelAt(view, image, to))));
+  QVERIFY2(!hasHue(pixelAt(view, image, from), Red),
+           qPrintable(describe(pixelAt(view, image, from))));
+}
+
+void TestSceneView::leftDragOrbits() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const double yaw = view.camera().yaw();
+  const double pitch = view.camera().pitch();
+  const QPointF blueBefore = view.project(scene.balls[2].position);
+
+  const QPoint start(320, 240);
+  const QPoint end(400, 200);
+  QTest::mousePress(&view, Qt::LeftButton, Qt::NoModifier, start);
+  QTest::mouseMove(&view, end);
+  QTRY_VERIFY(view.camera().yaw() != yaw);
+  QTest::mouseRelease(&view, Qt::LeftButton, Qt::NoModifier, end);
+  QVERIFY(view.camera().yaw() < yaw);      // dragging right turns the scene right
+  QVERIFY(view.camera().pitch() < pitch);  // dragging up looks from lower
+  QVERIFY(distanceBetween(view.project(scene.balls[2].position), blueBefore) > 5.0);
+
+  // The new view is what gets drawn.
+  const int before = *shown.frames;
+  QTRY_VERIFY(*shown.frames > before);
+  const QImage image = view.grabFramebuffer();
+  QVERIFY(hasHue(pixelAt(view, image, scene.balls[2].position), Blue));
+}
+
+void TestSceneView::wheelZooms() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const double distance = view.camera().distance();
+  const QPointF centre(320, 240);
+  QWheelEvent closer(centre, view.mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                     Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(&view, &closer);
+  QVERIFY(std::abs(view.camera().distance() - distance * Camera::kZoomFactor) < 1e-9);
+  QWheelEvent away(centre, view.mapToGlobal(centre), QPoint(), QPoint(0, -240), Qt::NoButton,
+                   Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(&view, &away);
+  QVERIFY(view.camera().distance() > distance);
+}
+
+void TestSceneView::arrowKeysRotateAndHomeFrames() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Camera home = view.camera();
+
+  QTest::keyClick(&view, Qt::Key_Left);
+  QVERIFY(std::abs(view.camera().yaw() - (home.yaw() + Camera::kKeyStep)) < 1e-9);
+  QTest::keyClick(&view, Qt::Key_Right);
+  QTest::keyClick(&view, Qt::Key_Right);
+  QVERIFY(std::abs(view.camera().yaw() - (home.yaw() - Camera::kKeyStep)) < 1e-9);
+  QTest::keyClick(&view, Qt::Key_Up);
+  QVERIFY(std::abs(view.camera().pitch() - (home.pitch() + Camera::kKeyStep)) < 1e-9);
+  QTest::keyClick(&view, Qt::Key_Down);
+  QTest::keyClick(&view, Qt::Key_Down);
+  QVERIFY(std::abs(view.camera().pitch() - (home.pitch() - Camera::kKeyStep)) < 1e-9);
+
+  view.camera().zoom(-3);
+  view.camera().pan(0.3, 0.1);
+  QTest::keyClick(&view, Qt::Key_Home);
+  QCOMPARE(view.camera().yaw(), Camera::kDefaultYaw);
+  QCOMPARE(view.camera().pitch(), Camera::kDefaultPitch);
+  QVERIFY(std::abs(view.camera().distance() - home.distance()) < 1e-9);
+  const QPointF centre = view.project(view.scene()->bounds.center());
+  QVERIFY(distanceBetween(centre, QPointF(320, 240)) < 0.5);
+}
+
+void TestSceneView::followingKeepsTheBallCentred() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  QSignalSpy changes(&view, &SceneView::followedBallChanged);
+  view.setFollowedBall(1);
+  QCOMPARE(view.followedBall(), 1);
+  QCOMPARE(changes.count(), 1);
+
+  const QPointF middle(320, 240);
+  std::vector<Vec3> positions = {scene.balls[0].position, Vec3(-2, 1.5, 1.5),
+                                 scene.balls[2].position};
+  view.setBallPositions(positions);
+  QVERIFY(distanceBetween(view.project(positions[1]), middle) < 0.5);
+  const int before = *shown.frames;
+  QTRY_VERIFY(*shown.frames > before);
+  const QImage image = view.grabFramebuffer();
+  const QRgb centrePixel = image.pixel(image.width() / 2, image.height() / 2);
+  QVERIFY2(hasHue(centrePixel, Green), qPrintable(describe(centrePixel)));
+
+  // Once released, the camera stays where it was.
+  view.setFollowedBall(-1);
+  positions[1] = Vec3(2, 0.5, -1);
+  view.setBallPositions(positions);
+  QVERIFY(distanceBetween(view.project(positions[1]), middle) > 20.0);
+}
+
+QTEST_MAIN(TestSceneView)
+#include "test_scene_view.moc"

@@ -1,0 +1,104 @@
+#pragma once
+// The 3D view of a running scene: OpenGL 3.3 core, all balls in one instanced draw call of
+// ray-cast spheres.
+
+#include "camera.h"
+#include "render_scene.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLWidget>
+#include <QPoint>
+
+#include <memory>
+#include <vector>
+
+class QOpenGLShaderProgram;
+
+namespace carom::render {
+
+class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+  Q_OBJECT
+
+ public:
+  explicit SceneView(QWidget* parent = nullptr);
+  ~SceneView() override;
+
+  // OpenGL 3.3 core for every GL surface; call before QApplication exists. Each view itself
+  // renders with 4x multisampling.
+  static void setDefaultFormat();
+
+  // The first scene set also places the camera (Camera::home); later ones keep it.
+  void setScene(std::shared_ptr<const RenderScene> scene);
+  std::shared_ptr<const RenderScene> scene() const { return scene_; }
+  // One position per ball of the scene, in its order; schedules a repaint.
+  void setBallPositions(std::vector<Vec3> positions);
+  const std::vector<Vec3>& ballPositions() const { return ballPositions_; }
+
+  // Whoever changes the camera calls update(). Taking it for writing also stops the view from
+  // re-framing the scene on resize, which it does only until someone moves the camera.
+  Camera& camera();
+  const Camera& camera() const { return camera_; }
+  // Widget coordinates (device-independent pixels) of a world point.
+  QPointF project(const Vec3& world) const;
+
+  // The camera target tracks this ball; -1 stops. Panning or Home stop it too.
+  void setFollowedBall(int index);
+  int followedBall() const { return followedBall_; }
+
+ public slots:
+  // Home: the default direction, framing the scene's bounds.
+  void frameScene();
+
+ signals:
+  // After each paintGL, with how long it took including the GPU's work.
+  void frameRendered(double milliseconds);
+  void followedBallChanged(int index);
+
+ protected:
+  void initializeGL() override;
+  void paintGL() override;
+  void resizeEvent(QResizeEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+
+ private:
+  void releaseGl();
+  void createCylinderMesh();
+  void uploadStaticData();
+  void uploadBallPositions();
+  void followBall();
+  void userMovedCamera();
+
+  std::shared_ptr<const RenderScene> scene_;
+  std::vector<Vec3> ballPositions_;
+  Camera camera_;
+  int followedBall_ = -1;
+  bool autoFrame_ = true;
+  QPoint lastMousePosition_;
+
+  // GL state, valid between initializeGL and releaseGl.
+  bool glReady_ = false;
+  bool staticDataDirty_ = true;
+  bool positionsDirty_ = true;
+  std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
+  std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
+  std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
+  GLuint ballVao_ = 0;
+  GLuint planeVao_ = 0;
+  GLuint cylinderVao_ = 0;
+  GLuint ballCornerBuffer_ = 0;
+  GLuint ballPositionBuffer_ = 0;
+  GLuint ballAttributeBuffer_ = 0;
+  GLuint planeVertexBuffer_ = 0;
+  GLuint cylinderVertexBuffer_ = 0;
+  GLuint cylinderInstanceBuffer_ = 0;
+  int planeVertexCount_ = 0;
+  int cylinderVertexCount_ = 0;
+  int cylinderInstanceCount_ = 0;
+  int uploadedBallCount_ = 0;
+};
+
+}  // namespace carom::render

@@ -1,0 +1,154 @@
+#include "simulation_worker.h"
+
+#include "simulation.h"
+
+#include <QThread>
+#include <QTimer>
+
+#include <algorithm>
+
+namespace carom::ui {
+namespace {
+
+// The worker wakes this often; each wake does at most a budget of work so that it stays
+// responsive to the GUI's requests.
+constexpr int kTickMilliseconds = 8;
+constexpr double kWorkBudgetSeconds = 0.025;
+// When the physics falls further behind than this, the backlog is dropped: simulated time then
+// runs slower than asked, and the status bar says so, instead of jumping.
+constexpr double kMaxBacklogSeconds = 0.25;
+// The explosion and sound queue is capped; the view and the speakers could not use more.
+constexpr std::size_t kMaxPendingCollisions = 4096;
+
+}  // namespace
+
+SimulationWorker::SimulationWorker(SnapshotExchange& exchange, QObject* parent)
+    : QObject(parent), exchange_(exchange) {}
+
+SimulationWorker::~SimulationWorker() = default;
+
+void SimulationWorker::loadScene(const carom::Scene& scene) {
+  scene_ = scene;
+  reset();
+}
+
+void SimulationWorker::reset() {
+  simulation_ = std::make_unique<Simulation>(scene_);
+  simulation_->setCollisionLog(true);
+  initialEnergy_ = simulation_->totalEnergy();
+  owed_ = 0.0;
+  fallingBehind_ = false;
+  if (!timer_) {
+    timer_ = new QTimer(this);  // created here so that it lives on the worker's thread
+    timer_->setTimerType(Qt::PreciseTimer);
+    connect(timer_, &QTimer::timeout, this, &SimulationWorker::tick);
+    timer_->start(kTickMilliseconds);
+    clock_.start();
+  }
+  publish();
+}
+
+void SimulationWorker::setRunning(bool running) {
+  running_ = running;
+  owed_ = 0.0;
+  factorSimulated_ = factorReal_ = 0.0;
+  clock_.restart();
+  publish();
+}
+
+void SimulationWorker::stepOnce() {
+  if (!simulation_) return;
+  running_ = false;
+  simulation_->step();
+  publish();
+}
+
+void SimulationWorker::setSpeed(double factor) {
+  speed_ = std::max(0.0, factor);
+}
+
+void SimulationWorker::setGravity(const carom::Vec3& gravity) {
+  if (!simulation_) return;
+  scene_.world.gravity = gravity;
+  simulation_->setGravity(gravity);
+  initialEnergy_ = simulation_->totalEnergy();  // energy is measured against the new field
+  publish();
+}
+
+void SimulationWorker::setTimeStep(double seconds) {
+  if (!simulation_) return;
+  scene_.world.timeStep = seconds;
+  simulation_->setTimeStep(seconds);
+  publish();
+}
+
+void SimulationWorker::setMethod(carom::Method method) {
+  if (!simulation_) return;
+  scene_.world.method = method;
+  simulation_->setMethod(method);
+  publish();
+}
+
+void SimulationWorker::setIntegrator(carom::Integrator integrator) {
+  if (!simulation_) return;
+  scene_.world.integrator = integrator;
+  simulation_->setIntegrator(integrator);
+  publish();
+}
+
+void SimulationWorker::stallNextBatch(double seconds) {
+  stall_ = seconds;
+}
+
+void SimulationWorker::tick() {
+  const double elapsed = clock_.nsecsElapsed() * 1e-9;
+  clock_.restart();
+  if (!running_ || !simulation_) return;
+  if (stall_ > 0.0) {
+    QThread::usleep(static_cast<unsigned long>(stall_ * 1e6));
+    stall_ = 0.0;
+  }
+  owed_ += elapsed * speed_;
+  QElapsedTimer work;
+  work.start();
+  const double before = simulation_->time();
+  const double dt = simulation_->world().timeStep;
+  // Whole steps, so that swept and discrete runs do not depend on the frame rate.
+  while (owed_ >= dt && work.nsecsElapsed() * 1e-9 < kWorkBudgetSeconds) {
+    simulation_->step();
+    owed_ -= dt;
+  }
+  fallingBehind_ = owed_ > kMaxBacklogSeconds * std::max(speed_, 1e-9) + dt;
+  if (fallingBehind_) owed_ = 0.0;
+  // Averaged over about half a second, so the figure does not flicker with each batch.
+  factorSimulated_ += simulation_->time() - before;
+  factorReal_ += elapsed;
+  if (factorReal_ >= 0.5) {
+    lastRealTimeFactor_ = factorSimulated_ / factorReal_;
+    factorSimulated_ = factorReal_ = 0.0;
+  }
+  publish();
+}
+
+void SimulationWorker::publish() {
+  if (!simulation_) return;
+  auto snapshot = std::make_shared<SimulationSnapshot>();
+  snapshot->time = simulation_->time();
+  snapshot->positions = simulation_->positions();
+  std::vector<CollisionRecord> fresh = simulation_->takeCollisions();
+  if (fresh.size() > kMaxPendingCollisions)
+    fresh.erase(fresh.begin(), fresh.end() - kMaxPendingCollisions);
+  snapshot->collisions = std::move(fresh);
+  snapshot->kineticEnergy = simulation_->kineticEnergy();
+  snapshot->potentialEnergy = simulation_->potentialEnergy();
+  snapshot->initialEnergy = initialEnergy_;
+  snapshot->stats = simulation_->stats();
+  snapshot->world = simulation_->world();
+  snapshot->running = running_;
+  snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
+  snapshot->fallingBehind = running_ && fallingBehind_;
+  exchange_.publish(std::move(snapshot));
+  emit snapshotPublished();
+}
+
+}  // namespace carom::ui

@@ -1,0 +1,65 @@
+#pragma once
+// Runs the physics on its own thread. The worker lives in a QThread; the GUI talks to it only
+// through queued calls (SimulationController) and reads its results from the SnapshotExchange,
+// so the GUI never waits on the physics and the worker never touches a widget.
+
+#include "scene.h"
+#include "simulation_snapshot.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+#include <memory>
+
+class QTimer;
+
+namespace carom {
+class Simulation;
+}
+
+namespace carom::ui {
+
+class SimulationWorker : public QObject {
+  Q_OBJECT
+ public:
+  explicit SimulationWorker(SnapshotExchange& exchange, QObject* parent = nullptr);
+  ~SimulationWorker() override;
+
+  // Replaces the scene (already validated) and stands at its start, paused.
+  void loadScene(const carom::Scene& scene);
+  void setRunning(bool running);
+  void stepOnce();
+  void reset();
+  void setSpeed(double factor);  // simulated seconds per real second
+  void setGravity(const carom::Vec3& gravity);
+  void setTimeStep(double seconds);
+  void setMethod(carom::Method method);
+  void setIntegrator(carom::Integrator integrator);
+  // Test hook: the next batch of steps stalls for this long, as a very slow step would.
+  void stallNextBatch(double seconds);
+
+ signals:
+  // A new snapshot is in the exchange (at most one per batch of steps).
+  void snapshotPublished();
+
+ private:
+  void tick();
+  void publish();
+
+  SnapshotExchange& exchange_;
+  Scene scene_;
+  std::unique_ptr<Simulation> simulation_;
+  QTimer* timer_ = nullptr;
+  QElapsedTimer clock_;
+  bool running_ = false;
+  double speed_ = 1.0;
+  double owed_ = 0.0;  // simulated time the physics is behind real time
+  double initialEnergy_ = 0.0;
+  double lastRealTimeFactor_ = 0.0;
+  double factorSimulated_ = 0.0;  // simulated and real time since the factor was last taken
+  double factorReal_ = 0.0;
+  bool fallingBehind_ = false;
+  double stall_ = 0.0;
+};
+
+}  // namespace carom::ui
