@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Carom needs to build and test; installs nothing already present.
 set -euo pipefail
-packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev libeigen3-dev
+packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev libeigen3-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0)
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 // The sandbox window as a user meets it, under a real X server (Xvfb) with Mesa's OpenGL.
 
+#include "energy_plot.h"
 #include "main_window.h"
 #include "scene_file.h"
 #include "scene_view.h"
@@ -121,6 +122,15 @@ class TestMainWindow : public QObject {
     gravityY->setValue(-1.0);
     QVERIFY(waitForSnapshot(
         *window_, [](const SimulationSnapshot& s) { return s.world.gravity.y() == -1.0; }));
+  }
+
+  void energyPlotFollowsTheRun() {
+    carom::ui::EnergyPlot* plot = window_->energyPlot();
+    QVERIFY(plot && plot->isVisible());
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() > 20, 10000);
+    QTest::keyClick(window_.get(), Qt::Key_R);  // a reset starts the plot over
+    QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() <= 1, 10000);
   }
 
   void guiNeverWaitsOnThePhysics() {

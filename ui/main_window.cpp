@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "energy_plot.h"
+
 #include "render_scene.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
@@ -8,6 +10,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenuBar>
@@ -42,6 +45,11 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), simulation_(std::make_unique<SimulationController>()) {
   view_ = new SceneView;
   setCentralWidget(view_);
+  energyPlot_ = new EnergyPlot;
+  auto* energyDock = new QDockWidget(tr("Energy"), this);
+  energyDock->setObjectName("energyDock");
+  energyDock->setWidget(energyPlot_);
+  addDockWidget(Qt::RightDockWidgetArea, energyDock);
   status_ = new QLabel;
   statusBar()->addWidget(status_, 1);
   buildActions();
@@ -181,6 +189,8 @@ void MainWindow::buildMenus() {
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
   viewMenu->addActions({followAction_, fullScreenAction_});
+  viewMenu->addSeparator();
+  viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
 }
 
 void MainWindow::openScene(const carom::Scene& scene, const QString& title) {
@@ -196,6 +206,7 @@ void MainWindow::openScene(const carom::Scene& scene, const QString& title) {
   timeStep_->setValue(scene.world.timeStep);
   method_->setCurrentIndex(int(scene.world.method));
   integrator_->setCurrentIndex(int(scene.world.integrator));
+  energyPlot_->clear();
   simulation_->loadScene(scene);
   simulation_->setSpeed(speed_->value());
   lastCollisionCount_ = 0;
@@ -219,6 +230,7 @@ void MainWindow::showSnapshot() {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
   if (!snapshot) return;
   view_->setBallPositions(snapshot->positions);
+  energyPlot_->add(*snapshot);
   const std::uint64_t collisions = snapshot->stats.collisions.total();
   if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
     lastCollisionTime_ = snapshot->time;  // after a reset

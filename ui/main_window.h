@@ -16,6 +16,7 @@ class QLabel;
 
 namespace carom::ui {
 
+class EnergyPlot;
 class SimulationController;
 }  // namespace carom::ui
 namespace carom::render {
@@ -36,6 +37,7 @@ class MainWindow : public QMainWindow {
   // As the Run/Pause control does.
   void setRunning(bool running);
   QWidget* view() const;
+  EnergyPlot* energyPlot() const { return energyPlot_; }
   // Frames drawn and snapshots shown so far (for the status line and tests).
   int framesRendered() const { return framesRendered_; }
 
@@ -49,6 +51,7 @@ class MainWindow : public QMainWindow {
 
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
+  EnergyPlot* energyPlot_ = nullptr;
   carom::Scene scene_;
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;

@@ -1,0 +1,36 @@
+#pragma once
+// A live plot of kinetic, potential and total energy over simulated time, fed from snapshots.
+
+#include <QWidget>
+
+class QChart;
+class QLineSeries;
+class QValueAxis;
+
+namespace carom::ui {
+
+struct SimulationSnapshot;
+
+class EnergyPlot : public QWidget {
+  Q_OBJECT
+ public:
+  explicit EnergyPlot(QWidget* parent = nullptr);
+
+  // Adds the snapshot's energies; a snapshot earlier than the last one (a reset) starts over.
+  void add(const SimulationSnapshot& snapshot);
+  void clear();
+  int pointCount() const;
+
+ private:
+  QChart* chart_;
+  QLineSeries* kinetic_;
+  QLineSeries* potential_;
+  QLineSeries* total_;
+  QValueAxis* timeAxis_;
+  QValueAxis* energyAxis_;
+  double lastTime_ = -1.0;
+  double low_ = 0.0;
+  double high_ = 0.0;
+};
+
+}  // namespace carom::ui
