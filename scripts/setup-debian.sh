@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages Carom needs to build and test; installs nothing already present.
 set -euo pipefail
 packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev libeigen3-dev
-  xvfb xauth libgl1-mesa-dri libglx-mesa0)
+  qt6-multimedia-dev pulseaudio pulseaudio-utils xvfb xauth libgl1-mesa-dri libglx-mesa0)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

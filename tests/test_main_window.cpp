@@ -5,6 +5,7 @@
 #include "scene_file.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
+#include "sound_board.h"
 
 #include <QAction>
 #include <QApplication>
@@ -122,6 +123,16 @@ class TestMainWindow : public QObject {
     gravityY->setValue(-1.0);
     QVERIFY(waitForSnapshot(
         *window_, [](const SimulationSnapshot& s) { return s.world.gravity.y() == -1.0; }));
+  }
+
+  void withoutAudioTheStatusBarSaysSo() {
+    // This test runs with no sound server (see tests/CMakeLists.txt): the program carries on
+    // and says sound is unavailable; F3 still toggles mute.
+    QVERIFY(!window_->sound().available());
+    QTest::keyClick(window_.get(), Qt::Key_S);
+    QTRY_VERIFY(window_->statusText().contains("sound unavailable"));
+    QTest::keyClick(window_.get(), Qt::Key_F3);
+    QVERIFY(window_->sound().muted());
   }
 
   void energyPlotFollowsTheRun() {

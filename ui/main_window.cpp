@@ -5,6 +5,7 @@
 #include "render_scene.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
+#include "sound_board.h"
 
 #include <QAction>
 #include <QApplication>
@@ -52,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::RightDockWidgetArea, energyDock);
   status_ = new QLabel;
   statusBar()->addWidget(status_, 1);
+  sound_ = new SoundBoard(this);
   buildActions();
   buildToolBar();
   buildMenus();
@@ -74,6 +76,10 @@ MainWindow::~MainWindow() = default;
 
 QWidget* MainWindow::view() const {
   return view_;
+}
+
+QString MainWindow::statusText() const {
+  return status_->text();
 }
 
 void MainWindow::buildActions() {
@@ -113,6 +119,11 @@ void MainWindow::buildActions() {
   followAction_->setCheckable(true);
   connect(followAction_, &QAction::toggled, this,
           [this](bool on) { view_->setFollowedBall(on && !scene_.balls.empty() ? 0 : -1); });
+
+  muteAction_ = new QAction(tr("&Mute"), this);
+  muteAction_->setShortcut(Qt::Key_F3);
+  muteAction_->setCheckable(true);
+  connect(muteAction_, &QAction::toggled, this, [this](bool on) { sound_->setMuted(on); });
 
   auto* faster = new QAction(tr("Larger Time Step"), this);
   faster->setShortcuts({Qt::Key_Plus, Qt::Key_Equal});
@@ -188,7 +199,7 @@ void MainWindow::buildMenus() {
   }
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-  viewMenu->addActions({followAction_, fullScreenAction_});
+  viewMenu->addActions({followAction_, fullScreenAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
 }
@@ -231,6 +242,7 @@ void MainWindow::showSnapshot() {
   if (!snapshot) return;
   view_->setBallPositions(snapshot->positions);
   energyPlot_->add(*snapshot);
+  sound_->play(snapshot->collisions);
   const std::uint64_t collisions = snapshot->stats.collisions.total();
   if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
     lastCollisionTime_ = snapshot->time;  // after a reset
@@ -254,6 +266,10 @@ void MainWindow::showSnapshot() {
                      .arg(snapshot->positions.size())
                      .arg(energy, 0, 'g', 6)
                      .arg(drift, 0, 'e', 1);
+  if (!sound_->available())
+    line += tr("   sound unavailable");
+  else if (sound_->muted())
+    line += tr("   muted");
   if (snapshot->fallingBehind) line += tr("   — the physics cannot keep up; running slower");
   status_->setText(line);
 }

@@ -19,6 +19,9 @@ namespace carom::ui {
 class EnergyPlot;
 class SimulationController;
 }  // namespace carom::ui
+namespace carom {
+class SoundBoard;
+}
 namespace carom::render {
 class SceneView;
 }
@@ -38,6 +41,8 @@ class MainWindow : public QMainWindow {
   void setRunning(bool running);
   QWidget* view() const;
   EnergyPlot* energyPlot() const { return energyPlot_; }
+  SoundBoard& sound() { return *sound_; }
+  QString statusText() const;
   // Frames drawn and snapshots shown so far (for the status line and tests).
   int framesRendered() const { return framesRendered_; }
 
@@ -52,6 +57,8 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
+  SoundBoard* sound_ = nullptr;
+  QAction* muteAction_ = nullptr;
   carom::Scene scene_;
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;

@@ -1,0 +1,256 @@
+// SoundBoard against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
+
+#include "sound_board.h"
+
+#include <QProcess>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+using carom::CollisionRecord;
+using carom::ContactKind;
+using carom::SoundBoard;
+
+namespace {
+
+CollisionRecord hit(ContactKind kind, double speed) {
+  CollisionRecord c;
+  c.kind = kind;
+  c.normalSpeed = speed;
+  return c;
+}
+
+// Records the null sink's monitor with parec: what the sound server actually mixed.
+class Recorder {
+ public:
+  bool start() {
+    parec_.setProgram(QStringLiteral("parec"));
+    parec_.setArguments({"-d", "ci.monitor", "--format=s16le", "--rate=44100", "--channels=1",
+                         "--raw", "--latency-msec=20"});
+    parec_.start();
+    if (!parec_.waitForStarted(5000)) return false;
+    // The stream is connected once the first samples arrive (the idle null sink still sends
+    // silence); sounds played before then would be missed.
+    QElapsedTimer waited;
+    waited.start();
+    while (bytes() < 4410 && waited.elapsed() < 10000) QTest::qWait(10);
+    return bytes() >= 4410;
+  }
+  qsizetype bytes() {
+    data_ += parec_.readAllStandardOutput();
+    return data_.size();
+  }
+  int peak() {
+    bytes();
+    int top = 0;
+    for (qsizetype i = 0; i + 1 < data_.size(); i += 2) {
+      std::int16_t s;
+      std::memcpy(&s, data_.constData() + i, 2);
+      top = std::max(top, std::abs(static_cast<int>(s)));
+    }
+    return top;
+  }
+  void stop() {
+    bytes();
+    parec_.terminate();
+    if (!parec_.waitForFinished(3000)) parec_.kill();
+    data_ += parec_.readAllStandardOutput();
+  }
+  ~Recorder() {
+    if (parec_.state() != QProcess::NotRunning) stop();
+  }
+
+ private:
+  QProcess parec_;
+  QByteArray data_;
+};
+
+// Well above dither or rounding noise, well below a sound played at even a tenth of volume.
+constexpr int kSilencePeak = 200;
+constexpr int kSoundPeak = 1000;
+
+}  // namespace
+
+class TestSound : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase() {
+    if (qEnvironmentVariableIsSet("CAROM_SOUND_CHILD")) return;
+    QVERIFY2(qEnvironmentVariableIsSet("PULSE_SERVER"),
+             "run under scripts/with-pulseaudio.sh, which provides the null sink 'ci'");
+  }
+
+  void volumeRisesWithImpactSpeed() {
+    const double ref = 2.0;
+    QCOMPARE(carom::volumeForSpeed(0.0, ref), 0.0);
+    QCOMPARE(carom::volumeForSpeed(-1.0, ref), 0.0);
+    QCOMPARE(carom::volumeForSpeed(std::nan(""), ref), 0.0);
+    QCOMPARE(carom::volumeForSpeed(ref, ref), 0.5);
+    double previous = 0.0;
+    for (double speed : {0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 20.0, 1e6}) {
+      const double v = carom::volumeForSpeed(speed, ref);
+      QVERIFY2(v > previous, qPrintable(QString("not louder at %1 m/s").arg(speed)));
+      QVERIFY(v <= 1.0);
+      previous = v;
+    }
+    // A larger reference makes the same impact quieter.
+    QVERIFY(carom::volumeForSpeed(1.0, 4.0) < carom::volumeForSpeed(1.0, 1.0));
+  }
+
+  void availableWithServer() {
+    SoundBoard board;
+    QVERIFY(board.available());
+  }
+
+  void silentWithoutPlay() {
+    SoundBoard board;
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    QTest::qWait(1000);
+    recorder.stop();
+    QVERIFY2(recorder.peak() <= kSilencePeak, qPrintable(QString::number(recorder.peak())));
+    QCOMPARE(board.playedCount(), 0);
+  }
+
+  void playReachesTheServer() {
+    SoundBoard board;
+    QVERIFY(board.available());
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    board.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallPlane, 3.0)});
+    QCOMPARE(board.playedCount(), 2);
+    QCOMPARE(board.droppedCount(), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(recorder.peak() > kSoundPeak, 5000);
+    QTest::qWait(500);  // the rest of both sounds, for the peak in the log
+    recorder.stop();
+    qInfo("recorded peak %d of 32767", recorder.peak());
+  }
+
+  // One clack at a known volume arrives whole: not clipped, and with its attack (the loudest
+  // part, which a fresh PulseAudio stream tends to swallow) intact.
+  void clackArrivesAtItsVolume() {
+    QFile wav(QStringLiteral(":/sounds/ball-ball.wav"));
+    QVERIFY(wav.open(QIODevice::ReadOnly));
+    const QByteArray pcm = wav.readAll().mid(44);  // 16-bit mono PCM after a plain header
+    int filePeak = 0;
+    for (qsizetype i = 0; i + 1 < pcm.size(); i += 2) {
+      std::int16_t s;
+      std::memcpy(&s, pcm.constData() + i, 2);
+      filePeak = std::max(filePeak, std::abs(static_cast<int>(s)));
+    }
+    QVERIFY(filePeak > 10000);
+
+    SoundBoard board;
+    const double speed = board.settings().referenceSpeed;
+    const double expected = filePeak * board.settings().masterVolume *
+                            carom::volumeForSpeed(speed, board.settings().referenceSpeed);
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    board.play({hit(ContactKind::BallBall, speed)});
+    QTRY_VERIFY_WITH_TIMEOUT(recorder.peak() > kSoundPeak, 5000);
+    QTest::qWait(500);
+    recorder.stop();
+    qInfo("clack peak %d, expected %.0f", recorder.peak(), expected);
+    QVERIFY(recorder.peak() > 0.7 * expected);
+    QVERIFY(recorder.peak() < 1.1 * expected);
+  }
+
+  void mutedPlaysNothing() {
+    SoundBoard board;
+    board.setMuted(true);
+    QVERIFY(board.muted());
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    board.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallCylinder, 3.0)});
+    QTest::qWait(1000);
+    recorder.stop();
+    QCOMPARE(board.playedCount(), 0);
+    QVERIFY2(recorder.peak() <= kSilencePeak, qPrintable(QString::number(recorder.peak())));
+  }
+
+  void thousandInOneFrameAreLimited() {
+    SoundBoard board;
+    std::vector<CollisionRecord> frame;
+    for (int i = 0; i < 1000; ++i)
+      frame.push_back(hit(i % 3 == 0 ? ContactKind::BallBall : ContactKind::BallPlane, 1.0 + i));
+    board.play(frame);
+    QVERIFY(board.playedCount() >= 1);
+    QVERIFY(board.playedCount() <= board.settings().maxPerSecond);
+    QCOMPARE(board.playedCount() + board.droppedCount(), 1000);
+  }
+
+  void rateLimitOverTime() {
+    SoundBoard::Settings settings;
+    settings.maxPerSecond = 30;
+    settings.minimumGapMs = 15;
+    settings.voicesPerSound = 40;  // enough that voices never run out before the limit
+    SoundBoard board(settings);
+    QVERIFY(board.available());
+    // One collision a millisecond for a second of board time, alternating kinds.
+    for (int t = 0; t < 1000; ++t)
+      board.playAt({hit(t % 2 ? ContactKind::BallBall : ContactKind::BallPlane, 2.0)}, t);
+    QCOMPARE(board.playedCount(), 30);
+    QCOMPARE(board.droppedCount(), 970);
+    // The window slides: a second later there is room again.
+    board.playAt({hit(ContactKind::BallBall, 2.0)}, 2500);
+    QCOMPARE(board.playedCount(), 31);
+  }
+
+  void sameSoundKeepsAGap() {
+    SoundBoard board;
+    board.playAt({hit(ContactKind::BallBall, 2.0)}, 100);
+    board.playAt({hit(ContactKind::BallBall, 2.0)}, 105);   // too soon after the last clack
+    board.playAt({hit(ContactKind::BallPlane, 2.0)}, 106);  // another sound: allowed
+    QCOMPARE(board.playedCount(), 2);
+    QCOMPARE(board.droppedCount(), 1);
+    board.playAt({hit(ContactKind::BallBall, 2.0)}, 100 + board.settings().minimumGapMs);
+    QCOMPARE(board.playedCount(), 3);
+  }
+
+  void tooSoftIsSilent() {
+    SoundBoard board;
+    board.play({hit(ContactKind::BallBall, board.settings().minimumSpeed / 2)});
+    QCOMPARE(board.playedCount(), 0);
+    QCOMPARE(board.droppedCount(), 1);
+  }
+
+  // The audio backend picks its server once per process, so the board without a server runs
+  // in a child process: this same test program, running only noServerChild.
+  void noServer() {
+    QProcess child;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("CAROM_SOUND_CHILD", "1");
+    env.insert("PULSE_SERVER", "unix:/nonexistent/carom-no-pulse/native");
+    child.setProcessEnvironment(env);
+    child.setProcessChannelMode(QProcess::MergedChannels);
+    child.start(QCoreApplication::applicationFilePath(), {"noServerChild"});
+    QVERIFY(child.waitForFinished(60000));
+    const QByteArray out = child.readAll();
+    QVERIFY2(child.exitStatus() == QProcess::NormalExit && child.exitCode() == 0, out.constData());
+    QVERIFY2(out.contains("PASS   : TestSound::noServerChild()"), out.constData());
+  }
+
+  void noServerChild() {
+    if (!qEnvironmentVariableIsSet("CAROM_SOUND_CHILD")) QSKIP("runs in noServer's child");
+    SoundBoard board;
+    QSignalSpy changed(&board, &SoundBoard::availabilityChanged);
+    QVERIFY(!board.available());
+    std::vector<CollisionRecord> frame(1000, hit(ContactKind::BallBall, 3.0));
+    board.play(frame);
+    // Nothing was attempted, not even counted: play() returned before touching any voice.
+    QCOMPARE(board.playedCount(), 0);
+    QCOMPARE(board.droppedCount(), 0);
+    QTest::qWait(300);  // nor does it turn available once events are processed
+    QVERIFY(!board.available());
+    QCOMPARE(changed.count(), 0);
+  }
+};
+
+// No window: QCoreApplication, so the test needs no display (Multimedia pulls in Qt GUI).
+QTEST_GUILESS_MAIN(TestSound)
+#include "test_sound.moc"
