@@ -1,5 +1,6 @@
 // The sandbox window as a user meets it, under a real X server (Xvfb) with Mesa's OpenGL.
 
+#include "accuracy_window.h"
 #include "energy_plot.h"
 #include "main_window.h"
 #include "scene_file.h"
@@ -9,8 +10,11 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QPushButton>
+#include <QTableWidget>
 #include <QTest>
 #include <QTimer>
 
@@ -133,6 +137,49 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY(window_->statusText().contains("sound unavailable"));
     QTest::keyClick(window_.get(), Qt::Key_F3);
     QVERIFY(window_->sound().muted());
+  }
+
+  void speedVersusAccuracy() {
+    carom::ui::AccuracyWindow* study = window_->openAccuracyWindow(1.0);
+    QVERIFY(study->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!study->isRunning(), 60000);
+    const auto& results = study->results();
+    QCOMPARE(results.size(), std::size_t(31));  // exact, then 2 methods x 3 integrators x 5 steps
+    QCOMPARE(results[0].settings.method, carom::Method::Exact);
+    QCOMPARE(results[0].positionError, 0.0);  // the reference itself
+    double worstDiscrete = 0.0;
+    for (const carom::StudyResult& r : results) {
+      QVERIFY(r.computeSeconds >= 0.0);
+      if (r.settings.method == carom::Method::Discrete)
+        worstDiscrete = std::max(worstDiscrete, r.positionError);
+    }
+    QVERIFY(worstDiscrete > 1e-3);  // coarse discrete steps drift away from the exact paths
+    // Choose a swept run and apply it: the sandbox takes its settings.
+    auto* table = study->findChild<QTableWidget*>();
+    QVERIFY(table);
+    int row = -1;
+    for (std::size_t i = 0; i < results.size(); ++i)
+      if (results[i].settings.method == carom::Method::Swept &&
+          results[i].settings.integrator == carom::Integrator::VelocityVerlet)
+        row = static_cast<int>(i);
+    QVERIFY(row >= 0);
+    table->selectRow(row);
+    QPushButton* apply = nullptr;
+    for (QPushButton* button : study->findChildren<QPushButton*>())
+      if (button->text().contains("Apply")) apply = button;
+    QVERIFY(apply && apply->isEnabled());
+    QTest::mouseClick(apply, Qt::LeftButton);
+    QVERIFY(waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
+      return s.world.method == carom::Method::Swept &&
+             s.world.integrator == carom::Integrator::VelocityVerlet;
+    }));
+  }
+
+  void speedVersusAccuracyCancels() {
+    carom::ui::AccuracyWindow* study = window_->openAccuracyWindow(30.0);
+    study->cancel();
+    QTRY_VERIFY_WITH_TIMEOUT(!study->isRunning(), 30000);
+    QVERIFY(study->results().size() < 31);
   }
 
   void energyPlotFollowsTheRun() {

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "accuracy_window.h"
 #include "energy_plot.h"
 
 #include "render_scene.h"
@@ -185,6 +186,8 @@ void MainWindow::buildMenus() {
   QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
   simulationMenu->addActions({playAction_, stepAction_, resetAction_});
   simulationMenu->addSeparator();
+  simulationMenu->addAction(tr("Speed vs &Accuracy…"), this, [this] { openAccuracyWindow(); });
+  simulationMenu->addSeparator();
   simulationMenu->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::quit);
 
   QMenu* examples = menuBar()->addMenu(tr("&Examples"));
@@ -227,6 +230,26 @@ void MainWindow::openScene(const carom::Scene& scene, const QString& title) {
 
 void MainWindow::setRunning(bool running) {
   playAction_->setChecked(running);
+}
+
+AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
+  carom::Scene scene = scene_;
+  // The study runs what the sandbox runs now: the scene with the current world settings.
+  if (const auto snapshot = simulation_->latest()) scene.world = snapshot->world;
+  auto* window = new AccuracyWindow(scene, this);
+  window->setAttribute(Qt::WA_DeleteOnClose);
+  window->setDuration(duration);
+  connect(window, &AccuracyWindow::settingsChosen, this, &MainWindow::applySettings);
+  window->show();
+  window->start();
+  return window;
+}
+
+void MainWindow::applySettings(carom::Method method, carom::Integrator integrator,
+                               double timeStep) {
+  method_->setCurrentIndex(int(method));
+  integrator_->setCurrentIndex(int(integrator));
+  timeStep_->setValue(timeStep);
 }
 
 void MainWindow::applyGravity() {

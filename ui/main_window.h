@@ -16,6 +16,7 @@ class QLabel;
 
 namespace carom::ui {
 
+class AccuracyWindow;
 class EnergyPlot;
 class SimulationController;
 }  // namespace carom::ui
@@ -43,6 +44,8 @@ class MainWindow : public QMainWindow {
   EnergyPlot* energyPlot() const { return energyPlot_; }
   SoundBoard& sound() { return *sound_; }
   QString statusText() const;
+  // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
+  AccuracyWindow* openAccuracyWindow(double duration = 5.0);
   // Frames drawn and snapshots shown so far (for the status line and tests).
   int framesRendered() const { return framesRendered_; }
 
@@ -53,6 +56,7 @@ class MainWindow : public QMainWindow {
   void showSnapshot();
   void changeTimeStep(double factor);
   void applyGravity();
+  void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
