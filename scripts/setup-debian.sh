@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Carom needs to build and test; installs nothing already present.
 set -euo pipefail
-packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev libeigen3-dev
+packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools
+  qt6-tools-dev-tools libeigen3-dev
   qt6-multimedia-dev pulseaudio pulseaudio-utils xvfb xauth libgl1-mesa-dri libglx-mesa0)
 missing=()
 for p in "${packages[@]}"; do

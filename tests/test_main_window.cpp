@@ -154,6 +154,8 @@ class TestMainWindow : public QObject {
         worstDiscrete = std::max(worstDiscrete, r.positionError);
     }
     QVERIFY(worstDiscrete > 1e-3);  // coarse discrete steps drift away from the exact paths
+    if (qEnvironmentVariableIsSet("CAROM_SCREENSHOT_DIR"))  // for looking at it, not a check
+      study->grab().save(qEnvironmentVariable("CAROM_SCREENSHOT_DIR") + "/accuracy.png");
     // Choose a swept run and apply it: the sandbox takes its settings.
     auto* table = study->findChild<QTableWidget*>();
     QVERIFY(table);

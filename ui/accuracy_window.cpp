@@ -46,6 +46,25 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
 
   chart_ = new QChart;
   chart_->legend()->setAlignment(Qt::AlignBottom);
+  timeAxis_ = new QLogValueAxis;
+  timeAxis_->setTitleText(tr("Computing time (s)"));
+  timeAxis_->setLabelFormat("%.0e");
+  errorAxis_ = new QLogValueAxis;
+  errorAxis_->setLabelFormat("%.0e");
+  chart_->addAxis(timeAxis_, Qt::AlignBottom);
+  chart_->addAxis(errorAxis_, Qt::AlignLeft);
+  for (Method method : {Method::Exact, Method::Swept, Method::Discrete}) {
+    auto* series = new QScatterSeries;
+    series->setName(text(methodName(method)));
+    series->setMarkerSize(9);
+    chart_->addSeries(series);
+    series->attachAxis(timeAxis_);
+    series->attachAxis(errorAxis_);
+    // Clicking a point selects its run in the table.
+    connect(series, &QScatterSeries::clicked, this,
+            [this, method](const QPointF& point) { selectNearest(method, point); });
+    series_.push_back(series);
+  }
   auto* chartView = new QChartView(chart_);
   chartView->setRenderHint(QPainter::Antialiasing);
   chartView->setMinimumSize(520, 360);
@@ -71,6 +90,8 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
       new QLabel(tr("Each point is one run of the current scene; lower and further left is "
                     "better. Choose a run to use its settings."));
   note_->setWordWrap(true);
+  replot();
+  resize(900, 760);
 
   auto* top = new QHBoxLayout;
   top->addWidget(new QLabel(tr("Error:")));
@@ -162,58 +183,44 @@ double AccuracyWindow::errorOf(const StudyResult& result) const {
 }
 
 void AccuracyWindow::replot() {
-  chart_->removeAllSeries();
-  for (QAbstractAxis* axis : chart_->axes()) {
-    chart_->removeAxis(axis);
-    delete axis;
-  }
-  auto* timeAxis = new QLogValueAxis;
-  timeAxis->setTitleText(tr("Computing time (s)"));
-  timeAxis->setLabelFormat("%.0e");
-  auto* errorAxis = new QLogValueAxis;
-  errorAxis->setTitleText(metric_->currentText());
-  errorAxis->setLabelFormat("%.0e");
-  chart_->addAxis(timeAxis, Qt::AlignBottom);
-  chart_->addAxis(errorAxis, Qt::AlignLeft);
   double lowTime = 1e300, highTime = 0, lowError = 1e300, highError = 0;
-  for (Method method : {Method::Exact, Method::Swept, Method::Discrete}) {
-    auto* series = new QScatterSeries;
-    series->setName(text(methodName(method)));
-    series->setMarkerSize(9);
-    for (std::size_t i = 0; i < results_.size(); ++i) {
-      const StudyResult& r = results_[i];
-      if (r.settings.method != method) continue;
+  for (std::size_t m = 0; m < series_.size(); ++m) {
+    QList<QPointF> points;
+    for (const StudyResult& r : results_) {
+      if (r.settings.method != Method(m)) continue;
       const double x = std::max(r.computeSeconds, 1e-7);
       const double y = std::max(errorOf(r), kErrorFloor);
-      series->append(x, y);
+      points.append({x, y});
       lowTime = std::min(lowTime, x);
       highTime = std::max(highTime, x);
       lowError = std::min(lowError, y);
       highError = std::max(highError, y);
     }
-    chart_->addSeries(series);
-    series->attachAxis(timeAxis);
-    series->attachAxis(errorAxis);
-    // Clicking a point selects its run in the table.
-    connect(series, &QScatterSeries::clicked, this, [this, method](const QPointF& point) {
-      int best = -1;
-      double bestDistance = 1e300;
-      for (std::size_t i = 0; i < results_.size(); ++i) {
-        if (results_[i].settings.method != method) continue;
-        const double dx = std::log10(std::max(results_[i].computeSeconds, 1e-7) / point.x());
-        const double dy = std::log10(std::max(errorOf(results_[i]), kErrorFloor) / point.y());
-        if (dx * dx + dy * dy < bestDistance) {
-          bestDistance = dx * dx + dy * dy;
-          best = static_cast<int>(i);
-        }
-      }
-      if (best >= 0) table_->selectRow(best);
-    });
+    series_[m]->replace(points);
   }
+  errorAxis_->setTitleText(metric_->currentText());
   if (highTime > 0) {
-    timeAxis->setRange(lowTime / 2, highTime * 2);
-    errorAxis->setRange(lowError / 10, highError * 10);
+    timeAxis_->setRange(lowTime / 2, highTime * 2);
+    errorAxis_->setRange(lowError / 10, highError * 10);
+    // About six labelled ticks whatever the span, so the labels stay readable.
+    const double decades = std::log10(highError * 10 / (lowError / 10));
+    errorAxis_->setBase(std::pow(10.0, std::max(1.0, std::ceil(decades / 6.0))));
   }
+}
+
+void AccuracyWindow::selectNearest(Method method, const QPointF& point) {
+  int best = -1;
+  double bestDistance = 1e300;
+  for (std::size_t i = 0; i < results_.size(); ++i) {
+    if (results_[i].settings.method != method) continue;
+    const double dx = std::log10(std::max(results_[i].computeSeconds, 1e-7) / point.x());
+    const double dy = std::log10(std::max(errorOf(results_[i]), kErrorFloor) / point.y());
+    if (dx * dx + dy * dy < bestDistance) {
+      bestDistance = dx * dx + dy * dy;
+      best = static_cast<int>(i);
+    }
+  }
+  if (best >= 0) table_->selectRow(best);
 }
 
 void AccuracyWindow::applySelected() {

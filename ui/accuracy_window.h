@@ -12,6 +12,8 @@
 #include <vector>
 
 class QChart;
+class QLogValueAxis;
+class QScatterSeries;
 class QComboBox;
 class QLabel;
 class QProgressBar;
@@ -41,6 +43,7 @@ class AccuracyWindow : public QDialog {
   void addResult(const StudyResult& result);
   void finish();
   void replot();
+  void selectNearest(carom::Method method, const QPointF& point);
   void applySelected();
   double errorOf(const StudyResult& result) const;
 
@@ -53,6 +56,9 @@ class AccuracyWindow : public QDialog {
   bool running_ = false;
   QComboBox* metric_;
   QChart* chart_;
+  QLogValueAxis* timeAxis_;
+  QLogValueAxis* errorAxis_;
+  std::vector<QScatterSeries*> series_;  // one per method, in Method order
   QTableWidget* table_;
   QProgressBar* progress_;
   QPushButton* cancelButton_;

@@ -2,6 +2,7 @@
 
 #include "accuracy_window.h"
 #include "energy_plot.h"
+#include "language.h"
 
 #include "render_scene.h"
 #include "scene_view.h"
@@ -9,6 +10,7 @@
 #include "sound_board.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -205,6 +207,20 @@ void MainWindow::buildMenus() {
   viewMenu->addActions({followAction_, fullScreenAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
+  viewMenu->addSeparator();
+  QMenu* languageMenu = viewMenu->addMenu(tr("&Language"));
+  auto* languages = new QActionGroup(this);
+  const QString current = chosenLanguage({});
+  for (const Language& language : availableLanguages()) {
+    QAction* action = languageMenu->addAction(language.nativeName);
+    action->setCheckable(true);
+    action->setChecked(language.code == current);
+    languages->addAction(action);
+    connect(action, &QAction::triggered, this, [this, code = language.code] {
+      saveLanguageChoice(code);
+      statusBar()->showMessage(tr("The language changes when Carom is next started."), 8000);
+    });
+  }
 }
 
 void MainWindow::openScene(const carom::Scene& scene, const QString& title) {
