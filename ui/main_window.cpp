@@ -277,7 +277,7 @@ void MainWindow::changeTimeStep(double factor) {
 }
 
 void MainWindow::showSnapshot() {
-  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
+  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->take();
   if (!snapshot) return;
   view_->setBallPositions(snapshot->positions);
   energyPlot_->add(*snapshot);

@@ -31,6 +31,8 @@ class SimulationController : public QObject {
 
   // The most recent snapshot, or null before the first; never blocks.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }
+  // The same, marking it shown: the worker announces the next one.
+  std::shared_ptr<const SimulationSnapshot> take() { return exchange_.take(); }
 
  signals:
   void snapshotPublished();

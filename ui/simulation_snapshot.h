@@ -14,7 +14,9 @@ namespace carom::ui {
 struct SimulationSnapshot {
   double time = 0.0;
   std::vector<Vec3> positions;
-  std::vector<CollisionRecord> collisions;  // since the previous snapshot
+  // Since the previous snapshot. A snapshot replaced before the GUI took it takes its collisions
+  // with it: when the GUI falls behind, explosions and sounds are dropped, never delayed.
+  std::vector<CollisionRecord> collisions;
   double kineticEnergy = 0.0;
   double potentialEnergy = 0.0;
   double initialEnergy = 0.0;  // at the last reset
@@ -29,8 +31,16 @@ struct SimulationSnapshot {
 // sides only ever touch an atomic pointer, so neither waits for the other.
 class SnapshotExchange {
  public:
-  void publish(std::shared_ptr<const SimulationSnapshot> snapshot) {
+  // Returns true when the reader has taken the previous snapshot, so it needs telling; while it
+  // has not, newer snapshots simply replace the unread one and no notice piles up.
+  bool publish(std::shared_ptr<const SimulationSnapshot> snapshot) {
     latest_.store(std::move(snapshot), std::memory_order_release);
+    return !unread_.exchange(true);
+  }
+  // The newest snapshot, marking it read.
+  std::shared_ptr<const SimulationSnapshot> take() {
+    unread_.store(false);
+    return latest();
   }
   std::shared_ptr<const SimulationSnapshot> latest() const {
     return latest_.load(std::memory_order_acquire);
@@ -38,6 +48,7 @@ class SnapshotExchange {
 
  private:
   std::atomic<std::shared_ptr<const SimulationSnapshot>> latest_;
+  std::atomic<bool> unread_{false};
 };
 
 }  // namespace carom::ui

@@ -147,8 +147,7 @@ void SimulationWorker::publish() {
   snapshot->running = running_;
   snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
   snapshot->fallingBehind = running_ && fallingBehind_;
-  exchange_.publish(std::move(snapshot));
-  emit snapshotPublished();
+  if (exchange_.publish(std::move(snapshot))) emit snapshotPublished();
 }
 
 }  // namespace carom::ui
