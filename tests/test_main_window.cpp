@@ -3,6 +3,7 @@
 #include "accuracy_window.h"
 #include "energy_plot.h"
 #include "main_window.h"
+#include "scene_builders.h"
 #include "scene_file.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
@@ -13,6 +14,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTest>
@@ -182,6 +184,50 @@ class TestMainWindow : public QObject {
     study->cancel();
     QTRY_VERIFY_WITH_TIMEOUT(!study->isRunning(), 30000);
     QVERIFY(study->results().size() < 31);
+  }
+
+  void examplesMenuOpensEveryBundledScene() {
+    QMenu* examples = nullptr;
+    for (QAction* action : window_->menuBar()->actions())
+      if (action->text().remove('&') == "Examples") examples = action->menu();
+    QVERIFY(examples);
+    QCOMPARE(examples->actions().size(), 5);
+    for (QAction* action : examples->actions()) {
+      if (action->text() != "newtons-cradle") continue;
+      action->trigger();
+      QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) {
+        return s.positions.size() == 5 && s.time == 0;
+      }));
+      QVERIFY(window_->windowTitle().contains("newtons-cradle"));
+    }
+  }
+
+  void followsTheFirstBallWithF2() {
+    auto* view = qobject_cast<carom::render::SceneView*>(window_->view());
+    QTest::keyClick(window_.get(), Qt::Key_F2);
+    QCOMPARE(view->followedBall(), 0);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.time > 0.5; }));
+    // Followed: the ball stays near the middle of the view while it moves.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+          const QPointF at = view->project(view->ballPositions()[0]);
+          return std::abs(at.x() - view->width() / 2.0) < 0.1 * view->width() &&
+                 std::abs(at.y() - view->height() / 2.0) < 0.1 * view->height();
+        }(),
+        5000);
+    QTest::keyClick(window_.get(), Qt::Key_F2);
+    QCOMPARE(view->followedBall(), -1);
+  }
+
+  void saysWhenThePhysicsCannotKeepUp() {
+    // 20,000 balls at a hundred times real time is more than any machine here keeps up with.
+    window_->openScene(carom::makeGasInBox(20000, 0.25, carom::Vec3::Zero(), 1), "gas");
+    auto* speed = window_->findChild<QDoubleSpinBox*>("speed");
+    speed->setValue(100.0);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.fallingBehind; }));
+    QTRY_VERIFY(window_->statusText().contains("cannot keep up"));
   }
 
   void energyPlotFollowsTheRun() {
