@@ -1,4 +1,331 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
+<context>
+    <name>Language</name>
+    <message>
+        <location filename="../ui/language.cpp" line="16"/>
+        <source>System Default</source>
+        <translation>Systemstandard</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AccuracyWindow</name>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <source>Speed vs accuracy</source>
+        <translation>Geschwindigkeit und Genauigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="43"/>
+        <source>Position error against exact (m)</source>
+        <translation>Positionsfehler gegenüber exact (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="43"/>
+        <source>Relative energy drift</source>
+        <translation>Relative Energiedrift</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="44"/>
+        <source>Deepest penetration (m)</source>
+        <translation>Maximale Eindringtiefe (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="44"/>
+        <source>Escaped balls</source>
+        <translation>Entwichene Kugeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="50"/>
+        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <source>Computing time (s)</source>
+        <translation>Rechenzeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <source>Run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <source>Position error</source>
+        <translation>Positionsfehler</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <source>Energy drift</source>
+        <translation>Energiedrift</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <source>Penetration</source>
+        <translation>Eindringtiefe</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <source>Escaped</source>
+        <translation>Entwichen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="81"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="83"/>
+        <source>Apply Selected Settings</source>
+        <translation>Ausgewählte Einstellungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="90"/>
+        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
+        <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="97"/>
+        <source>Error:</source>
+        <translation>Fehler:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::EnergyPlot</name>
+    <message>
+        <location filename="../ui/energy_plot.cpp" line="31"/>
+        <source>Kinetic</source>
+        <translation>Kinetisch</translation>
+    </message>
+    <message>
+        <location filename="../ui/energy_plot.cpp" line="32"/>
+        <source>Potential</source>
+        <translation>Potentiell</translation>
+    </message>
+    <message>
+        <location filename="../ui/energy_plot.cpp" line="33"/>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <location filename="../ui/energy_plot.cpp" line="34"/>
+        <source>Simulated time (s)</source>
+        <translation>Simulierte Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/energy_plot.cpp" line="35"/>
+        <source>Energy (J)</source>
+        <translation>Energie (J)</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="53"/>
+        <source>Energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="89"/>
+        <location filename="../ui/main_window.cpp" line="94"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="92"/>
+        <source>Run or pause the simulation (Space)</source>
+        <translation>Simulation starten oder anhalten (Leertaste)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="94"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="98"/>
+        <source>&amp;Step</source>
+        <translation>Sc&amp;hritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="100"/>
+        <source>Advance one time step (S)</source>
+        <translation>Einen Zeitschritt weiter (S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="106"/>
+        <source>R&amp;eset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="108"/>
+        <source>Back to the scene&apos;s initial state (R)</source>
+        <translation>Zurück zum Anfangszustand der Szene (R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="114"/>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Vollbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="120"/>
+        <source>&amp;Follow Ball</source>
+        <translation>Kugel &amp;folgen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="126"/>
+        <source>&amp;Mute</source>
+        <translation>Stu&amp;mmschalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="131"/>
+        <source>Larger Time Step</source>
+        <translation>Größerer Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="134"/>
+        <source>Smaller Time Step</source>
+        <translation>Kleinerer Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="141"/>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="148"/>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="149"/>
+        <source>Simulated seconds per real second</source>
+        <translation>Simulierte Sekunden pro echter Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="156"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="159"/>
+        <source>Gravity %1 (m/s²)</source>
+        <translation>Schwerkraft %1 (m/s²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="165"/>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="166"/>
+        <source>Time step in seconds (+ and - keys)</source>
+        <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="174"/>
+        <source>Exact (event-driven), swept, or discrete steps</source>
+        <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="181"/>
+        <source>Integrator of the swept and discrete methods</source>
+        <translation>Integrator der Methoden swept und discrete</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="188"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="191"/>
+        <source>Speed vs &amp;Accuracy…</source>
+        <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="193"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="195"/>
+        <source>&amp;Examples</source>
+        <translation>&amp;Beispiele</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="206"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="211"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="221"/>
+        <source>The language changes when Carom is next started.</source>
+        <translation>Die Sprache wird beim nächsten Start von Carom gewechselt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="229"/>
+        <source>%1 — Carom</source>
+        <translation>%1 — Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="299"/>
+        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
+        <translation>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %5 Kugeln   E = %6 J (Drift %7)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="309"/>
+        <source>   sound unavailable</source>
+        <translation>   Ton nicht verfügbar</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="311"/>
+        <source>   muted</source>
+        <translation>   stummgeschaltet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="312"/>
+        <source>   — the physics cannot keep up; running slower</source>
+        <translation>   — die Physik kommt nicht hinterher; läuft langsamer</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/carom_main.cpp" line="20"/>
+        <source>Collision physics sandbox</source>
+        <translation>Sandbox für Kollisionsphysik</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="23"/>
+        <source>Scene file to open</source>
+        <translation>Zu öffnende Szenendatei</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="26"/>
+        <source>Save a picture of the window and quit.</source>
+        <translation>Ein Bild des Fensters speichern und beenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="27"/>
+        <source>file.png</source>
+        <translation>datei.png</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="30"/>
+        <source>Run the simulation this long before --screenshot.</source>
+        <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="31"/>
+        <source>seconds</source>
+        <translation>Sekunden</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="44"/>
+        <source>Cannot open scene</source>
+        <translation>Szene kann nicht geöffnet werden</translation>
+    </message>
+</context>
 </TS>
