@@ -1,3 +1,4 @@
+#include "language.h"
 #include "main_window.h"
 #include "scene_file.h"
 #include "scene_view.h"
@@ -13,8 +14,11 @@
 int main(int argc, char** argv) {
   carom::render::SceneView::setDefaultFormat();
   QApplication app(argc, argv);
+  QApplication::setOrganizationName("Carom");
   QApplication::setApplicationName("Carom");
   QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION));
+  // Before any text is made: --lang, else View > Language's saved choice, else the system's.
+  carom::ui::installTranslation(app, carom::ui::chosenLanguage(QApplication::arguments()));
 
   QCommandLineParser parser;
   parser.setApplicationDescription(QApplication::translate("main", "Collision physics sandbox"));
@@ -29,7 +33,10 @@ int main(int argc, char** argv) {
       "run-for",
       QApplication::translate("main", "Run the simulation this long before --screenshot."),
       QApplication::translate("main", "seconds"), "0");
-  parser.addOptions({screenshot, runFor});
+  const QCommandLineOption language(
+      "lang", QApplication::translate("main", "Language of the program (en, ru, de)."),
+      QApplication::translate("main", "code"));
+  parser.addOptions({screenshot, runFor, language});
   parser.process(app);
 
   carom::ui::MainWindow window;

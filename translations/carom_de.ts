@@ -293,37 +293,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="20"/>
+        <location filename="../app/carom_main.cpp" line="24"/>
         <source>Collision physics sandbox</source>
         <translation>Sandbox für Kollisionsphysik</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="23"/>
+        <location filename="../app/carom_main.cpp" line="27"/>
         <source>Scene file to open</source>
         <translation>Zu öffnende Szenendatei</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="26"/>
+        <location filename="../app/carom_main.cpp" line="30"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Ein Bild des Fensters speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="27"/>
+        <location filename="../app/carom_main.cpp" line="31"/>
         <source>file.png</source>
         <translation>datei.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="30"/>
+        <location filename="../app/carom_main.cpp" line="34"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="31"/>
+        <location filename="../app/carom_main.cpp" line="35"/>
         <source>seconds</source>
         <translation>Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="44"/>
+        <location filename="../app/carom_main.cpp" line="37"/>
+        <source>Language of the program (en, ru, de).</source>
+        <translation>Sprache des Programms (en, ru, de).</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="38"/>
+        <source>code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="51"/>
         <source>Cannot open scene</source>
         <translation>Szene kann nicht geöffnet werden</translation>
     </message>

@@ -293,37 +293,47 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="20"/>
+        <location filename="../app/carom_main.cpp" line="24"/>
         <source>Collision physics sandbox</source>
         <translation>Песочница для физики столкновений</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="23"/>
+        <location filename="../app/carom_main.cpp" line="27"/>
         <source>Scene file to open</source>
         <translation>Файл сцены для открытия</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="26"/>
+        <location filename="../app/carom_main.cpp" line="30"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="27"/>
+        <location filename="../app/carom_main.cpp" line="31"/>
         <source>file.png</source>
         <translation>файл.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="30"/>
+        <location filename="../app/carom_main.cpp" line="34"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Сколько секунд выполнять симуляцию перед --screenshot.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="31"/>
+        <location filename="../app/carom_main.cpp" line="35"/>
         <source>seconds</source>
         <translation>секунды</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="44"/>
+        <location filename="../app/carom_main.cpp" line="37"/>
+        <source>Language of the program (en, ru, de).</source>
+        <translation>Язык программы (en, ru, de).</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="38"/>
+        <source>code</source>
+        <translation>код</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="51"/>
         <source>Cannot open scene</source>
         <translation>Не удалось открыть сцену</translation>
     </message>

@@ -40,7 +40,9 @@ EnergyPlot::EnergyPlot(QWidget* parent)
     series->attachAxis(timeAxis_);
     series->attachAxis(energyAxis_);
   }
-  chart_->legend()->setAlignment(Qt::AlignBottom);
+  chart_->legend()->setAlignment(Qt::AlignRight);
+  timeAxis_->setLabelFormat("%.1f");
+  energyAxis_->setLabelFormat("%.4g");
   auto* view = new QChartView(chart_);
   view->setRenderHint(QPainter::Antialiasing);
   auto* layout = new QVBoxLayout(this);

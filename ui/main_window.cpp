@@ -53,7 +53,9 @@ MainWindow::MainWindow(QWidget* parent)
   auto* energyDock = new QDockWidget(tr("Energy"), this);
   energyDock->setObjectName("energyDock");
   energyDock->setWidget(energyPlot_);
-  addDockWidget(Qt::RightDockWidgetArea, energyDock);
+  // Below the view, where the plot's time axis has room.
+  addDockWidget(Qt::BottomDockWidgetArea, energyDock);
+  energyPlot_->setMinimumHeight(190);
   status_ = new QLabel;
   statusBar()->addWidget(status_, 1);
   sound_ = new SoundBoard(this);
