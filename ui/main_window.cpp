@@ -5,6 +5,7 @@
 #include "language.h"
 
 #include "render_scene.h"
+#include "scene_file.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
 #include "sound_board.h"
@@ -20,8 +21,6 @@
 #include <QMenuBar>
 #include <QStatusBar>
 #include <QToolBar>
-
-#include "scene_file.h"
 
 namespace carom::ui {
 
