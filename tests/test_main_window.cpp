@@ -230,6 +230,18 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY(window_->statusText().contains("cannot keep up"));
   }
 
+  void collisionsSetOffExplosionsWithinThePoolLimit() {
+    auto* view = qobject_cast<carom::render::SceneView*>(window_->view());
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QTRY_VERIFY_WITH_TIMEOUT(view->liveExplosions() > 0, 15000);
+    for (int k = 0; k < 20; ++k) {
+      QVERIFY(view->liveExplosions() <= view->explosionLimit());
+      QTest::qWait(50);
+    }
+    QTest::keyClick(window_.get(), Qt::Key_Space);  // paused: the last ones fade out
+    QTRY_VERIFY_WITH_TIMEOUT(view->liveExplosions() == 0, 5000);
+  }
+
   void energyPlotFollowsTheRun() {
     carom::ui::EnergyPlot* plot = window_->energyPlot();
     QVERIFY(plot && plot->isVisible());

@@ -5,6 +5,7 @@
 #include "scene_view.h"
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QImage>
 #include <QSignalSpy>
 #include <QWheelEvent>
@@ -94,6 +95,26 @@ carom::Scene magicRoom() {
   return scene;
 }
 
+// Collisions of the test scene's red and green balls at `count` points on a line in the air in
+// front of them.
+std::vector<carom::CollisionRecord> collisionsAt(int count, const Vec3& first, const Vec3& step) {
+  std::vector<carom::CollisionRecord> records;
+  for (int i = 0; i < count; ++i) {
+    carom::CollisionRecord r;
+    r.kind = carom::ContactKind::BallBall;
+    r.ball = 0;
+    r.other = 1;
+    r.point = first + i * step;
+    r.normalSpeed = 1.0;
+    records.push_back(r);
+  }
+  return records;
+}
+
+int brightness(QRgb pixel) {
+  return qRed(pixel) + qGreen(pixel) + qBlue(pixel);
+}
+
 double distanceBetween(const QPointF& a, const QPointF& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
@@ -119,6 +140,10 @@ class TestSceneView : public QObject {
   void wheelZooms();
   void arrowKeysRotateAndHomeFrames();
   void followingKeepsTheBallCentred();
+  void explosionsKeepToTheirLimit();
+  void explosionsFadeOutWhilePaused();
+  void explosionsBrightenTheirPlace();
+  void disabledExplosionsShowNothing();
 
  private:
   struct ShownView {
@@ -395,6 +420,103 @@ void TestSceneView::followingKeepsTheBallCentred() {
   positions[1] = Vec3(2, 0.5, -1);
   view.setBallPositions(positions);
   QVERIFY(distanceBetween(view.project(positions[1]), middle) > 20.0);
+}
+
+void TestSceneView::explosionsKeepToTheirLimit() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  QCOMPARE(view.explosionLimit(), 20);
+  for (int batch = 0; batch < 10; ++batch) {
+    view.addExplosions(collisionsAt(37, Vec3(-2, 0.5, 1), Vec3(0.1, 0, 0)));
+    QVERIFY(view.liveExplosions() <= 20);
+    QTest::qWait(20);  // frames in between, each one updating the pool
+    QVERIFY(view.liveExplosions() <= 20);
+  }
+  QCOMPARE(view.liveExplosions(), 20);
+  QCOMPARE(view.droppedExplosions(), std::uint64_t{370 - 20});
+
+  view.setExplosionLimit(5);
+  QVERIFY(view.liveExplosions() <= 5);
+  view.addExplosions(collisionsAt(50, Vec3(-2, 0.5, 1), Vec3(0.1, 0, 0)));
+  QVERIFY(view.liveExplosions() <= 5);
+  const int before = *shown.frames;
+  QTRY_VERIFY(*shown.frames > before + 3);
+  QVERIFY(view.liveExplosions() <= 5);
+}
+
+void TestSceneView::explosionsFadeOutWhilePaused() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  QElapsedTimer clock;
+  clock.start();
+  view.addExplosions(collisionsAt(8, Vec3(-1, 0.5, 1), Vec3(0.25, 0, 0)));
+  QCOMPARE(view.liveExplosions(), 8);
+  // No new ball positions: the view must keep drawing by itself for them to fade.
+  const int before = *shown.frames;
+  QTRY_VERIFY_WITH_TIMEOUT(view.liveExplosions() == 0, 10000);
+  const qint64 lasted = clock.elapsed();
+  QVERIFY2(lasted >= 1500 && lasted < 4000, qPrintable(QString::number(lasted)));
+  QVERIFY2(*shown.frames > before + 10, qPrintable(QString::number(*shown.frames - before)));
+  // Once they are gone it stops asking for frames.
+  const int afterFade = *shown.frames;
+  QTest::qWait(300);
+  QVERIFY(*shown.frames <= afterFade + 1);
+  // And 1.7 s after an addition, none is left.
+  view.addExplosions(collisionsAt(3, Vec3(0, 0.5, 1), Vec3(0.2, 0, 0)));
+  QTest::qWait(1700);
+  QTRY_COMPARE(view.liveExplosions(), 0);
+}
+
+void TestSceneView::explosionsBrightenTheirPlace() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Vec3 spot(-0.75, 0.6, 1.2);  // in the air in front of the balls, over the floor
+  const QImage plain = view.grabFramebuffer();
+  view.addExplosions(collisionsAt(1, spot, Vec3::Zero()));
+  const QImage lit = view.grabFramebuffer();
+  // To look at it: CAROM_EXPLOSIONS_PNG=/tmp/explosions.png.
+  if (const QString file = qEnvironmentVariable("CAROM_EXPLOSIONS_PNG"); !file.isEmpty())
+    lit.save(file);
+  const QRgb before = pixelAt(view, plain, spot);
+  const QRgb after = pixelAt(view, lit, spot);
+  const QString both = describe(before) + " -> " + describe(after);
+  // Yellow light added: red and green up a lot, blue much less.
+  QVERIFY2(qRed(after) >= qRed(before) + 60 || qRed(after) == 255, qPrintable(both));
+  QVERIFY2(qGreen(after) >= qGreen(before) + 60 || qGreen(after) == 255, qPrintable(both));
+  QVERIFY2(qBlue(after) - qBlue(before) < qGreen(after) - qGreen(before), qPrintable(both));
+  // Far from it, nothing changes: the corner, and the blue ball on the other side.
+  QCOMPARE(lit.pixel(4, 4), plain.pixel(4, 4));
+  const QRgb blue = pixelAt(view, lit, scene.balls[2].position);
+  QVERIFY2(
+      std::abs(brightness(blue) - brightness(pixelAt(view, plain, scene.balls[2].position))) < 6,
+      qPrintable(describe(blue)));
+}
+
+void TestSceneView::disabledExplosionsShowNothing() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Vec3 spot(-0.75, 0.6, 1.2);
+  const QImage plain = view.grabFramebuffer();
+  view.addExplosions(collisionsAt(4, spot, Vec3(0.1, 0, 0)));
+  QCOMPARE(view.liveExplosions(), 4);
+  view.setExplosionsEnabled(false);
+  QVERIFY(!view.explosionsEnabled());
+  QCOMPARE(view.liveExplosions(), 0);
+  view.addExplosions(collisionsAt(4, spot, Vec3(0.1, 0, 0)));
+  QCOMPARE(view.liveExplosions(), 0);
+  const QImage image = view.grabFramebuffer();
+  const QRgb before = pixelAt(view, plain, spot);
+  const QRgb after = pixelAt(view, image, spot);
+  QVERIFY2(std::abs(brightness(after) - brightness(before)) < 6,
+           qPrintable(describe(before) + " -> " + describe(after)));
+  view.setExplosionsEnabled(true);
+  view.addExplosions(collisionsAt(4, spot, Vec3(0.1, 0, 0)));
+  QCOMPARE(view.liveExplosions(), 4);
 }
 
 QTEST_MAIN(TestSceneView)

@@ -124,6 +124,12 @@ void MainWindow::buildActions() {
   connect(followAction_, &QAction::toggled, this,
           [this](bool on) { view_->setFollowedBall(on && !scene_.balls.empty() ? 0 : -1); });
 
+  explosionsAction_ = new QAction(tr("&Explosions"), this);
+  explosionsAction_->setCheckable(true);
+  explosionsAction_->setChecked(true);
+  connect(explosionsAction_, &QAction::toggled, this,
+          [this](bool on) { view_->setExplosionsEnabled(on); });
+
   muteAction_ = new QAction(tr("&Mute"), this);
   muteAction_->setShortcut(Qt::Key_F3);
   muteAction_->setCheckable(true);
@@ -205,7 +211,7 @@ void MainWindow::buildMenus() {
   }
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-  viewMenu->addActions({followAction_, fullScreenAction_, muteAction_});
+  viewMenu->addActions({followAction_, fullScreenAction_, explosionsAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
   viewMenu->addSeparator();
@@ -281,6 +287,7 @@ void MainWindow::showSnapshot() {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->take();
   if (!snapshot) return;
   view_->setBallPositions(snapshot->positions);
+  view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
   sound_->play(snapshot->collisions);
   const std::uint64_t collisions = snapshot->stats.collisions.total();

@@ -63,6 +63,7 @@ class MainWindow : public QMainWindow {
   EnergyPlot* energyPlot_ = nullptr;
   SoundBoard* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
+  QAction* explosionsAction_ = nullptr;
   carom::Scene scene_;
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;

@@ -1,6 +1,7 @@
 #include "scene_view.h"
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -8,6 +9,7 @@
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -178,6 +180,43 @@ void main() {
 }
 )";
 
+// Explosions: per instance, two perpendicular quads. Both contain the view's up direction and
+// meet the line of sight at 45 degrees, so neither is ever seen edge-on.
+constexpr const char* kExplosionVertexGlsl = R"(#version 330 core
+layout(location = 0) in vec3 corner;  // x, y in [-1, 1] across a quad; z: which quad, 0 or 1
+layout(location = 1) in vec3 center;
+layout(location = 2) in float halfSize;
+layout(location = 3) in float alpha;
+uniform mat4 viewProjection;
+uniform vec3 eyePosition;
+out vec2 sparkCoordinate;
+out float fade;
+void main() {
+  vec3 toCenter = center - eyePosition;
+  float distance = length(toCenter);
+  vec3 forward = distance > 1e-6 ? toCenter / distance : vec3(0.0, 0.0, -1.0);
+  vec3 helper = abs(forward.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+  vec3 right = normalize(cross(forward, helper));
+  vec3 up = cross(right, forward);
+  vec3 across = 0.70710678 * (corner.z < 0.5 ? right + forward : right - forward);
+  sparkCoordinate = 0.5 + 0.5 * corner.xy;
+  fade = alpha;
+  gl_Position = viewProjection * vec4(center + halfSize * (corner.x * across + corner.y * up), 1.0);
+}
+)";
+
+constexpr const char* kExplosionFragmentGlsl = R"(
+uniform sampler2D spark;
+uniform vec3 sparkColor;
+in vec2 sparkCoordinate;
+in float fade;
+out vec4 fragColor;
+void main() {
+  // With additive blending this adds sparkColor times the spark's brightness and the fade.
+  fragColor = vec4(sparkColor, texture(spark, sparkCoordinate).r * fade);
+}
+)";
+
 // ---- Vertex layouts -----------------------------------------------------------------------------
 
 struct PackedColor {
@@ -221,9 +260,54 @@ struct CylinderInstance {
   PackedColor color;
 };
 
+struct ExplosionInstance {
+  Float3 center;
+  float halfSize;
+  float alpha;
+};
+
 // ---- Meshes -------------------------------------------------------------------------------------
 
 constexpr int kCylinderSegments = 40;
+
+// ---- Explosions --------------------------------------------------------------------------------
+
+constexpr int kSparkTextureSize = 128;
+// Half the width of an explosion's quads at birth, in radii of the ball that collided: about
+// the tutorial's proportion, so the spark starts a little larger than the ball.
+constexpr double kExplosionSizePerRadius = 2.0;
+constexpr double kDefaultBallRadius = 0.5;  // when the record names no ball the scene has
+constexpr int kExplosionFrameMilliseconds = 16;
+constexpr float kSparkColor[3] = {1.0f, 0.9f, 0.2f};
+
+// A spark made here rather than loaded: a bright core with a soft glow, and a few rays of
+// uneven length so it does not look like a plain blob. Zero at the border, so the quads'
+// edges never show.
+QImage makeSparkImage() {
+  constexpr int kRays = 7;
+  constexpr double kRayAngles[kRays] = {0.2, 1.1, 1.9, 2.6, 3.5, 4.4, 5.3};
+  constexpr double kRayLengths[kRays] = {0.95, 0.7, 0.9, 0.6, 0.85, 0.75, 0.9};
+  QImage image(kSparkTextureSize, kSparkTextureSize, QImage::Format_Grayscale8);
+  for (int y = 0; y < kSparkTextureSize; ++y) {
+    uchar* line = image.scanLine(y);
+    for (int x = 0; x < kSparkTextureSize; ++x) {
+      const double dx = (x + 0.5) / kSparkTextureSize * 2.0 - 1.0;
+      const double dy = (y + 0.5) / kSparkTextureSize * 2.0 - 1.0;
+      const double r = std::hypot(dx, dy);
+      const double angle = std::atan2(dy, dx);
+      double value = std::exp(-r * r * 60.0) + 0.45 * std::exp(-r * r * 8.0);
+      for (int i = 0; i < kRays; ++i) {
+        const double across = std::remainder(angle - kRayAngles[i], 2.0 * std::numbers::pi);
+        const double along = std::max(0.0, 1.0 - r / kRayLengths[i]);
+        // Narrow in angle, so the rays taper towards the centre less than a wedge would.
+        value += 0.7 * along * along * std::exp(-std::pow(across * r * 40.0, 2.0));
+      }
+      const double edge = std::clamp((1.0 - r) / 0.1, 0.0, 1.0);
+      line[x] = static_cast<uchar>(std::lround(255.0 * std::clamp(value, 0.0, 1.0) * edge));
+    }
+  }
+  return image;
+}
 
 // ---- Interaction --------------------------------------------------------------------------------
 
@@ -266,6 +350,10 @@ SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(160, 120);
   camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
+  clock_.start();
+  explosionFrameTimer_.setSingleShot(true);
+  explosionFrameTimer_.setInterval(kExplosionFrameMilliseconds);
+  connect(&explosionFrameTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
 }
 
 SceneView::~SceneView() {
@@ -297,6 +385,7 @@ void SceneView::setScene(std::shared_ptr<const RenderScene> scene) {
   if (scene_ && first) camera_.home(scene_->bounds);
   staticDataDirty_ = true;
   positionsDirty_ = true;
+  explosions_.clear();  // they belong to the old scene's collisions
   followBall();
   update();
 }
@@ -326,6 +415,39 @@ void SceneView::setFollowedBall(int index) {
   followBall();
   update();
   emit followedBallChanged(index);
+}
+
+double SceneView::clockSeconds() const {
+  return static_cast<double>(clock_.nsecsElapsed()) * 1e-9;
+}
+
+void SceneView::addExplosions(const std::vector<carom::CollisionRecord>& collisions) {
+  if (!explosionsEnabled_ || collisions.empty()) return;
+  const double now = clockSeconds();
+  const auto radius = [this](int ball) {
+    if (scene_ && ball >= 0 && ball < static_cast<int>(scene_->ballRadii.size()))
+      return scene_->ballRadii[ball];
+    return kDefaultBallRadius;
+  };
+  for (const carom::CollisionRecord& collision : collisions) {
+    double size = radius(collision.ball);
+    if (collision.kind == carom::ContactKind::BallBall)
+      size = std::max(size, radius(collision.other));
+    explosions_.add(collision.point, kExplosionSizePerRadius * size, now);
+  }
+  update();
+}
+
+void SceneView::setExplosionsEnabled(bool enabled) {
+  if (enabled == explosionsEnabled_) return;
+  explosionsEnabled_ = enabled;
+  if (!enabled) explosions_.clear();
+  update();
+}
+
+void SceneView::setExplosionLimit(int limit) {
+  explosions_.setLimit(limit);
+  update();
 }
 
 void SceneView::frameScene() {
@@ -423,6 +545,7 @@ void SceneView::initializeGL() {
   ballProgram_ = buildProgram(kBallVertexGlsl, kBallFragmentGlsl);
   planeProgram_ = buildProgram(kPlaneVertexGlsl, kPlaneFragmentGlsl);
   cylinderProgram_ = buildProgram(kCylinderVertexGlsl, kCylinderFragmentGlsl);
+  explosionProgram_ = buildProgram(kExplosionVertexGlsl, kExplosionFragmentGlsl);
 
   std::array<GLuint, 6> buffers{};
   glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
@@ -500,6 +623,8 @@ void SceneView::initializeGL() {
                         byteOffset(offsetof(CylinderInstance, color)));
   glVertexAttribDivisor(5, 1);
 
+  createExplosionData();
+
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 
@@ -514,6 +639,12 @@ void SceneView::releaseGl() {
   ballProgram_.reset();
   planeProgram_.reset();
   cylinderProgram_.reset();
+  explosionProgram_.reset();
+  const std::array<GLuint, 2> explosionBuffers = {explosionCornerBuffer_, explosionInstanceBuffer_};
+  glDeleteBuffers(static_cast<GLsizei>(explosionBuffers.size()), explosionBuffers.data());
+  glDeleteVertexArrays(1, &explosionVao_);
+  glDeleteTextures(1, &sparkTexture_);
+  explosionCornerBuffer_ = explosionInstanceBuffer_ = explosionVao_ = sparkTexture_ = 0;
   const std::array<GLuint, 6> buffers = {ballCornerBuffer_,     ballPositionBuffer_,
                                          ballAttributeBuffer_,  planeVertexBuffer_,
                                          cylinderVertexBuffer_, cylinderInstanceBuffer_};
@@ -552,6 +683,95 @@ void SceneView::createCylinderMesh() {
   }
   cylinderVertexCount_ = static_cast<int>(vertices.size());
   uploadBuffer(this, cylinderVertexBuffer_, vertices, GL_STATIC_DRAW);
+}
+
+void SceneView::createExplosionData() {
+  std::array<GLuint, 2> buffers{};
+  glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+  explosionCornerBuffer_ = buffers[0];
+  explosionInstanceBuffer_ = buffers[1];
+  glGenVertexArrays(1, &explosionVao_);
+
+  std::vector<Float3> corners;
+  for (float quad : {0.0f, 1.0f}) {
+    corners.insert(corners.end(), {{-1.0f, -1.0f, quad},
+                                   {1.0f, -1.0f, quad},
+                                   {1.0f, 1.0f, quad},
+                                   {-1.0f, -1.0f, quad},
+                                   {1.0f, 1.0f, quad},
+                                   {-1.0f, 1.0f, quad}});
+  }
+  uploadBuffer(this, explosionCornerBuffer_, corners, GL_STATIC_DRAW);
+
+  glBindVertexArray(explosionVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, explosionCornerBuffer_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Float3), nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, explosionInstanceBuffer_);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
+                        byteOffset(offsetof(ExplosionInstance, center)));
+  glVertexAttribDivisor(1, 1);
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
+                        byteOffset(offsetof(ExplosionInstance, halfSize)));
+  glVertexAttribDivisor(2, 1);
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
+                        byteOffset(offsetof(ExplosionInstance, alpha)));
+  glVertexAttribDivisor(3, 1);
+
+  const QImage spark = makeSparkImage();
+  glGenTextures(1, &sparkTexture_);
+  glBindTexture(GL_TEXTURE_2D, sparkTexture_);
+  // QImage may pad its lines; tell GL their real length (one byte a pixel here).
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(spark.bytesPerLine()));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, spark.width(), spark.height(), 0, GL_RED, GL_UNSIGNED_BYTE,
+               spark.constBits());
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // Mipmaps, because a distant spark covers only a few pixels.
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void SceneView::drawExplosions(const QMatrix4x4& viewProjection, const QVector3D& eye) {
+  const std::vector<ExplosionPool::Live> live = explosions_.live();
+  if (live.empty()) return;
+  std::vector<ExplosionInstance> instances;
+  instances.reserve(live.size());
+  for (const ExplosionPool::Live& e : live) {
+    instances.push_back(
+        {toFloat3(e.centre), static_cast<float>(e.scale), static_cast<float>(e.alpha)});
+  }
+  uploadBuffer(this, explosionInstanceBuffer_, instances, GL_STREAM_DRAW);
+
+  explosionProgram_->bind();
+  explosionProgram_->setUniformValue("viewProjection", viewProjection);
+  explosionProgram_->setUniformValue("eyePosition", eye);
+  explosionProgram_->setUniformValue("spark", 0);
+  explosionProgram_->setUniformValue("sparkColor",
+                                     QVector3D(kSparkColor[0], kSparkColor[1], kSparkColor[2]));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, sparkTexture_);
+  glBindVertexArray(explosionVao_);
+  // Additive light: hidden behind balls and walls by the depth test, but not writing depth, so
+  // sparks never hide each other. Both sides of each quad show. Alpha stays 1 in the image.
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE);
+  glDepthMask(GL_FALSE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
+  glDrawArraysInstanced(GL_TRIANGLES, 0, 12, static_cast<GLsizei>(instances.size()));
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void SceneView::uploadStaticData() {
@@ -617,6 +837,10 @@ void SceneView::paintGL() {
   timer.start();
   if (staticDataDirty_) uploadStaticData();
   if (positionsDirty_) uploadBallPositions();
+  explosions_.update(clockSeconds());
+  // Explosions fade with time, so frames must keep coming while any show, even when nothing
+  // else changes (a paused simulation).
+  if (!explosions_.empty() && !explosionFrameTimer_.isActive()) explosionFrameTimer_.start();
 
   glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -669,6 +893,7 @@ void SceneView::paintGL() {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
+  drawExplosions(viewProjection, eye);
 
   // Leave the state as Qt's compositing expects it.
   glBindVertexArray(0);

@@ -1,14 +1,19 @@
 #pragma once
 // The 3D view of a running scene: OpenGL 3.3 core, all balls in one instanced draw call of
-// ray-cast spheres.
+// ray-cast spheres, and additive sparks where they collide.
 
 #include "camera.h"
+#include "explosion_pool.h"
 #include "render_scene.h"
+#include "run_stats.h"
 
+#include <QElapsedTimer>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QTimer>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -45,6 +50,20 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void setFollowedBall(int index);
   int followedBall() const { return followedBall_; }
 
+  // A yellow spark at each collision's contact point, sized by the ball involved, fading out
+  // over ExplosionPool::kLifetime of real time (also while the simulation is paused).
+  void addExplosions(const std::vector<carom::CollisionRecord>& collisions);
+  // Alive at the last frame or addition.
+  int liveExplosions() const { return explosions_.count(); }
+  // Explosions that did not fit in the pool since the view was made.
+  std::uint64_t droppedExplosions() const { return explosions_.dropped(); }
+  // Disabling also removes the ones showing.
+  void setExplosionsEnabled(bool enabled);
+  bool explosionsEnabled() const { return explosionsEnabled_; }
+  // At most this many at once (default 20); more are dropped, not queued.
+  void setExplosionLimit(int limit);
+  int explosionLimit() const { return explosions_.limit(); }
+
  public slots:
   // Home: the default direction, framing the scene's bounds.
   void frameScene();
@@ -67,6 +86,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
  private:
   void releaseGl();
   void createCylinderMesh();
+  void createExplosionData();
+  void drawExplosions(const QMatrix4x4& viewProjection, const QVector3D& eye);
+  double clockSeconds() const;
   void uploadStaticData();
   void uploadBallPositions();
   void followBall();
@@ -78,6 +100,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   int followedBall_ = -1;
   bool autoFrame_ = true;
   QPoint lastMousePosition_;
+  ExplosionPool explosions_;
+  bool explosionsEnabled_ = true;
+  QElapsedTimer clock_;
+  QTimer explosionFrameTimer_;  // keeps frames coming while explosions fade
 
   // GL state, valid between initializeGL and releaseGl.
   bool glReady_ = false;
@@ -86,9 +112,14 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
+  std::unique_ptr<QOpenGLShaderProgram> explosionProgram_;
   GLuint ballVao_ = 0;
   GLuint planeVao_ = 0;
   GLuint cylinderVao_ = 0;
+  GLuint explosionVao_ = 0;
+  GLuint explosionCornerBuffer_ = 0;
+  GLuint explosionInstanceBuffer_ = 0;
+  GLuint sparkTexture_ = 0;
   GLuint ballCornerBuffer_ = 0;
   GLuint ballPositionBuffer_ = 0;
   GLuint ballAttributeBuffer_ = 0;
