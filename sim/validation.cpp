@@ -1,5 +1,6 @@
 #include "validation.h"
 
+#include "shapes.h"
 #include "tolerances.h"
 
 #include <algorithm>
@@ -197,17 +198,15 @@ bool overlaps(double depth, double radiusSum) {
   return depth > tol::kTouchFraction * radiusSum;
 }
 
-struct UnitPlane {
+// Shapes that passed their own checks, with their scene index, for the overlap tests.
+struct IndexedPlane {
   std::size_t index;
-  Vec3 point;
-  Vec3 normal;  // unit length
+  PlaneShape shape;
 };
 
-struct UnitCylinder {
+struct IndexedCylinder {
   std::size_t index;
-  Vec3 point;
-  Vec3 axis;  // unit length
-  double radius;
+  CylinderShape shape;
 };
 
 // Finds the balls that overlap earlier balls with a grid per power-of-two size class: each ball
@@ -339,8 +338,8 @@ class BallOverlapFinder {
   std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
 };
 
-void checkBalls(const Scene& scene, const std::vector<UnitPlane>& planes,
-                const std::vector<UnitCylinder>& cylinders, ErrorList& errors) {
+void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
+                const std::vector<IndexedCylinder>& cylinders, ErrorList& errors) {
   const auto& balls = scene.balls;
   std::vector<bool> usable(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) usable[i] = checkBall(balls[i], i, nullptr);
@@ -353,8 +352,8 @@ void checkBalls(const Scene& scene, const std::vector<UnitPlane>& planes,
     }
     const Ball& ball = balls[i];
     const std::string path = indexed("balls", i) + ".position";
-    for (const UnitPlane& plane : planes) {
-      const double distance = (ball.position - plane.point).dot(plane.normal);
+    for (const IndexedPlane& plane : planes) {
+      const double distance = plane.shape.gap(ball.position, 0.0);
       if (!overlaps(ball.radius - distance, ball.radius)) continue;
       const std::string other = indexed("planes", plane.index);
       if (distance < 0.0)
@@ -363,10 +362,9 @@ void checkBalls(const Scene& scene, const std::vector<UnitPlane>& planes,
       else
         errors.add(path, "overlaps " + other + " by " + formatDepth(ball.radius - distance));
     }
-    for (const UnitCylinder& cylinder : cylinders) {
-      const Vec3 offset = ball.position - cylinder.point;
-      const double distance = (offset - offset.dot(cylinder.axis) * cylinder.axis).norm();
-      const double radiusSum = ball.radius + cylinder.radius;
+    for (const IndexedCylinder& cylinder : cylinders) {
+      const double distance = cylinder.shape.gap(ball.position, 0.0) + cylinder.shape.radius;
+      const double radiusSum = ball.radius + cylinder.shape.radius;
       if (overlaps(radiusSum - distance, radiusSum))
         errors.add(path, "overlaps " + indexed("cylinders", cylinder.index) + " by " +
                              formatDepth(radiusSum - distance));
@@ -390,18 +388,13 @@ std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxEr
   checkWorld(scene.world, errors);
 
   // Only well-formed planes and cylinders take part in overlap tests; the others are reported.
-  std::vector<UnitPlane> planes;
-  for (std::size_t i = 0; i < scene.planes.size() && !errors.full(); ++i) {
-    const Plane& plane = scene.planes[i];
-    if (checkPlane(plane, i, &errors))
-      planes.push_back({i, plane.point, plane.normal.normalized()});
-  }
-  std::vector<UnitCylinder> cylinders;
-  for (std::size_t i = 0; i < scene.cylinders.size() && !errors.full(); ++i) {
-    const Cylinder& cylinder = scene.cylinders[i];
-    if (checkCylinder(cylinder, i, &errors))
-      cylinders.push_back({i, cylinder.point, cylinder.axis.normalized(), cylinder.radius});
-  }
+  std::vector<IndexedPlane> planes;
+  for (std::size_t i = 0; i < scene.planes.size() && !errors.full(); ++i)
+    if (checkPlane(scene.planes[i], i, &errors)) planes.push_back({i, planeShape(scene.planes[i])});
+  std::vector<IndexedCylinder> cylinders;
+  for (std::size_t i = 0; i < scene.cylinders.size() && !errors.full(); ++i)
+    if (checkCylinder(scene.cylinders[i], i, &errors))
+      cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
   if (!errors.full()) checkBalls(scene, planes, cylinders, errors);
   return errors.take();
 }

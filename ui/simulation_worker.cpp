@@ -1,5 +1,6 @@
 #include "simulation_worker.h"
 
+#include "measures.h"
 #include "simulation.h"
 
 #include <QThread>
@@ -134,13 +135,19 @@ void SimulationWorker::publish() {
   if (!simulation_) return;
   auto snapshot = std::make_shared<SimulationSnapshot>();
   snapshot->time = simulation_->time();
-  snapshot->positions = simulation_->positions();
+  // One read of the state serves the positions and both energies.
+  std::vector<Vec3> velocities;
+  for (const BallState& ball : simulation_->state()) {
+    snapshot->positions.push_back(ball.position);
+    velocities.push_back(ball.velocity);
+  }
   std::vector<CollisionRecord> fresh = simulation_->takeCollisions();
   if (fresh.size() > kMaxPendingCollisions)
     fresh.erase(fresh.begin(), fresh.end() - kMaxPendingCollisions);
   snapshot->collisions = std::move(fresh);
-  snapshot->kineticEnergy = simulation_->kineticEnergy();
-  snapshot->potentialEnergy = simulation_->potentialEnergy();
+  snapshot->kineticEnergy = kineticEnergy(simulation_->bodies(), velocities);
+  snapshot->potentialEnergy =
+      potentialEnergy(simulation_->bodies(), simulation_->world().gravity, snapshot->positions);
   snapshot->initialEnergy = initialEnergy_;
   snapshot->stats = simulation_->stats();
   snapshot->world = simulation_->world();
