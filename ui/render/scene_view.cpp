@@ -536,6 +536,16 @@ void SceneView::keyPressEvent(QKeyEvent* event) {
 
 // ---- GL -----------------------------------------------------------------------------------------
 
+// One vertex attribute from the bound buffer: floats as they are, bytes as 0..1; per-instance
+// attributes advance once per instance.
+void SceneView::vertexAttribute(GLuint location, GLint components, GLenum type, GLsizei stride,
+                                std::size_t offset, bool perInstance) {
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, components, type, type == GL_FLOAT ? GL_FALSE : GL_TRUE, stride,
+                        byteOffset(offset));
+  if (perInstance) glVertexAttribDivisor(location, 1);
+}
+
 void SceneView::initializeGL() {
   initializeOpenGLFunctions();
   // A widget moved to another window gets a new context; the old one's resources go with it.
@@ -567,61 +577,36 @@ void SceneView::initializeGL() {
   // colour (set once per scene), from two buffers so that a frame uploads only the centres.
   glBindVertexArray(ballVao_);
   glBindBuffer(GL_ARRAY_BUFFER, ballCornerBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  vertexAttribute(0, 2, GL_FLOAT, 2 * sizeof(float), 0, false);
   glBindBuffer(GL_ARRAY_BUFFER, ballPositionBuffer_);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Float3), nullptr);
-  glVertexAttribDivisor(1, 1);
+  vertexAttribute(1, 3, GL_FLOAT, sizeof(Float3), 0, true);
   glBindBuffer(GL_ARRAY_BUFFER, ballAttributeBuffer_);
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(BallAttributes),
-                        byteOffset(offsetof(BallAttributes, radius)));
-  glVertexAttribDivisor(2, 1);
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(BallAttributes),
-                        byteOffset(offsetof(BallAttributes, color)));
-  glVertexAttribDivisor(3, 1);
+  vertexAttribute(2, 1, GL_FLOAT, sizeof(BallAttributes), offsetof(BallAttributes, radius), true);
+  vertexAttribute(3, 4, GL_UNSIGNED_BYTE, sizeof(BallAttributes), offsetof(BallAttributes, color),
+                  true);
 
   glBindVertexArray(planeVao_);
   glBindBuffer(GL_ARRAY_BUFFER, planeVertexBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PlaneVertex),
-                        byteOffset(offsetof(PlaneVertex, position)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(PlaneVertex),
-                        byteOffset(offsetof(PlaneVertex, normal)));
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(PlaneVertex),
-                        byteOffset(offsetof(PlaneVertex, grid)));
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(PlaneVertex),
-                        byteOffset(offsetof(PlaneVertex, color)));
+  vertexAttribute(0, 3, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, position), false);
+  vertexAttribute(1, 3, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, normal), false);
+  vertexAttribute(2, 2, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, grid), false);
+  vertexAttribute(3, 4, GL_UNSIGNED_BYTE, sizeof(PlaneVertex), offsetof(PlaneVertex, color), false);
 
   glBindVertexArray(cylinderVao_);
   glBindBuffer(GL_ARRAY_BUFFER, cylinderVertexBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(CylinderVertex),
-                        byteOffset(offsetof(CylinderVertex, local)));
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(CylinderVertex),
-                        byteOffset(offsetof(CylinderVertex, normal)));
+  vertexAttribute(0, 3, GL_FLOAT, sizeof(CylinderVertex), offsetof(CylinderVertex, local), false);
+  vertexAttribute(1, 3, GL_FLOAT, sizeof(CylinderVertex), offsetof(CylinderVertex, normal), false);
   glBindBuffer(GL_ARRAY_BUFFER, cylinderInstanceBuffer_);
   const std::array<std::pair<GLint, std::size_t>, 3> floatFields = {
       std::pair<GLint, std::size_t>{3, offsetof(CylinderInstance, start)},
       {3, offsetof(CylinderInstance, end)},
       {1, offsetof(CylinderInstance, radius)}};
   for (GLuint location = 2; const auto& [components, offset] : floatFields) {
-    glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, sizeof(CylinderInstance),
-                          byteOffset(offset));
-    glVertexAttribDivisor(location, 1);
+    vertexAttribute(location, components, GL_FLOAT, sizeof(CylinderInstance), offset, true);
     ++location;
   }
-  glEnableVertexAttribArray(5);
-  glVertexAttribPointer(5, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(CylinderInstance),
-                        byteOffset(offsetof(CylinderInstance, color)));
-  glVertexAttribDivisor(5, 1);
+  vertexAttribute(5, 4, GL_UNSIGNED_BYTE, sizeof(CylinderInstance),
+                  offsetof(CylinderInstance, color), true);
 
   createExplosionData();
 
@@ -705,21 +690,14 @@ void SceneView::createExplosionData() {
 
   glBindVertexArray(explosionVao_);
   glBindBuffer(GL_ARRAY_BUFFER, explosionCornerBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Float3), nullptr);
+  vertexAttribute(0, 3, GL_FLOAT, sizeof(Float3), 0, false);
   glBindBuffer(GL_ARRAY_BUFFER, explosionInstanceBuffer_);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
-                        byteOffset(offsetof(ExplosionInstance, center)));
-  glVertexAttribDivisor(1, 1);
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
-                        byteOffset(offsetof(ExplosionInstance, halfSize)));
-  glVertexAttribDivisor(2, 1);
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, sizeof(ExplosionInstance),
-                        byteOffset(offsetof(ExplosionInstance, alpha)));
-  glVertexAttribDivisor(3, 1);
+  vertexAttribute(1, 3, GL_FLOAT, sizeof(ExplosionInstance), offsetof(ExplosionInstance, center),
+                  true);
+  vertexAttribute(2, 1, GL_FLOAT, sizeof(ExplosionInstance), offsetof(ExplosionInstance, halfSize),
+                  true);
+  vertexAttribute(3, 1, GL_FLOAT, sizeof(ExplosionInstance), offsetof(ExplosionInstance, alpha),
+                  true);
 
   const QImage spark = makeSparkImage();
   glGenTextures(1, &sparkTexture_);

@@ -85,6 +85,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
  private:
   void releaseGl();
+  void vertexAttribute(GLuint location, GLint components, GLenum type, GLsizei stride,
+                       std::size_t offset, bool perInstance);
   void createCylinderMesh();
   void createExplosionData();
   void drawExplosions(const QMatrix4x4& viewProjection, const QVector3D& eye);
