@@ -96,6 +96,8 @@ int benchmarkRender(int ballCount) {
   std::printf("view: %dx%d (device pixel ratio %.2f)%s\n", shown.width(), shown.height(),
               view->devicePixelRatioF(),
               shown == kBenchViewSize ? "" : "  -- smaller than the 1280x720 asked for");
+  std::printf("antialiasing: %s (%s renderer)\n", view->antialiasing() ? "4x" : "off",
+              view->softwareRenderer() ? "software" : "hardware");
   std::printf("run: %.2f s\n", seconds);
   std::printf("frames: %zu\n", paintTimes.size());
   std::printf("mean fps: %.1f\n", paintTimes.size() / seconds);

@@ -136,6 +136,11 @@ class TestSceneView : public QObject {
   void renderSceneDefaultsColours();
   void ballsShowTheirColours();
   void movingABallMovesItsColour();
+  void nearerBallHidesFartherOne_data();
+  void nearerBallHidesFartherOne();
+  void ballOnTheFloorIsWhole();
+  void antialiasingDefaultsByRenderer();
+  void antialiasingChangesOnlyEdges();
   void leftDragOrbits();
   void wheelZooms();
   void arrowKeysRotateAndHomeFrames();
@@ -322,6 +327,115 @@ void TestSceneView::movingABallMovesItsColour() {
   QVERIFY2(hasHue(pixelAt(view, image, to), Red), qPrintable(describe(pixelAt(view, image, to))));
   QVERIFY2(!hasHue(pixelAt(view, image, from), Red),
            qPrintable(describe(pixelAt(view, image, from))));
+}
+
+void TestSceneView::nearerBallHidesFartherOne_data() {
+  QTest::addColumn<bool>("nearerFirst");  // in the scene's order
+  QTest::newRow("nearer first") << true;
+  QTest::newRow("nearer last") << false;
+}
+
+// Balls are drawn as flat discs, nearest first; the depth test must still hide the farther ball
+// wherever the nearer one covers it, whatever their order in the scene.
+void TestSceneView::nearerBallHidesFartherOne() {
+  QFETCH(bool, nearerFirst);
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QVector3D eye = view.camera().eye();
+  const Vec3 nearer = scene.balls[1].position;
+  const Vec3 away = (nearer - Vec3(eye.x(), eye.y(), eye.z())).normalized();
+  const Vec3 across = away.cross(Vec3::UnitY()).normalized();
+  // Behind the nearer ball along the line of sight, and 0.35 to the side: within its outline.
+  const Vec3 farther = nearer + 1.5 * away + 0.35 * across;
+  const Vec3 elsewhere(0, 1, 30);  // the third ball, out of the way
+  // Green is the nearer ball, red the farther.
+  view.setBallPositions(nearerFirst ? std::vector<Vec3>{farther, nearer, elsewhere}
+                                    : std::vector<Vec3>{nearer, farther, elsewhere});
+  if (!nearerFirst) {
+    carom::Scene swapped = scene;
+    std::swap(swapped.balls[0].color, swapped.balls[1].color);
+    view.setScene(std::make_shared<const RenderScene>(makeRenderScene(swapped)));
+    view.setBallPositions({nearer, farther, elsewhere});
+  }
+  const int before = *shown.frames;
+  QTRY_VERIFY(*shown.frames > before);
+  const QImage image = view.grabFramebuffer();
+  const QRgb covered = pixelAt(view, image, farther);
+  QVERIFY2(hasHue(covered, Green), qPrintable(describe(covered)));
+  // The farther ball shows beside the nearer one.
+  const QRgb beside = pixelAt(view, image, farther + 0.45 * across);
+  QVERIFY2(hasHue(beside, Red), qPrintable(describe(beside)));
+}
+
+// The floor, drawn after the balls, must not cut into a ball resting on it.
+void TestSceneView::ballOnTheFloorIsWhole() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Vec3 resting(-1.5, 0.5, 0);  // radius 0.5: touching the floor
+  view.setBallPositions({resting, scene.balls[1].position, scene.balls[2].position});
+  const int before = *shown.frames;
+  QTRY_VERIFY(*shown.frames > before);
+  const QImage image = view.grabFramebuffer();
+  // Points of the sphere a little above where it touches the floor, on the side facing the
+  // camera, and its centre.
+  const QVector3D eye = view.camera().eye();
+  Vec3 towardsEye = Vec3(eye.x(), 0, eye.z()) - Vec3(resting.x(), 0, resting.z());
+  towardsEye.normalize();
+  for (const Vec3& point : {resting, Vec3(resting + 0.45 * towardsEye + Vec3(0, -0.15, 0))}) {
+    const QRgb pixel = pixelAt(view, image, point);
+    QVERIFY2(hasHue(pixel, Red), qPrintable(describe(pixel)));
+  }
+}
+
+void TestSceneView::antialiasingDefaultsByRenderer() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  // Mesa's llvmpipe under Xvfb in CI: off there, on with a graphics card.
+  QCOMPARE(view.antialiasing(), !view.softwareRenderer());
+  QSignalSpy changed(&view, &SceneView::antialiasingChanged);
+  view.setAntialiasing(!view.antialiasing());
+  QCOMPARE(changed.count(), 1);
+  QCOMPARE(view.antialiasing(), view.softwareRenderer());
+  view.setAntialiasing(view.antialiasing());  // no change, no signal
+  QCOMPARE(changed.count(), 1);
+}
+
+// Multisampling smooths outlines and leaves the inside of every shape as it was.
+void TestSceneView::antialiasingChangesOnlyEdges() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  view.setAntialiasing(false);
+  const QImage plain = view.grabFramebuffer();
+  view.setAntialiasing(true);
+  const QImage smooth = view.grabFramebuffer();
+  QCOMPARE(smooth.size(), plain.size());
+  int changed = 0;
+  for (int y = 0; y < plain.height(); ++y) {
+    for (int x = 0; x < plain.width(); ++x) {
+      const QRgb a = plain.pixel(x, y), b = smooth.pixel(x, y);
+      if (std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) +
+              std::abs(qBlue(a) - qBlue(b)) >
+          12)
+        ++changed;
+    }
+  }
+  // Outlines of three balls, a post and the floor's edge are a few thousand pixels of 300,000.
+  QVERIFY2(changed > 50, qPrintable(QString::number(changed)));
+  QVERIFY2(changed < plain.width() * plain.height() / 20, qPrintable(QString::number(changed)));
+  for (const carom::Ball& ball : scene.balls) {
+    const QRgb a = pixelAt(view, plain, ball.position), b = pixelAt(view, smooth, ball.position);
+    QVERIFY2(std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) +
+                     std::abs(qBlue(a) - qBlue(b)) <=
+                 6,
+             qPrintable(describe(a) + " vs " + describe(b)));
+  }
 }
 
 void TestSceneView::leftDragOrbits() {

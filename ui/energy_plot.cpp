@@ -9,6 +9,7 @@
 #include <QValueAxis>
 
 #include <algorithm>
+#include <array>
 
 namespace carom::ui {
 namespace {
@@ -17,6 +18,9 @@ namespace {
 // recent past is kept, so a long run costs the plot nothing more.
 constexpr double kMinSpacingSeconds = 0.02;
 constexpr double kWindowSeconds = 30.0;
+// Redrawing the chart for every point would cost the GUI thread several milliseconds a frame;
+// points gathered in between are drawn together at this pace.
+constexpr int kRedrawMilliseconds = 100;
 
 }  // namespace
 
@@ -48,11 +52,16 @@ EnergyPlot::EnergyPlot(QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(view);
+  redrawTimer_.setSingleShot(true);
+  redrawTimer_.setInterval(kRedrawMilliseconds);
+  connect(&redrawTimer_, &QTimer::timeout, this, &EnergyPlot::drawPending);
   clear();
 }
 
 void EnergyPlot::clear() {
   for (QLineSeries* series : {kinetic_, potential_, total_}) series->clear();
+  for (QList<QPointF>& points : pending_) points.clear();
+  redrawTimer_.stop();
   lastTime_ = -1.0;
   low_ = high_ = 0.0;
   timeAxis_->setRange(0.0, 1.0);
@@ -69,15 +78,28 @@ void EnergyPlot::add(const SimulationSnapshot& snapshot) {
   if (lastTime_ >= 0.0 && t - lastTime_ < kMinSpacingSeconds) return;
   const double kinetic = snapshot.kineticEnergy, potential = snapshot.potentialEnergy;
   const double total = kinetic + potential;
-  if (pointCount() == 0) low_ = high_ = total;
+  if (lastTime_ < 0.0) low_ = high_ = total;
   low_ = std::min({low_, kinetic, potential, total});
   high_ = std::max({high_, kinetic, potential, total});
-  kinetic_->append(t, kinetic);
-  potential_->append(t, potential);
-  total_->append(t, total);
+  pending_[0].append(QPointF(t, kinetic));
+  pending_[1].append(QPointF(t, potential));
+  pending_[2].append(QPointF(t, total));
   lastTime_ = t;
-  while (total_->count() > 0 && total_->at(0).x() < t - kWindowSeconds)
-    for (QLineSeries* series : {kinetic_, potential_, total_}) series->remove(0);
+  if (!redrawTimer_.isActive()) redrawTimer_.start();
+}
+
+void EnergyPlot::drawPending() {
+  if (pending_[2].isEmpty()) return;
+  const std::array<QLineSeries*, 3> series = {kinetic_, potential_, total_};
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    series[i]->append(pending_[i]);
+    pending_[i].clear();
+  }
+  const double t = lastTime_;
+  qsizetype old = 0;
+  while (old < total_->count() && total_->at(old).x() < t - kWindowSeconds) ++old;
+  if (old > 0)
+    for (QLineSeries* s : series) s->removePoints(0, static_cast<int>(old));
   const double first = total_->count() > 0 ? total_->at(0).x() : 0.0;
   timeAxis_->setRange(first, std::max(first + 1.0, t));
   const double margin = 0.05 * std::max(high_ - low_, 1e-9);

@@ -19,6 +19,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -73,6 +74,9 @@ MainWindow::MainWindow(QWidget* parent)
     }
   });
   fpsClock_.start();
+  statusTimer_.setSingleShot(true);
+  statusTimer_.setInterval(kStatusRefreshMilliseconds);
+  connect(&statusTimer_, &QTimer::timeout, this, &MainWindow::showStatus);
   resize(1280, 800);
 }
 
@@ -129,6 +133,19 @@ void MainWindow::buildActions() {
   explosionsAction_->setChecked(true);
   connect(explosionsAction_, &QAction::toggled, this,
           [this](bool on) { view_->setExplosionsEnabled(on); });
+
+  // Remembered once chosen; until then the view decides by its renderer.
+  antialiasingAction_ = new QAction(tr("&Antialiasing"), this);
+  antialiasingAction_->setCheckable(true);
+  QSettings settings;
+  if (settings.contains(kAntialiasingKey))
+    view_->setAntialiasing(settings.value(kAntialiasingKey).toBool());
+  antialiasingAction_->setChecked(view_->antialiasing());
+  connect(antialiasingAction_, &QAction::triggered, this, [this](bool on) {
+    QSettings().setValue(kAntialiasingKey, on);
+    view_->setAntialiasing(on);
+  });
+  connect(view_, &SceneView::antialiasingChanged, antialiasingAction_, &QAction::setChecked);
 
   muteAction_ = new QAction(tr("&Mute"), this);
   muteAction_->setShortcut(Qt::Key_F3);
@@ -211,7 +228,8 @@ void MainWindow::buildMenus() {
   }
 
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-  viewMenu->addActions({followAction_, fullScreenAction_, explosionsAction_, muteAction_});
+  viewMenu->addActions(
+      {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
   viewMenu->addSeparator();
@@ -290,6 +308,15 @@ void MainWindow::showSnapshot() {
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
   sound_->play(snapshot->collisions);
+  latestSnapshot_ = snapshot;
+  // Numbers changing sixty times a second cannot be read, and relaying out the status bar each
+  // frame costs the GUI thread; the line shows the latest snapshot a few times a second.
+  if (!statusTimer_.isActive()) statusTimer_.start();
+}
+
+void MainWindow::showStatus() {
+  const std::shared_ptr<const SimulationSnapshot> snapshot = latestSnapshot_;
+  if (!snapshot) return;
   const std::uint64_t collisions = snapshot->stats.collisions.total();
   if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
     lastCollisionTime_ = snapshot->time;  // after a reset

@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QMainWindow>
+#include <QTimer>
 
 #include <memory>
 
@@ -17,6 +18,7 @@ class QLabel;
 namespace carom::ui {
 
 class AccuracyWindow;
+struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
 }  // namespace carom::ui
@@ -54,6 +56,7 @@ class MainWindow : public QMainWindow {
   void buildToolBar();
   void buildMenus();
   void showSnapshot();
+  void showStatus();
   void changeTimeStep(double factor);
   void applyGravity();
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
@@ -64,6 +67,8 @@ class MainWindow : public QMainWindow {
   SoundBoard* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;
+  QAction* antialiasingAction_ = nullptr;
+  static constexpr const char* kAntialiasingKey = "view/antialiasing";
   carom::Scene scene_;
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;
@@ -76,6 +81,9 @@ class MainWindow : public QMainWindow {
   QComboBox* method_ = nullptr;
   QComboBox* integrator_ = nullptr;
   QLabel* status_ = nullptr;
+  static constexpr int kStatusRefreshMilliseconds = 200;
+  QTimer statusTimer_;
+  std::shared_ptr<const SimulationSnapshot> latestSnapshot_;
   int framesRendered_ = 0;
   int framesAtLastSample_ = 0;
   QElapsedTimer fpsClock_;

@@ -26,39 +26,56 @@ namespace {
 constexpr const char* kLightingGlsl = R"(
 uniform vec3 eyePosition;
 uniform vec3 lightDirection;  // towards the light, unit length
+const vec3 groundAmbient = vec3(0.30, 0.28, 0.27);
+const vec3 skyAmbient = vec3(0.46, 0.48, 0.52);
+const float diffuseStrength = 0.62;
 
 vec3 shade(vec3 base, vec3 normal, vec3 position, float shininess, float specularStrength) {
   vec3 n = normalize(normal);
   vec3 toEye = normalize(eyePosition - position);
-  vec3 ambient = mix(vec3(0.30, 0.28, 0.27), vec3(0.46, 0.48, 0.52), 0.5 + 0.5 * n.y);
+  vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * n.y);
   float diffuse = max(dot(n, lightDirection), 0.0);
   vec3 halfway = normalize(lightDirection + toEye);
   float highlight = diffuse > 0.0 ? pow(max(dot(n, halfway), 0.0), shininess) : 0.0;
-  return base * (ambient + 0.62 * diffuse) + vec3(specularStrength * highlight);
+  return base * (ambient + diffuseStrength * diffuse) + vec3(specularStrength * highlight);
 }
 )";
 
-// Balls are ray-cast: one camera-facing square per ball, just large enough to hold the
+// Balls are impostors: one camera-facing square per ball, just large enough to hold the
 // sphere's outline, and the fragment shader finds the sphere's surface and depth inside it.
-// Four vertices a ball instead of a mesh keeps thousands of balls cheap on software renderers.
+// Software renderers set the budget:
+// - Four vertices a ball instead of a mesh, drawn as plain indexed triangles: llvmpipe pays a
+//   fixed cost for each instance of an instanced draw.
+// - Everything that is the same across a ball (the light and the view in the ball's own frame)
+//   is worked out per vertex, and the surface is the sphere seen head-on. That is exact at the
+//   centre of the view and off by the perspective across one ball elsewhere, which the eye
+//   does not see; it halved the time for 1,000 balls against ray casting each pixel.
+// - The depth is the square's own, a disc through the centre, not the sphere's surface: then
+//   the depth test runs before the shading, and with the balls drawn nearest first, hidden
+//   pixels are never shaded (5,000 balls: 15.6 -> 11.9 ms a frame). The disc lies inside the
+//   ball, so a plane, cylinder or ball that does not cut into the ball is drawn in front of it
+//   exactly where it is in front of the sphere, except that two balls overlapping on the
+//   screen are ordered by their centres.
 constexpr const char* kBallVertexGlsl = R"(#version 330 core
-layout(location = 0) in vec2 corner;  // of the square, in [-1, 1]
 layout(location = 1) in vec3 center;
 layout(location = 2) in float radius;
 layout(location = 3) in vec4 color;
 uniform mat4 viewProjection;
 uniform vec3 eyePosition;
+uniform vec3 lightDirection;
 uniform float pixelAngle;  // view height over distance, per device pixel
 out vec2 outline;          // position in the square; the sphere's outline is the unit circle
-out vec3 squarePosition;
-flat out vec3 sphereCenter;
-flat out float sphereRadius;
+// In the ball's frame: x right, y up, z towards the eye.
+flat out vec3 light;
+flat out vec3 halfway;
+flat out vec3 worldUp;
 flat out vec3 baseColor;
+flat out float edgePixels;  // outline radius in pixels
 void main() {
+  // The square's corner in [-1, 1]^2 from the vertex's place among its ball's four.
+  vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vec3 toCenter = center - eyePosition;
   float distance = length(toCenter);
-  sphereCenter = center;
-  sphereRadius = radius;
   baseColor = color.rgb;
   if (distance <= radius * 1.0001) {  // the eye is inside: nothing sensible to draw
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
@@ -68,41 +85,44 @@ void main() {
   vec3 helper = abs(forward.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
   vec3 right = normalize(cross(forward, helper));
   vec3 up = cross(right, forward);
+  mat3 toBall = transpose(mat3(right, up, -forward));
+  light = toBall * lightDirection;
+  halfway = normalize(light + vec3(0.0, 0.0, 1.0));
+  worldUp = toBall * vec3(0.0, 1.0, 0.0);
+
   // The cone of rays touching the sphere cuts the plane through its centre in this circle.
   float outlineRadius = radius * distance / sqrt(distance * distance - radius * radius);
+  edgePixels = outlineRadius / (pixelAngle * distance);
   // Plus a pixel and a half, for the soft edge.
   float halfSize = outlineRadius + 1.5 * pixelAngle * distance;
   outline = corner * (halfSize / outlineRadius);
-  squarePosition = center + halfSize * (corner.x * right + corner.y * up);
-  gl_Position = viewProjection * vec4(squarePosition, 1.0);
+  gl_Position = viewProjection * vec4(center + halfSize * (corner.x * right + corner.y * up), 1.0);
 }
 )";
 
 constexpr const char* kBallFragmentGlsl = R"(
-uniform mat4 viewProjection;
 in vec2 outline;
-in vec3 squarePosition;
-flat in vec3 sphereCenter;
-flat in float sphereRadius;
+flat in vec3 light;
+flat in vec3 halfway;
+flat in vec3 worldUp;
 flat in vec3 baseColor;
+flat in float edgePixels;
 out vec4 fragColor;
 void main() {
+  float fromCenter2 = dot(outline, outline);
   // Coverage of this pixel by the outline, which alpha-to-coverage turns into samples.
-  float pixelsPerUnit = 1.0 / max(length(vec2(dFdx(outline.x), dFdy(outline.x))), 1e-6);
-  float coverage = clamp((1.0 - length(outline)) * pixelsPerUnit + 0.5, 0.0, 1.0);
+  float coverage = clamp((1.0 - sqrt(fromCenter2)) * edgePixels + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
-
-  vec3 ray = normalize(squarePosition - eyePosition);
-  vec3 fromCenter = eyePosition - sphereCenter;
-  float b = dot(fromCenter, ray);
-  float c = dot(fromCenter, fromCenter) - sphereRadius * sphereRadius;
-  // Rays that just miss (the soft edge) use the grazing point.
-  float t = -b - sqrt(max(b * b - c, 0.0));
-  vec3 hit = eyePosition + t * ray;
-  vec4 clip = viewProjection * vec4(hit, 1.0);
-  gl_FragDepth = 0.5 + 0.5 * clip.z / clip.w;
-  vec3 normal = (hit - sphereCenter) / sphereRadius;
-  fragColor = vec4(shade(baseColor, normal, hit, 40.0, 0.35), coverage);
+  // Pixels of the soft edge just outside take the outline's normal.
+  vec3 n = vec3(outline, sqrt(max(1.0 - fromCenter2, 0.0)));
+  vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * dot(n, worldUp));
+  float diffuse = max(dot(n, light), 0.0);
+  // The shininess of 40 by squaring, far cheaper than pow() in a software renderer.
+  float h = max(dot(n, halfway), 0.0);
+  float h2 = h * h, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8, h32 = h16 * h16;
+  float highlight = diffuse > 0.0 ? h32 * h8 : 0.0;
+  fragColor = vec4(baseColor * (ambient + diffuseStrength * diffuse) + vec3(0.35 * highlight),
+                   coverage);
 }
 )";
 
@@ -269,6 +289,8 @@ struct ExplosionInstance {
 // ---- Meshes -------------------------------------------------------------------------------------
 
 constexpr int kCylinderSegments = 40;
+constexpr std::size_t kVerticesPerBall = 4;  // a square, as two triangles
+constexpr int kIndicesPerBall = 6;
 
 // ---- Explosions --------------------------------------------------------------------------------
 
@@ -311,7 +333,7 @@ QImage makeSparkImage() {
 
 // ---- Interaction --------------------------------------------------------------------------------
 
-constexpr int kSamples = 4;  // multisampling of the view's framebuffer
+constexpr GLint kSamples = 4;  // multisampling, when antialiasing is on
 constexpr double kOrbitRadiansPerPixel = 0.008;
 constexpr double kWheelStepAngle = 120.0;  // eighths of a degree in one wheel notch
 
@@ -344,9 +366,6 @@ std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertex, const cha
 }  // namespace
 
 SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
-  QSurfaceFormat multisampled = QSurfaceFormat::defaultFormat();
-  multisampled.setSamples(kSamples);
-  setFormat(multisampled);
   setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(160, 120);
   camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
@@ -372,7 +391,7 @@ void SceneView::setDefaultFormat() {
   format.setDepthBufferSize(24);
   // No samples here: the default format is also the top-level window's, and a multisampled
   // window only slows Qt's compositing (measured: 31 -> 22 frames/s with 5,000 balls on
-  // llvmpipe). The view asks for its own multisampled framebuffer instead.
+  // llvmpipe). The view multisamples in a framebuffer of its own, when antialiasing is on.
   format.setSamples(0);
   QSurfaceFormat::setDefaultFormat(format);
 }
@@ -548,6 +567,14 @@ void SceneView::vertexAttribute(GLuint location, GLint components, GLenum type, 
 
 void SceneView::initializeGL() {
   initializeOpenGLFunctions();
+  const bool antialiasingBefore = antialiasing();
+  const QByteArray renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  softwareRenderer_ =
+      renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swrast");
+  GLint maxSamples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  samples_ = std::min(kSamples, maxSamples);
+  if (antialiasing() != antialiasingBefore) emit antialiasingChanged(antialiasing());
   // A widget moved to another window gets a new context; the old one's resources go with it.
   connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &SceneView::releaseGl,
           Qt::UniqueConnection);
@@ -559,7 +586,7 @@ void SceneView::initializeGL() {
 
   std::array<GLuint, 6> buffers{};
   glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  ballCornerBuffer_ = buffers[0];
+  ballIndexBuffer_ = buffers[0];
   ballPositionBuffer_ = buffers[1];
   ballAttributeBuffer_ = buffers[2];
   planeVertexBuffer_ = buffers[3];
@@ -569,21 +596,18 @@ void SceneView::initializeGL() {
   glGenVertexArrays(1, &planeVao_);
   glGenVertexArrays(1, &cylinderVao_);
 
-  const std::vector<float> squareCorners = {-1.0f, -1.0f, 1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f};
-  uploadBuffer(this, ballCornerBuffer_, squareCorners, GL_STATIC_DRAW);
   createCylinderMesh();
 
-  // Balls: the shared square, then per instance a centre (updated every frame) and a radius and
-  // colour (set once per scene), from two buffers so that a frame uploads only the centres.
+  // Balls: four vertices each, with a centre (updated every frame) and a radius and colour (set
+  // once per scene) from two buffers, so that a frame uploads only the centres.
   glBindVertexArray(ballVao_);
-  glBindBuffer(GL_ARRAY_BUFFER, ballCornerBuffer_);
-  vertexAttribute(0, 2, GL_FLOAT, 2 * sizeof(float), 0, false);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ballIndexBuffer_);
   glBindBuffer(GL_ARRAY_BUFFER, ballPositionBuffer_);
-  vertexAttribute(1, 3, GL_FLOAT, sizeof(Float3), 0, true);
+  vertexAttribute(1, 3, GL_FLOAT, sizeof(Float3), 0, false);
   glBindBuffer(GL_ARRAY_BUFFER, ballAttributeBuffer_);
-  vertexAttribute(2, 1, GL_FLOAT, sizeof(BallAttributes), offsetof(BallAttributes, radius), true);
+  vertexAttribute(2, 1, GL_FLOAT, sizeof(BallAttributes), offsetof(BallAttributes, radius), false);
   vertexAttribute(3, 4, GL_UNSIGNED_BYTE, sizeof(BallAttributes), offsetof(BallAttributes, color),
-                  true);
+                  false);
 
   glBindVertexArray(planeVao_);
   glBindBuffer(GL_ARRAY_BUFFER, planeVertexBuffer_);
@@ -621,6 +645,7 @@ void SceneView::initializeGL() {
 void SceneView::releaseGl() {
   if (!glReady_) return;
   glReady_ = false;
+  releaseMultisampleBuffer();
   ballProgram_.reset();
   planeProgram_.reset();
   cylinderProgram_.reset();
@@ -630,15 +655,90 @@ void SceneView::releaseGl() {
   glDeleteVertexArrays(1, &explosionVao_);
   glDeleteTextures(1, &sparkTexture_);
   explosionCornerBuffer_ = explosionInstanceBuffer_ = explosionVao_ = sparkTexture_ = 0;
-  const std::array<GLuint, 6> buffers = {ballCornerBuffer_,     ballPositionBuffer_,
+  const std::array<GLuint, 6> buffers = {ballIndexBuffer_,      ballPositionBuffer_,
                                          ballAttributeBuffer_,  planeVertexBuffer_,
                                          cylinderVertexBuffer_, cylinderInstanceBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
   const std::array<GLuint, 3> arrays = {ballVao_, planeVao_, cylinderVao_};
   glDeleteVertexArrays(static_cast<GLsizei>(arrays.size()), arrays.data());
-  ballCornerBuffer_ = ballPositionBuffer_ = ballAttributeBuffer_ = 0;
+  ballIndexBuffer_ = ballPositionBuffer_ = ballAttributeBuffer_ = 0;
   planeVertexBuffer_ = cylinderVertexBuffer_ = cylinderInstanceBuffer_ = 0;
   ballVao_ = planeVao_ = cylinderVao_ = 0;
+}
+
+// The element buffer, which belongs to the balls' vertex array object (bound), lists the balls'
+// squares nearest first.
+void SceneView::sortBallsFrontToBack(const QVector3D& eye) {
+  const std::size_t count = static_cast<std::size_t>(uploadedBallCount_);
+  const Vec3 eyePoint(eye.x(), eye.y(), eye.z());
+  std::vector<std::pair<float, GLuint>> order(count);
+  for (std::size_t i = 0; i < count; ++i)
+    order[i] = {static_cast<float>((ballPositions_[i] - eyePoint).squaredNorm()),
+                static_cast<GLuint>(i)};
+  std::sort(order.begin(), order.end());
+  std::vector<GLuint> indices;
+  indices.reserve(kIndicesPerBall * count);
+  for (const auto& [distance, ball] : order) {
+    const auto first = static_cast<GLuint>(kVerticesPerBall * ball);
+    indices.insert(indices.end(), {first, first + 1, first + 2, first + 2, first + 1, first + 3});
+  }
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
+               indices.data(), GL_STREAM_DRAW);
+}
+
+bool SceneView::antialiasing() const {
+  return antialiasingChoice_.value_or(!softwareRenderer_);
+}
+
+void SceneView::setAntialiasing(bool on) {
+  const bool before = antialiasing();
+  antialiasingChoice_ = on;
+  if (antialiasing() != before) emit antialiasingChanged(antialiasing());
+  update();
+}
+
+bool SceneView::bindMultisampleBuffer() {
+  const QSize size(std::max(1, static_cast<int>(std::lround(width() * devicePixelRatioF()))),
+                   std::max(1, static_cast<int>(std::lround(height() * devicePixelRatioF()))));
+  if (multisampleFramebuffer_ == 0 || size != multisampleSize_) {
+    releaseMultisampleBuffer();
+    glGenFramebuffers(1, &multisampleFramebuffer_);
+    std::array<GLuint, 2> buffers{};
+    glGenRenderbuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+    multisampleColor_ = buffers[0];
+    multisampleDepth_ = buffers[1];
+    glBindFramebuffer(GL_FRAMEBUFFER, multisampleFramebuffer_);
+    glBindRenderbuffer(GL_RENDERBUFFER, multisampleColor_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, size.width(),
+                                     size.height());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              multisampleColor_);
+    glBindRenderbuffer(GL_RENDERBUFFER, multisampleDepth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24, size.width(),
+                                     size.height());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                              multisampleDepth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, 0);
+    multisampleSize_ = size;
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      qWarning("SceneView: no multisampled framebuffer; drawing without antialiasing");
+      releaseMultisampleBuffer();
+      samples_ = 0;
+      glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+      return false;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, multisampleFramebuffer_);
+  return true;
+}
+
+void SceneView::releaseMultisampleBuffer() {
+  if (multisampleFramebuffer_ == 0) return;
+  glDeleteFramebuffers(1, &multisampleFramebuffer_);
+  const std::array<GLuint, 2> buffers = {multisampleColor_, multisampleDepth_};
+  glDeleteRenderbuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+  multisampleFramebuffer_ = multisampleColor_ = multisampleDepth_ = 0;
+  multisampleSize_ = QSize();
 }
 
 void SceneView::createCylinderMesh() {
@@ -711,7 +811,8 @@ void SceneView::createExplosionData() {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   // Mipmaps, because a distant spark covers only a few pixels.
   glGenerateMipmap(GL_TEXTURE_2D);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  // One mipmap level at a time: half the texture reads of blending two, and sparks are soft.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
@@ -760,7 +861,8 @@ void SceneView::uploadStaticData() {
   if (scene_) {
     for (std::size_t i = 0; i < scene_->ballRadii.size(); ++i) {
       const QColor color = i < scene_->ballColors.size() ? scene_->ballColors[i] : QColor(Qt::gray);
-      balls.push_back({static_cast<float>(scene_->ballRadii[i]), pack(color)});
+      balls.insert(balls.end(), kVerticesPerBall,
+                   {static_cast<float>(scene_->ballRadii[i]), pack(color)});
     }
     const double spacing = scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0;
     for (const RenderPlane& plane : scene_->planes) {
@@ -800,8 +902,10 @@ void SceneView::uploadBallPositions() {
   positionsDirty_ = false;
   const std::size_t count =
       scene_ ? std::min(ballPositions_.size(), scene_->ballRadii.size()) : std::size_t{0};
-  std::vector<Float3> centers(count);
-  for (std::size_t i = 0; i < count; ++i) centers[i] = toFloat3(ballPositions_[i]);
+  std::vector<Float3> centers(kVerticesPerBall * count);
+  for (std::size_t i = 0; i < count; ++i)
+    std::fill_n(centers.begin() + kVerticesPerBall * i, kVerticesPerBall,
+                toFloat3(ballPositions_[i]));
   glBindBuffer(GL_ARRAY_BUFFER, ballPositionBuffer_);
   // Orphaning: a fresh allocation lets the driver keep drawing from last frame's copy.
   const auto bytes = static_cast<GLsizeiptr>(centers.size() * sizeof(Float3));
@@ -820,13 +924,11 @@ void SceneView::paintGL() {
   // else changes (a paused simulation).
   if (!explosions_.empty() && !explosionFrameTimer_.isActive()) explosionFrameTimer_.start();
 
+  const bool multisampled = antialiasing() && samples_ > 1 && bindMultisampleBuffer();
   glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  // Also hides the walls seen from outside (their front faces point into the room), which is
-  // what lets the camera look in from beyond them.
-  glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glFrontFace(GL_CCW);
 
@@ -843,16 +945,9 @@ void SceneView::paintGL() {
     program.setUniformValue("lightDirection", light);
   };
 
-  if (planeVertexCount_ > 0) {
-    use(*planeProgram_);
-    glBindVertexArray(planeVao_);
-    glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
-  }
-  if (cylinderInstanceCount_ > 0) {
-    use(*cylinderProgram_);
-    glBindVertexArray(cylinderVao_);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, cylinderVertexCount_, cylinderInstanceCount_);
-  }
+  // Balls first: most of the walls and floor behind them then fail the depth test before their
+  // shading runs, which is most of the frame on a software renderer.
+  glDisable(GL_CULL_FACE);
   if (uploadedBallCount_ > 0) {
     use(*ballProgram_);
     // Per device pixel, so that the soft edge is a pixel wide on any screen.
@@ -862,16 +957,38 @@ void SceneView::paintGL() {
     ballProgram_->setUniformValue("pixelAngle",
                                   static_cast<float>(viewHeightAtUnitDistance / deviceHeight));
     glBindVertexArray(ballVao_);
-    // The squares face the camera by construction; alpha-to-coverage gives the ray-cast outline
+    sortBallsFrontToBack(eye);
+    // The squares face the camera by construction; alpha-to-coverage gives the impostor outline
     // the same smooth edge multisampling gives triangles. Alpha itself stays 1 in the image.
-    glDisable(GL_CULL_FACE);
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, uploadedBallCount_);
+    glDrawElements(GL_TRIANGLES, kIndicesPerBall * uploadedBallCount_, GL_UNSIGNED_INT, nullptr);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
+  // Also hides the walls seen from outside (their front faces point into the room), which is
+  // what lets the camera look in from beyond them.
+  glEnable(GL_CULL_FACE);
+  if (cylinderInstanceCount_ > 0) {
+    use(*cylinderProgram_);
+    glBindVertexArray(cylinderVao_);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, cylinderVertexCount_, cylinderInstanceCount_);
+  }
+  if (planeVertexCount_ > 0) {
+    use(*planeProgram_);
+    glBindVertexArray(planeVao_);
+    glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
+  }
   drawExplosions(viewProjection, eye);
+
+  if (multisampled) {
+    const QSize size = multisampleSize_;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampleFramebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+    glBlitFramebuffer(0, 0, size.width(), size.height(), 0, 0, size.width(), size.height(),
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+  }
 
   // Leave the state as Qt's compositing expects it.
   glBindVertexArray(0);

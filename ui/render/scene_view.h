@@ -11,10 +11,12 @@
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSize>
 #include <QTimer>
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QOpenGLShaderProgram;
@@ -28,9 +30,14 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
-  // OpenGL 3.3 core for every GL surface; call before QApplication exists. Each view itself
-  // renders with 4x multisampling.
+  // OpenGL 3.3 core for every GL surface; call before QApplication exists.
   static void setDefaultFormat();
+
+  // 4x multisampling. Unless set, it is on except on software renderers (llvmpipe), where it
+  // costs about half the frame rate; known once the view has been shown.
+  bool antialiasing() const;
+  void setAntialiasing(bool on);
+  bool softwareRenderer() const { return softwareRenderer_; }
 
   // The first scene set also places the camera (Camera::home); later ones keep it.
   void setScene(std::shared_ptr<const RenderScene> scene);
@@ -72,6 +79,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // After each paintGL, with how long it took including the GPU's work.
   void frameRendered(double milliseconds);
   void followedBallChanged(int index);
+  void antialiasingChanged(bool on);
 
  protected:
   void initializeGL() override;
@@ -85,6 +93,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
  private:
   void releaseGl();
+  // Binds the multisampled framebuffer, made or resized to the view; false if it cannot be.
+  bool bindMultisampleBuffer();
+  void releaseMultisampleBuffer();
+  void sortBallsFrontToBack(const QVector3D& eye);
   void vertexAttribute(GLuint location, GLint components, GLenum type, GLsizei stride,
                        std::size_t offset, bool perInstance);
   void createCylinderMesh();
@@ -104,6 +116,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   QPoint lastMousePosition_;
   ExplosionPool explosions_;
   bool explosionsEnabled_ = true;
+  std::optional<bool> antialiasingChoice_;
+  bool softwareRenderer_ = false;
   QElapsedTimer clock_;
   QTimer explosionFrameTimer_;  // keeps frames coming while explosions fade
 
@@ -115,6 +129,11 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
   std::unique_ptr<QOpenGLShaderProgram> explosionProgram_;
+  GLint samples_ = 0;
+  GLuint multisampleFramebuffer_ = 0;
+  GLuint multisampleColor_ = 0;
+  GLuint multisampleDepth_ = 0;
+  QSize multisampleSize_;
   GLuint ballVao_ = 0;
   GLuint planeVao_ = 0;
   GLuint cylinderVao_ = 0;
@@ -122,7 +141,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   GLuint explosionCornerBuffer_ = 0;
   GLuint explosionInstanceBuffer_ = 0;
   GLuint sparkTexture_ = 0;
-  GLuint ballCornerBuffer_ = 0;
+  GLuint ballIndexBuffer_ = 0;
   GLuint ballPositionBuffer_ = 0;
   GLuint ballAttributeBuffer_ = 0;
   GLuint planeVertexBuffer_ = 0;
