@@ -8,8 +8,6 @@
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QEventLoop>
-#include <QFileInfo>
-#include <QMessageBox>
 #include <QTimer>
 
 #include <algorithm>
@@ -41,7 +39,7 @@ double percentile(const std::vector<double>& sorted, double fraction) {
 // frame intervals and the longest stall of the GUI thread over 5 s, printed to stdout.
 int benchmarkRender(int ballCount) {
   carom::ui::MainWindow window;
-  window.openScene(carom::makeGasInBox(ballCount, 0.25, carom::Vec3::Zero(), 2007),
+  window.openScene(carom::makeGasInBox(ballCount, 0.25, carom::Vec3::Zero(), 2007), {},
                    QStringLiteral("gas of %1 balls").arg(ballCount));
   auto* view = qobject_cast<carom::render::SceneView*>(window.view());
   if (!view) return 1;
@@ -158,16 +156,10 @@ int main(int argc, char** argv) {
 
   carom::ui::MainWindow window;
   const carom::SceneLoadResult magicRoom = carom::loadSceneFile(":/scenes/magic-room.json");
-  window.openScene(*magicRoom.scene, "magic-room");
-  if (!parser.positionalArguments().isEmpty()) {
-    const QString file = parser.positionalArguments().first();
-    const carom::SceneLoadResult loaded = carom::loadSceneFile(file);
-    if (loaded.scene)
-      window.openScene(*loaded.scene, QFileInfo(file).completeBaseName());
-    else
-      QMessageBox::warning(&window, QApplication::translate("main", "Cannot open scene"),
-                           loaded.error);
-  }
+  window.openScene(*magicRoom.scene, {}, "magic-room");
+  // A broken file gets a dialog with the loader's message; the magic room stays open.
+  if (!parser.positionalArguments().isEmpty())
+    window.openFile(parser.positionalArguments().first(), false);
   window.show();
   if (parser.isSet(screenshot)) {
     // For the README's pictures: run a while in real time, then save what the window shows.

@@ -70,10 +70,12 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
 }
 
 void EventEngine::buildGrid(const std::vector<BallState>& state) {
-  Vec3 lower, upper;
-  gridBounds(bodies_, state, lower, upper);
-  // Cells a little wider than the largest diameter, so contacts never skip a cell.
-  const double cellSize = std::max(2.0 * bodies_.maxRadius * (1.0 + 1e-9), 1e-300);
+  Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();
+  if (!particles_.empty()) gridBounds(bodies_, state, lower, upper);
+  // Cells a little wider than the largest diameter, so contacts never skip a cell. A scene
+  // without balls (being built in the editor) gets one unit cell.
+  const double cellSize =
+      particles_.empty() ? 1.0 : std::max(2.0 * bodies_.maxRadius * (1.0 + 1e-9), 1e-300);
   const std::size_t maxCells = 4 * particles_.size() + 64;
   grid_ = CellGrid(lower, upper, cellSize, maxCells);
   members_.reset(grid_.cellCount(), static_cast<int>(particles_.size()));

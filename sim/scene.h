@@ -32,6 +32,7 @@ struct ObjectInfo {
   std::string name;
   std::string color;  // "#rrggbb", or empty for the default
   std::string extra;
+  friend bool operator==(const ObjectInfo&, const ObjectInfo&) = default;
 };
 
 struct Ball : ObjectInfo {
@@ -39,12 +40,14 @@ struct Ball : ObjectInfo {
   Vec3 velocity = Vec3::Zero();
   double radius = 1.0;
   double mass = 1.0;
+  friend bool operator==(const Ball&, const Ball&) = default;
 };
 
 // Solid half-space: balls live on the side the normal points to.
 struct Plane : ObjectInfo {
   Vec3 point = Vec3::Zero();
   Vec3 normal = Vec3::UnitY();  // any non-zero length
+  friend bool operator==(const Plane&, const Plane&) = default;
 };
 
 // Infinite solid cylinder around the line through `point` along `axis`.
@@ -52,6 +55,7 @@ struct Cylinder : ObjectInfo {
   Vec3 point = Vec3::Zero();
   Vec3 axis = Vec3::UnitY();  // any non-zero length
   double radius = 1.0;
+  friend bool operator==(const Cylinder&, const Cylinder&) = default;
 };
 
 struct World {
@@ -61,6 +65,7 @@ struct World {
   Method method = Method::Exact;
   Integrator integrator = Integrator::SymplecticEuler;
   std::string extra;
+  friend bool operator==(const World&, const World&) = default;
 };
 
 struct Scene {
@@ -69,6 +74,7 @@ struct Scene {
   std::vector<Cylinder> cylinders;
   std::vector<Ball> balls;
   std::string extra;  // unknown top-level keys
+  friend bool operator==(const Scene&, const Scene&) = default;
 };
 
 // A contact's restitution: the smaller of the two objects' values, each defaulting to the world's.

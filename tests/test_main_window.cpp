@@ -52,7 +52,7 @@ class TestMainWindow : public QObject {
  private slots:
   void init() {
     window_ = std::make_unique<MainWindow>();
-    window_->openScene(magicRoom(), "magic-room");
+    window_->openScene(magicRoom(), {}, "magic-room");
     window_->resize(1000, 700);
     window_->show();
     QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
@@ -222,7 +222,7 @@ class TestMainWindow : public QObject {
 
   void saysWhenThePhysicsCannotKeepUp() {
     // 20,000 balls at a hundred times real time is more than any machine here keeps up with.
-    window_->openScene(carom::makeGasInBox(20000, 0.25, carom::Vec3::Zero(), 1), "gas");
+    window_->openScene(carom::makeGasInBox(20000, 0.25, carom::Vec3::Zero(), 1), {}, "gas");
     auto* speed = window_->findChild<QDoubleSpinBox*>("speed");
     speed->setValue(100.0);
     QTest::keyClick(window_.get(), Qt::Key_Space);

@@ -149,6 +149,7 @@ class TestSceneView : public QObject {
   void explosionsFadeOutWhilePaused();
   void explosionsBrightenTheirPlace();
   void disabledExplosionsShowNothing();
+  void rayAtInvertsProject();
 
  private:
   struct ShownView {
@@ -631,6 +632,51 @@ void TestSceneView::disabledExplosionsShowNothing() {
   view.setExplosionsEnabled(true);
   view.addExplosions(collisionsAt(4, spot, Vec3(0.1, 0, 0)));
   QCOMPARE(view.liveExplosions(), 4);
+}
+
+// Picking: the ray under the point where a world point shows passes through that point, from
+// the default framing and from a turned, closer, panned camera; and points along the ray under
+// any pixel show at that pixel.
+void TestSceneView::rayAtInvertsProject() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const std::vector<Vec3> points = {Vec3(0, 1, 0),    Vec3(-1.5, 1, 0), Vec3(2.5, 0, -1.5),
+                                    Vec3(-2, 0.1, 2), Vec3(1, 3, -2),   Vec3(0.3, -0.4, 1.7)};
+  for (int pose = 0; pose < 2; ++pose) {
+    if (pose == 1) {
+      view.camera().orbit(1.1, -0.4);
+      view.camera().zoom(2.0);
+      view.camera().pan(0.1, -0.05);
+    }
+    const QVector3D eye = view.camera().eye();
+    for (const Vec3& point : points) {
+      const auto [origin, direction] = view.rayAt(view.project(point));
+      QVERIFY(std::abs(direction.norm() - 1.0) < 1e-12);
+      const Vec3 toPoint = point - origin;
+      const double along = toPoint.dot(direction);
+      QVERIFY2(along > 0.0, "the ray points away from the point");
+      const double off = (toPoint - along * direction).norm();
+      QVERIFY2(off <= 1e-6 * toPoint.norm(),
+               qPrintable(
+                   QStringLiteral("pose %1: %2 off of %3").arg(pose).arg(off).arg(toPoint.norm())));
+      QVERIFY((origin - Vec3(eye.x(), eye.y(), eye.z())).norm() <= 1e-5 * toPoint.norm());
+    }
+    for (const QPointF& pixel : {QPointF(0, 0), QPointF(view.width(), 0), QPointF(0, view.height()),
+                                 QPointF(view.width(), view.height()), QPointF(123.5, 321.25)}) {
+      const auto [origin, direction] = view.rayAt(pixel);
+      for (double distance : {0.5, 5.0, 50.0}) {
+        const QPointF back = view.project(origin + distance * direction);
+        // project() works in float: near the eye that is a few 1e-4 of a pixel.
+        QVERIFY2(distanceBetween(back, pixel) < 1e-2,
+                 qPrintable(QStringLiteral("(%1, %2) came back at (%3, %4)")
+                                .arg(pixel.x())
+                                .arg(pixel.y())
+                                .arg(back.x())
+                                .arg(back.y())));
+      }
+    }
+  }
 }
 
 QTEST_MAIN(TestSceneView)

@@ -1,10 +1,12 @@
 #include "main_window.h"
 
 #include "accuracy_window.h"
+#include "editor_tools.h"
 #include "energy_plot.h"
 #include "language.h"
 
 #include "render_scene.h"
+#include "scene_document.h"
 #include "scene_file.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
@@ -13,15 +15,25 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QClipboard>
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoView>
+#include <QUrl>
 
 namespace carom::ui {
 
@@ -46,7 +58,10 @@ QDoubleSpinBox* numberBox(double low, double high, int decimals, double step, co
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), simulation_(std::make_unique<SimulationController>()) {
+    : QMainWindow(parent),
+      simulation_(std::make_unique<SimulationController>()),
+      document_(new SceneDocument(this)) {
+  setAcceptDrops(true);
   view_ = new SceneView;
   setCentralWidget(view_);
   energyPlot_ = new EnergyPlot;
@@ -59,9 +74,23 @@ MainWindow::MainWindow(QWidget* parent)
   status_ = new QLabel;
   statusBar()->addWidget(status_, 1);
   sound_ = new SoundBoard(this);
+  tools_ = new EditorTools(document_, view_, this);
+  connect(tools_, &EditorTools::refused, this, [this](const QString& message) {
+    statusBar()->showMessage(message, kMessageMilliseconds);
+  });
   buildActions();
+  buildFileActions();
+  buildEditActions();
+  buildToolActions();
   buildToolBar();
   buildMenus();
+  connect(document_, &SceneDocument::sceneChanged, this, &MainWindow::showDocumentScene);
+  connect(document_, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
+  connect(document_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &SceneDocument::selectionChanged, this, [this] {
+    if (followAction_->isChecked()) view_->setFollowedBall(followTarget());
+    showSelection();
+  });
   connect(simulation_.get(), &SimulationController::snapshotPublished, this,
           &MainWindow::showSnapshot);
   connect(view_, &SceneView::frameRendered, this, [this](double) {
@@ -126,7 +155,7 @@ void MainWindow::buildActions() {
   followAction_->setShortcut(Qt::Key_F2);
   followAction_->setCheckable(true);
   connect(followAction_, &QAction::toggled, this,
-          [this](bool on) { view_->setFollowedBall(on && !scene_.balls.empty() ? 0 : -1); });
+          [this](bool on) { view_->setFollowedBall(on ? followTarget() : -1); });
 
   explosionsAction_ = new QAction(tr("&Explosions"), this);
   explosionsAction_->setCheckable(true);
@@ -182,39 +211,60 @@ void MainWindow::buildToolBar() {
   for (int a = 0; a < 3; ++a) {
     gravity_[a] = numberBox(-1000.0, 1000.0, 3, 0.5, tr("Gravity %1 (m/s²)").arg(axes[a]));
     gravity_[a]->setObjectName(QString("gravity") + QChar(axes[a][0]).toUpper());
-    connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, &MainWindow::applyGravity);
+    connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, [this, a](double value) {
+      editWorld(tr("Change Gravity"), [a, value](World& world) { world.gravity[a] = value; });
+    });
     bar->addWidget(gravity_[a]);
   }
 
   bar->addWidget(new QLabel(tr("Step")));
   timeStep_ = numberBox(1e-6, 10.0, 6, 0.001, tr("Time step in seconds (+ and - keys)"));
   timeStep_->setObjectName("timeStep");
-  connect(timeStep_, &QDoubleSpinBox::valueChanged, this,
-          [this](double value) { simulation_->setTimeStep(value); });
+  connect(timeStep_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+    editWorld(tr("Change Time Step"), [value](World& world) { world.timeStep = value; });
+  });
   bar->addWidget(timeStep_);
 
   method_ = new QComboBox;
   for (std::string_view name : methodNames()) method_->addItem(text(name));
   method_->setToolTip(tr("Exact (event-driven), swept, or discrete steps"));
-  connect(method_, &QComboBox::currentIndexChanged, this,
-          [this](int index) { simulation_->setMethod(Method(index)); });
+  connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
+  });
   bar->addWidget(method_);
 
   integrator_ = new QComboBox;
   for (std::string_view name : integratorNames()) integrator_->addItem(text(name));
   integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
-  connect(integrator_, &QComboBox::currentIndexChanged, this,
-          [this](int index) { simulation_->setIntegrator(Integrator(index)); });
+  connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    editWorld(tr("Change Integrator"),
+              [index](World& world) { world.integrator = Integrator(index); });
+  });
   bar->addWidget(integrator_);
 }
 
 void MainWindow::buildMenus() {
+  QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
+  fileMenu->addActions({newAction_, openAction_});
+  recentMenu_ = fileMenu->addMenu(tr("Open &Recent"));
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
+  fileMenu->addActions({saveAction_, saveAsAction_});
+  fileMenu->addSeparator();
+  fileMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+  editMenu->addActions({undoAction_, redoAction_});
+  editMenu->addSeparator();
+  editMenu->addActions({copyAction_, pasteAction_, duplicateAction_, deleteAction_});
+  editMenu->addSeparator();
+  editMenu->addActions({selectAllAction_});
+
   QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
   simulationMenu->addActions({playAction_, stepAction_, resetAction_});
   simulationMenu->addSeparator();
   simulationMenu->addAction(tr("Speed vs &Accuracy…"), this, [this] { openAccuracyWindow(); });
   simulationMenu->addSeparator();
-  simulationMenu->addAction(tr("&Quit"), QKeySequence::Quit, qApp, &QApplication::quit);
+  simulationMenu->addActions({useStateAction_, applyToRunningAction_});
 
   QMenu* examples = menuBar()->addMenu(tr("&Examples"));
   const QStringList files = QDir(":/scenes").entryList({"*.json"}, QDir::Files, QDir::Name);
@@ -222,8 +272,9 @@ void MainWindow::buildMenus() {
     QString title = file;
     title.chop(5);
     examples->addAction(title, this, [this, file, title] {
+      if (!maybeSave()) return;
       const SceneLoadResult loaded = loadSceneFile(":/scenes/" + file);
-      if (loaded.scene) openScene(*loaded.scene, title);
+      if (loaded.scene) openScene(*loaded.scene, {}, title);
     });
   }
 
@@ -232,6 +283,7 @@ void MainWindow::buildMenus() {
       {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
+  viewMenu->addAction(historyDock_->toggleViewAction());
   viewMenu->addSeparator();
   QMenu* languageMenu = viewMenu->addMenu(tr("&Language"));
   auto* languages = new QActionGroup(this);
@@ -248,25 +300,146 @@ void MainWindow::buildMenus() {
   }
 }
 
-void MainWindow::openScene(const carom::Scene& scene, const QString& title) {
-  scene_ = scene;
+void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
+                           const QString& exampleName) {
+  exampleName_ = exampleName;
   playAction_->setChecked(false);
-  setWindowTitle(tr("%1 — Carom").arg(title));
-  view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(scene)));
-  // Show the scene's world settings without echoing them back to the worker.
-  const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
-                                     QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
-                                     QSignalBlocker(method_),     QSignalBlocker(integrator_)};
-  for (int a = 0; a < 3; ++a) gravity_[a]->setValue(scene.world.gravity[a]);
-  timeStep_->setValue(scene.world.timeStep);
-  method_->setCurrentIndex(int(scene.world.method));
-  integrator_->setCurrentIndex(int(scene.world.integrator));
+  document_->reset(scene, fileName);
   energyPlot_->clear();
-  simulation_->loadScene(scene);
-  simulation_->setSpeed(speed_->value());
   lastCollisionCount_ = 0;
   lastCollisionTime_ = 0.0;
   collisionsPerSecond_ = 0.0;
+}
+
+void MainWindow::showDocumentScene() {
+  const std::shared_ptr<const Scene> scene = document_->sharedScene();
+  const bool sameObjects = shownScene_ && shownScene_->balls == scene->balls &&
+                           shownScene_->planes == scene->planes &&
+                           shownScene_->cylinders == scene->cylinders;
+  const bool sameWorld = shownScene_ && shownScene_->world == scene->world;
+  // The toolbar mirrors the world settings without echoing them back as edits.
+  {
+    const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
+                                       QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
+                                       QSignalBlocker(method_),     QSignalBlocker(integrator_)};
+    for (int a = 0; a < 3; ++a) gravity_[a]->setValue(scene->world.gravity[a]);
+    timeStep_->setValue(scene->world.timeStep);
+    method_->setCurrentIndex(int(scene->world.method));
+    integrator_->setCurrentIndex(int(scene->world.integrator));
+  }
+  if (sameObjects && shownScene_->world.restitution == scene->world.restitution) {
+    // Gravity, time step, method and integrator change live, from the running state on.
+    if (!sameWorld) {
+      if (shownScene_->world.gravity != scene->world.gravity)
+        simulation_->setGravity(scene->world.gravity);
+      if (shownScene_->world.timeStep != scene->world.timeStep)
+        simulation_->setTimeStep(scene->world.timeStep);
+      if (shownScene_->world.method != scene->world.method)
+        simulation_->setMethod(scene->world.method);
+      if (shownScene_->world.integrator != scene->world.integrator)
+        simulation_->setIntegrator(scene->world.integrator);
+    }
+    shownScene_ = scene;
+    return;
+  }
+  Scene start = *scene;
+  if (shownScene_ && applyToRunningAction_->isChecked()) start = withRunningState(*scene);
+  shownScene_ = scene;
+  view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(start)));
+  showSelection();
+  simulation_->loadScene(start);
+  simulation_->setSpeed(speed_->value());
+}
+
+// The edited scene, with every ball the edit left alone where the running simulation has it.
+// Balls are matched by index, so this holds when the edit did not add or remove balls.
+Scene MainWindow::withRunningState(const Scene& edited) const {
+  Scene start = edited;
+  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
+  if (!snapshot || shownScene_->balls.size() != edited.balls.size() ||
+      snapshot->positions.size() != edited.balls.size())
+    return start;
+  for (std::size_t i = 0; i < start.balls.size(); ++i) {
+    if (!(shownScene_->balls[i] == edited.balls[i])) continue;
+    start.balls[i].position = snapshot->positions[i];
+    start.balls[i].velocity = snapshot->velocities[i];
+  }
+  return start;
+}
+
+void MainWindow::editWorld(const QString& text, const std::function<void(World&)>& change) {
+  Scene edited = document_->scene();
+  change(edited.world);
+  if (edited.world == document_->scene().world) return;
+  const QString error = document_->apply(edited, text);
+  if (!error.isEmpty()) {
+    statusBar()->showMessage(error, kMessageMilliseconds);
+    showDocumentScene();  // puts the toolbar back
+  }
+}
+
+void MainWindow::showSelection() {
+  std::vector<int> indices[3];
+  for (const ObjectRef& ref : document_->selection()) indices[int(ref.kind)].push_back(ref.index);
+  view_->setHighlighted(indices[int(ObjectKind::Ball)], indices[int(ObjectKind::Plane)],
+                        indices[int(ObjectKind::Cylinder)]);
+  const Selection& selection = document_->selection();
+  std::optional<std::pair<Vec3, Vec3>> arrow;
+  if (selection.size() == 1 && selection.front().kind == ObjectKind::Ball) {
+    const Ball& ball = document_->scene().balls[selection.front().index];
+    if (!ball.velocity.isZero())
+      arrow = {ball.position, ball.position + EditorTools::kArrowSeconds * ball.velocity};
+  }
+  view_->setVelocityArrow(arrow);
+}
+
+QString MainWindow::statusMessage() const {
+  return statusBar()->currentMessage();
+}
+
+void MainWindow::buildToolActions() {
+  auto* group = new QActionGroup(this);
+  const struct {
+    EditorTools::Tool tool;
+    const char* name;
+    QString text;
+    Qt::Key key;
+  } tools[] = {{EditorTools::Tool::Select, "toolSelect", tr("Select"), Qt::Key_V},
+               {EditorTools::Tool::AddBall, "toolAddBall", tr("Add Ball"), Qt::Key_B},
+               {EditorTools::Tool::AddPlane, "toolAddPlane", tr("Add Plane"), Qt::Key_P},
+               {EditorTools::Tool::AddCylinder, "toolAddCylinder", tr("Add Cylinder"), Qt::Key_C}};
+  QToolBar* bar = addToolBar(tr("Tools"));
+  bar->setObjectName("tools");
+  for (const auto& entry : tools) {
+    QAction* action = group->addAction(entry.text);
+    action->setObjectName(entry.name);
+    action->setCheckable(true);
+    action->setShortcut(entry.key);
+    action->setToolTip(tr("%1 (%2)").arg(entry.text, QKeySequence(entry.key).toString()));
+    action->setChecked(entry.tool == tools_->tool());
+    connect(action, &QAction::triggered, this,
+            [this, tool = entry.tool] { tools_->setTool(tool); });
+    bar->addAction(action);
+  }
+  snapAction_ = new QAction(tr("Snap to &Grid"), this);
+  snapAction_->setCheckable(true);
+  snapAction_->setToolTip(tr("Moves land on multiples of %1 m").arg(EditorTools::gridStep()));
+  connect(snapAction_, &QAction::toggled, this, [this](bool on) { tools_->setSnapToGrid(on); });
+  bar->addAction(snapAction_);
+  addActions(group->actions());
+}
+
+void MainWindow::updateTitle() {
+  QString name = document_->displayName();
+  if (document_->fileName().isEmpty() && !exampleName_.isEmpty()) name = exampleName_;
+  setWindowTitle(tr("%1[*] — Carom").arg(name));
+  setWindowModified(document_->isModified());
+}
+
+int MainWindow::followTarget() const {
+  for (const ObjectRef& ref : document_->selection())
+    if (ref.kind == ObjectKind::Ball) return ref.index;
+  return document_->scene().balls.empty() ? -1 : 0;
 }
 
 void MainWindow::setRunning(bool running) {
@@ -274,10 +447,7 @@ void MainWindow::setRunning(bool running) {
 }
 
 AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
-  carom::Scene scene = scene_;
-  // The study runs what the sandbox runs now: the scene with the current world settings.
-  if (const auto snapshot = simulation_->latest()) scene.world = snapshot->world;
-  auto* window = new AccuracyWindow(scene, this);
+  auto* window = new AccuracyWindow(document_->scene(), this);
   window->setAttribute(Qt::WA_DeleteOnClose);
   window->setDuration(duration);
   connect(window, &AccuracyWindow::settingsChosen, this, &MainWindow::applySettings);
@@ -288,13 +458,11 @@ AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
 
 void MainWindow::applySettings(carom::Method method, carom::Integrator integrator,
                                double timeStep) {
-  method_->setCurrentIndex(int(method));
-  integrator_->setCurrentIndex(int(integrator));
-  timeStep_->setValue(timeStep);
-}
-
-void MainWindow::applyGravity() {
-  simulation_->setGravity(Vec3(gravity_[0]->value(), gravity_[1]->value(), gravity_[2]->value()));
+  editWorld(tr("Apply Settings"), [=](World& world) {
+    world.method = method;
+    world.integrator = integrator;
+    world.timeStep = timeStep;
+  });
 }
 
 void MainWindow::changeTimeStep(double factor) {
@@ -346,6 +514,251 @@ void MainWindow::showStatus() {
     line += tr("   muted");
   if (snapshot->fallingBehind) line += tr("   — the physics cannot keep up; running slower");
   status_->setText(line);
+}
+
+// ---- Files ---------------------------------------------------------------------------------
+
+void MainWindow::buildFileActions() {
+  newAction_ = new QAction(tr("&New"), this);
+  newAction_->setShortcut(QKeySequence::New);
+  connect(newAction_, &QAction::triggered, this, [this] {
+    if (maybeSave()) openScene(Scene(), {});
+  });
+  openAction_ = new QAction(tr("&Open…"), this);
+  openAction_->setShortcut(QKeySequence::Open);
+  connect(openAction_, &QAction::triggered, this, [this] {
+    if (!maybeSave()) return;
+    const QString file = QFileDialog::getOpenFileName(
+        this, tr("Open Scene"), lastFolder(), tr("Carom scenes (*.carom *.json);;All files (*)"));
+    if (!file.isEmpty()) openFile(file, false);
+  });
+  saveAction_ = new QAction(tr("&Save"), this);
+  saveAction_->setShortcut(QKeySequence::Save);
+  connect(saveAction_, &QAction::triggered, this, &MainWindow::save);
+  saveAsAction_ = new QAction(tr("Save &As…"), this);
+  saveAsAction_->setShortcut(QKeySequence::SaveAs);
+  connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
+}
+
+bool MainWindow::openFile(const QString& fileName, bool askToSave) {
+  if (askToSave && !maybeSave()) return false;
+  const SceneLoadResult loaded = loadSceneFile(fileName);
+  if (!loaded.scene) {
+    // The open scene stays as it was.
+    QMessageBox::warning(this, tr("Cannot Open Scene"), loaded.error);
+    return false;
+  }
+  openScene(*loaded.scene, QFileInfo(fileName).absoluteFilePath());
+  addRecentFile(document_->fileName());
+  return true;
+}
+
+bool MainWindow::save() {
+  if (document_->fileName().isEmpty()) return saveAs();
+  return saveTo(document_->fileName());
+}
+
+bool MainWindow::saveAs() {
+  QString suggested = document_->fileName();
+  if (suggested.isEmpty()) {
+    const QString base = exampleName_.isEmpty() ? tr("untitled") : exampleName_;
+    suggested = QDir(lastFolder()).filePath(base + ".carom");
+  }
+  QString file = QFileDialog::getSaveFileName(this, tr("Save Scene"), suggested,
+                                              tr("Carom scenes (*.carom);;All files (*)"));
+  if (file.isEmpty()) return false;
+  if (QFileInfo(file).suffix().isEmpty()) file += ".carom";
+  return saveTo(file);
+}
+
+bool MainWindow::saveTo(const QString& fileName) {
+  QString error;
+  if (!saveSceneFile(document_->scene(), fileName, &error)) {
+    // The old file, if any, is untouched: the save writes a new one and renames it over.
+    QMessageBox::warning(this, tr("Cannot Save Scene"), error);
+    return false;
+  }
+  document_->markSaved(QFileInfo(fileName).absoluteFilePath());
+  addRecentFile(document_->fileName());
+  statusBar()->showMessage(tr("Saved %1").arg(fileName), kMessageMilliseconds);
+  return true;
+}
+
+bool MainWindow::maybeSave() {
+  if (!document_->isModified()) return true;
+  const auto answer = QMessageBox::question(
+      this, tr("Unsaved Changes"),
+      tr("The scene %1 has unsaved changes. Save them?").arg(document_->displayName()),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Save) return save();
+  return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (maybeSave())
+    event->accept();
+  else
+    event->ignore();
+}
+
+QString MainWindow::lastFolder() const {
+  const QStringList recent = QSettings().value(kRecentFilesKey).toStringList();
+  return recent.isEmpty() ? QDir::homePath() : QFileInfo(recent.first()).absolutePath();
+}
+
+void MainWindow::addRecentFile(const QString& fileName) {
+  QSettings settings;
+  QStringList recent = settings.value(kRecentFilesKey).toStringList();
+  recent.removeAll(fileName);
+  recent.prepend(fileName);
+  while (recent.size() > kMaxRecentFiles) recent.removeLast();
+  settings.setValue(kRecentFilesKey, recent);
+}
+
+void MainWindow::fillRecentMenu() {
+  recentMenu_->clear();
+  const QStringList recent = QSettings().value(kRecentFilesKey).toStringList();
+  for (const QString& file : recent) {
+    recentMenu_->addAction(QDir::toNativeSeparators(file), this,
+                           [this, file] { openFile(file, true); });
+  }
+  if (recent.isEmpty()) recentMenu_->addAction(tr("(none)"))->setEnabled(false);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.first().isLocalFile()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() != 1 || !urls.first().isLocalFile()) return;
+  event->acceptProposedAction();
+  // After the drop has finished: a modal question inside a drop would hold the drag source.
+  const QString file = urls.first().toLocalFile();
+  QMetaObject::invokeMethod(
+      this, [this, file] { openFile(file, true); }, Qt::QueuedConnection);
+}
+
+// ---- Editing -------------------------------------------------------------------------------
+
+void MainWindow::buildEditActions() {
+  undoAction_ = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undoAction_->setShortcut(QKeySequence::Undo);
+  redoAction_ = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redoAction_->setShortcuts(
+      {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+
+  copyAction_ = new QAction(tr("&Copy"), this);
+  copyAction_->setShortcut(QKeySequence::Copy);
+  connect(copyAction_, &QAction::triggered, this, &MainWindow::copySelection);
+  pasteAction_ = new QAction(tr("&Paste"), this);
+  pasteAction_->setShortcut(QKeySequence::Paste);
+  connect(pasteAction_, &QAction::triggered, this, &MainWindow::paste);
+  duplicateAction_ = new QAction(tr("&Duplicate"), this);
+  duplicateAction_->setShortcut(Qt::CTRL | Qt::Key_D);
+  connect(duplicateAction_, &QAction::triggered, this, [this] {
+    insertObjects(extract(document_->scene(), document_->selection()), tr("Duplicate"));
+  });
+  deleteAction_ = new QAction(tr("De&lete"), this);
+  deleteAction_->setShortcut(QKeySequence::Delete);
+  connect(deleteAction_, &QAction::triggered, this, &MainWindow::deleteSelection);
+  selectAllAction_ = new QAction(tr("Select &All"), this);
+  selectAllAction_->setShortcut(QKeySequence::SelectAll);
+  connect(selectAllAction_, &QAction::triggered, this, [this] {
+    const Scene& scene = document_->scene();
+    Selection all;
+    for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder})
+      for (int i = 0; i < objectCount(scene, kind); ++i) all.push_back({kind, i});
+    document_->setSelection(all);
+  });
+
+  useStateAction_ = new QAction(tr("&Use Current State as Initial"), this);
+  connect(useStateAction_, &QAction::triggered, this, &MainWindow::useCurrentState);
+  applyToRunningAction_ = new QAction(tr("Edits Apply to the &Running State"), this);
+  applyToRunningAction_->setCheckable(true);
+  applyToRunningAction_->setToolTip(
+      tr("Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves "
+         "alone keep their running state."));
+  applyToRunningAction_->setChecked(QSettings().value(kApplyToRunningKey, false).toBool());
+  connect(applyToRunningAction_, &QAction::toggled, this,
+          [](bool on) { QSettings().setValue(kApplyToRunningKey, on); });
+
+  addActions({undoAction_, redoAction_, copyAction_, pasteAction_, duplicateAction_, deleteAction_,
+              selectAllAction_});
+
+  historyDock_ = new QDockWidget(tr("History"), this);
+  historyDock_->setObjectName("historyDock");
+  historyDock_->setWidget(new QUndoView(document_->undoStack()));
+  addDockWidget(Qt::RightDockWidgetArea, historyDock_);
+  historyDock_->hide();
+}
+
+void MainWindow::copySelection() {
+  const Selection& selection = document_->selection();
+  if (selection.empty()) return;
+  const QByteArray json = serializeScene(extract(document_->scene(), selection));
+  auto* mime = new QMimeData;
+  mime->setData(kSceneMimeType, json);
+  mime->setText(QString::fromUtf8(json));
+  QApplication::clipboard()->setMimeData(mime);
+}
+
+void MainWindow::paste() {
+  const QMimeData* mime = QApplication::clipboard()->mimeData();
+  if (!mime) return;
+  const QByteArray json =
+      mime->hasFormat(kSceneMimeType) ? mime->data(kSceneMimeType) : mime->text().toUtf8();
+  const SceneLoadResult parsed = parseScene(json, tr("clipboard"));
+  if (!parsed.scene) {
+    statusBar()->showMessage(tr("Nothing to paste: %1").arg(parsed.error), kMessageMilliseconds);
+    return;
+  }
+  insertObjects(*parsed.scene, tr("Paste"));
+}
+
+void MainWindow::insertObjects(Scene objects, const QString& text) {
+  if (objects.balls.empty() && objects.planes.empty() && objects.cylinders.empty()) return;
+  // Balls copied onto themselves would overlap: shift them all sideways until they fit.
+  const QVector3D right =
+      QVector3D::crossProduct(view_->camera().eye() - view_->camera().target(), QVector3D(0, 1, 0))
+          .normalized();
+  Vec3 across(-right.x(), -right.y(), -right.z());
+  if (!across.allFinite() || across.norm() < 0.5) across = Vec3::UnitX();
+  double largest = 0.0;
+  for (const Ball& ball : objects.balls) largest = std::max(largest, ball.radius);
+  QString error;
+  for (int attempt = 0; attempt <= kMaxPlacementAttempts; ++attempt) {
+    Scene edited = document_->scene();
+    Scene shifted = objects;
+    const Vec3 offset = attempt * 2.2 * largest * across;
+    for (Ball& ball : shifted.balls) ball.position += offset;
+    const Selection added = append(edited, shifted);
+    error = document_->apply(edited, text, added);
+    if (error.isEmpty()) return;
+    if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
+  }
+  statusBar()->showMessage(tr("Cannot place the objects: %1").arg(error), kMessageMilliseconds);
+}
+
+void MainWindow::deleteSelection() {
+  if (document_->selection().empty()) return;
+  Scene edited = document_->scene();
+  remove(edited, document_->selection());
+  const QString error = document_->apply(edited, tr("Delete"), {});
+  if (!error.isEmpty()) statusBar()->showMessage(error, kMessageMilliseconds);
+}
+
+void MainWindow::useCurrentState() {
+  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
+  Scene edited = document_->scene();
+  if (!snapshot || snapshot->positions.size() != edited.balls.size()) return;
+  for (std::size_t i = 0; i < edited.balls.size(); ++i) {
+    edited.balls[i].position = snapshot->positions[i];
+    edited.balls[i].velocity = snapshot->velocities[i];
+  }
+  const QString error = document_->apply(edited, tr("Use Current State as Initial"));
+  if (!error.isEmpty()) statusBar()->showMessage(error, kMessageMilliseconds);
 }
 
 }  // namespace carom::ui

@@ -2,22 +2,29 @@
 // The sandbox window: the 3D view in the centre, the simulation controls on a toolbar, the
 // numbers in the status bar. It observes the simulation through snapshots and never waits on it.
 
+#include "object_ref.h"
 #include "scene.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
+#include <QString>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
+class QMenu;
 
 namespace carom::ui {
 
 class AccuracyWindow;
+class SceneDocument;
+class EditorTools;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
@@ -36,8 +43,19 @@ class MainWindow : public QMainWindow {
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // Shows `scene` (valid) from its start, paused; `title` names it in the window title.
-  void openScene(const carom::Scene& scene, const QString& title);
+  // Shows `scene` (valid) from its start, paused, as the document read from `fileName` (empty
+  // for a new scene; `exampleName` then names it in the title). Discards unsaved changes.
+  void openScene(const carom::Scene& scene, const QString& fileName,
+                 const QString& exampleName = {});
+  // Open, asking first about unsaved changes when `askToSave`; a broken file gets a dialog with
+  // the loader's message and leaves the open scene as it was.
+  bool openFile(const QString& fileName, bool askToSave);
+  bool save();
+  bool saveAs();
+  SceneDocument* document() const { return document_; }
+  EditorTools* tools() const { return tools_; }
+  // The status bar's passing message (refusals, saves), as opposed to the status line.
+  QString statusMessage() const;
 
   SimulationController& simulation() { return *simulation_; }
   // As the Run/Pause control does.
@@ -51,14 +69,39 @@ class MainWindow : public QMainWindow {
   // Frames drawn and snapshots shown so far (for the status line and tests).
   int framesRendered() const { return framesRendered_; }
 
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
  private:
   void buildActions();
+  void buildFileActions();
+  void buildEditActions();
+  void buildToolActions();
+  void showSelection();
+  bool saveTo(const QString& fileName);
+  // Asks about unsaved changes; false when the user cancels (or a save fails).
+  bool maybeSave();
+  QString lastFolder() const;
+  void addRecentFile(const QString& fileName);
+  void fillRecentMenu();
+  void showDocumentScene();
+  Scene withRunningState(const Scene& edited) const;
+  void editWorld(const QString& text, const std::function<void(World&)>& change);
+  void updateTitle();
+  int followTarget() const;
+  void copySelection();
+  void paste();
+  // Adds copies of `objects`, moved aside as far as needed to overlap nothing, as one command.
+  void insertObjects(Scene objects, const QString& text);
+  void deleteSelection();
+  void useCurrentState();
   void buildToolBar();
   void buildMenus();
   void showSnapshot();
   void showStatus();
   void changeTimeStep(double factor);
-  void applyGravity();
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
   std::unique_ptr<SimulationController> simulation_;
@@ -69,7 +112,32 @@ class MainWindow : public QMainWindow {
   QAction* explosionsAction_ = nullptr;
   QAction* antialiasingAction_ = nullptr;
   static constexpr const char* kAntialiasingKey = "view/antialiasing";
-  carom::Scene scene_;
+  SceneDocument* document_ = nullptr;
+  EditorTools* tools_ = nullptr;
+  QAction* snapAction_ = nullptr;
+  std::shared_ptr<const Scene> shownScene_;  // what the view and the simulation started from
+  QString exampleName_;
+  QAction* newAction_ = nullptr;
+  QAction* openAction_ = nullptr;
+  QAction* saveAction_ = nullptr;
+  QAction* saveAsAction_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QAction* undoAction_ = nullptr;
+  QAction* redoAction_ = nullptr;
+  QAction* copyAction_ = nullptr;
+  QAction* pasteAction_ = nullptr;
+  QAction* duplicateAction_ = nullptr;
+  QAction* deleteAction_ = nullptr;
+  QAction* selectAllAction_ = nullptr;
+  QAction* useStateAction_ = nullptr;
+  QAction* applyToRunningAction_ = nullptr;
+  QDockWidget* historyDock_ = nullptr;
+  static constexpr int kMessageMilliseconds = 8000;
+  static constexpr int kMaxRecentFiles = 8;
+  static constexpr int kMaxPlacementAttempts = 20;
+  static constexpr const char* kRecentFilesKey = "files/recent";
+  static constexpr const char* kApplyToRunningKey = "editing/applyToRunningState";
+  static constexpr const char* kSceneMimeType = "application/x-carom-scene";
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;
   QAction* resetAction_ = nullptr;

@@ -14,6 +14,7 @@ namespace carom::ui {
 struct SimulationSnapshot {
   double time = 0.0;
   std::vector<Vec3> positions;
+  std::vector<Vec3> velocities;  // same order
   // Since the previous snapshot. A snapshot replaced before the GUI took it takes its collisions
   // with it: when the GUI falls behind, explosions and sounds are dropped, never delayed.
   std::vector<CollisionRecord> collisions;

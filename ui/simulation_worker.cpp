@@ -136,16 +136,15 @@ void SimulationWorker::publish() {
   auto snapshot = std::make_shared<SimulationSnapshot>();
   snapshot->time = simulation_->time();
   // One read of the state serves the positions and both energies.
-  std::vector<Vec3> velocities;
   for (const BallState& ball : simulation_->state()) {
     snapshot->positions.push_back(ball.position);
-    velocities.push_back(ball.velocity);
+    snapshot->velocities.push_back(ball.velocity);
   }
   std::vector<CollisionRecord> fresh = simulation_->takeCollisions();
   if (fresh.size() > kMaxPendingCollisions)
     fresh.erase(fresh.begin(), fresh.end() - kMaxPendingCollisions);
   snapshot->collisions = std::move(fresh);
-  snapshot->kineticEnergy = kineticEnergy(simulation_->bodies(), velocities);
+  snapshot->kineticEnergy = kineticEnergy(simulation_->bodies(), snapshot->velocities);
   snapshot->potentialEnergy =
       potentialEnergy(simulation_->bodies(), simulation_->world().gravity, snapshot->positions);
   snapshot->initialEnergy = initialEnergy_;

@@ -3,6 +3,7 @@
 #include <QVector4D>
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -70,6 +71,29 @@ QPointF Camera::projectToNdc(const Vec3& world) const {
   const QVector4D clip = viewProjection() * QVector4D(toQt(world), 1.0f);
   if (clip.w() == 0.0f) return QPointF();
   return QPointF(clip.x() / clip.w(), clip.y() / clip.w());
+}
+
+std::pair<Vec3, Vec3> Camera::rayThroughNdc(const QPointF& ndc) const {
+  // Works on the very matrix projectToNdc applies, rounded to float as it is, so that the ray
+  // projects back onto `ndc` up to the rounding of projectToNdc itself; the rest is in double.
+  const QMatrix4x4 matrix = viewProjection();
+  const auto row = [&](int i) {
+    return Eigen::Vector4d(matrix(i, 0), matrix(i, 1), matrix(i, 2), matrix(i, 3));
+  };
+  const Eigen::Vector4d x = row(0);
+  const Eigen::Vector4d y = row(1);
+  const Eigen::Vector4d w = row(3);
+  // A point projects to ndc where x - ndc.x w and y - ndc.y w vanish: two planes through the
+  // eye, which meet in the ray's line. In front of the eye the clip w is positive.
+  const Eigen::Vector4d acrossX = x - ndc.x() * w;
+  const Eigen::Vector4d acrossY = y - ndc.y() * w;
+  Vec3 direction = acrossX.head<3>().cross(acrossY.head<3>());
+  if (direction.dot(w.head<3>()) < 0.0) direction = -direction;
+  // The eye is the point that x, y and w all send to zero, whatever the ndc.
+  Eigen::Matrix3d rows;
+  rows << x.head<3>().transpose(), y.head<3>().transpose(), w.head<3>().transpose();
+  const Vec3 eye = rows.partialPivLu().solve(-Vec3(x(3), y(3), w(3)));
+  return {eye, direction.normalized()};
 }
 
 void Camera::orbit(double dx, double dy) {

@@ -8,6 +8,8 @@
 #include <QPointF>
 #include <QVector3D>
 
+#include <utility>
+
 namespace carom::render {
 
 class Camera {
@@ -39,6 +41,8 @@ class Camera {
   QMatrix4x4 viewProjection() const { return projection() * view(); }
   // Normalized device coordinates (x right, y up, both in [-1, 1] on screen) of a world point.
   QPointF projectToNdc(const Vec3& world) const;
+  // Its inverse: the eye and the unit direction of the ray of world points that project to `ndc`.
+  std::pair<Vec3, Vec3> rayThroughNdc(const QPointF& ndc) const;
 
   // Turns around the target: dx about the vertical axis, dy up and down, both in radians.
   void orbit(double dx, double dy);

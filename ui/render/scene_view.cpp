@@ -29,6 +29,7 @@ uniform vec3 lightDirection;  // towards the light, unit length
 const vec3 groundAmbient = vec3(0.30, 0.28, 0.27);
 const vec3 skyAmbient = vec3(0.46, 0.48, 0.52);
 const float diffuseStrength = 0.62;
+const vec3 selectionColor = vec3(1.0, 0.55, 0.05);
 
 vec3 shade(vec3 base, vec3 normal, vec3 position, float shininess, float specularStrength) {
   vec3 n = normalize(normal);
@@ -71,12 +72,14 @@ flat out vec3 halfway;
 flat out vec3 worldUp;
 flat out vec3 baseColor;
 flat out float edgePixels;  // outline radius in pixels
+flat out float selected;    // the colour's alpha is 0 for a selected ball
 void main() {
   // The square's corner in [-1, 1]^2 from the vertex's place among its ball's four.
   vec2 corner = vec2((gl_VertexID & 1) != 0 ? 1.0 : -1.0, (gl_VertexID & 2) != 0 ? 1.0 : -1.0);
   vec3 toCenter = center - eyePosition;
   float distance = length(toCenter);
   baseColor = color.rgb;
+  selected = color.a < 0.5 ? 1.0 : 0.0;
   if (distance <= radius * 1.0001) {  // the eye is inside: nothing sensible to draw
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
@@ -107,6 +110,7 @@ flat in vec3 halfway;
 flat in vec3 worldUp;
 flat in vec3 baseColor;
 flat in float edgePixels;
+flat in float selected;
 out vec4 fragColor;
 void main() {
   float fromCenter2 = dot(outline, outline);
@@ -121,7 +125,9 @@ void main() {
   float h = max(dot(n, halfway), 0.0);
   float h2 = h * h, h4 = h2 * h2, h8 = h4 * h4, h16 = h8 * h8, h32 = h16 * h16;
   float highlight = diffuse > 0.0 ? h32 * h8 : 0.0;
-  fragColor = vec4(baseColor * (ambient + diffuseStrength * diffuse) + vec3(0.35 * highlight),
+  // A selected ball wears a bright ring around its outline.
+  vec3 base = selected > 0.5 && fromCenter2 > 0.6 ? selectionColor : baseColor;
+  fragColor = vec4(base * (ambient + diffuseStrength * diffuse) + vec3(0.35 * highlight),
                    coverage);
 }
 )";
@@ -237,6 +243,23 @@ void main() {
 }
 )";
 
+// The velocity arrow of the selected ball: plain lines on top of everything.
+constexpr const char* kLineVertexGlsl = R"(#version 330 core
+layout(location = 0) in vec3 position;
+uniform mat4 viewProjection;
+void main() {
+  gl_Position = viewProjection * vec4(position, 1.0);
+}
+)";
+
+constexpr const char* kLineFragmentGlsl = R"(
+uniform vec3 lineColor;
+out vec4 fragColor;
+void main() {
+  fragColor = vec4(lineColor, 1.0);
+}
+)";
+
 // ---- Vertex layouts -----------------------------------------------------------------------------
 
 struct PackedColor {
@@ -246,6 +269,20 @@ struct PackedColor {
 PackedColor pack(const QColor& color) {
   return {static_cast<std::uint8_t>(color.red()), static_cast<std::uint8_t>(color.green()),
           static_cast<std::uint8_t>(color.blue()), 255};
+}
+
+const QColor kSelectionColor(255, 140, 13);
+
+// Selected planes and cylinders take on the selection's colour.
+QColor shown(const QColor& color, bool selected) {
+  if (!selected) return color;
+  return QColor((color.red() + kSelectionColor.red()) / 2,
+                (color.green() + kSelectionColor.green()) / 2,
+                (color.blue() + kSelectionColor.blue()) / 2);
+}
+
+bool contains(const std::vector<int>& indices, std::size_t index) {
+  return std::find(indices.begin(), indices.end(), static_cast<int>(index)) != indices.end();
 }
 
 struct Float3 {
@@ -426,6 +463,14 @@ QPointF SceneView::project(const Vec3& world) const {
   return QPointF(0.5 * (ndc.x() + 1.0) * width(), 0.5 * (1.0 - ndc.y()) * height());
 }
 
+std::pair<Vec3, Vec3> SceneView::rayAt(const QPointF& widgetPosition) const {
+  // Before it is laid out the view may have no size: no dividing by zero.
+  const double w = std::max(width(), 1);
+  const double h = std::max(height(), 1);
+  return camera_.rayThroughNdc(
+      QPointF(2.0 * widgetPosition.x() / w - 1.0, 1.0 - 2.0 * widgetPosition.y() / h));
+}
+
 void SceneView::setFollowedBall(int index) {
   if (index < -1 || index >= static_cast<int>(ballPositions_.size())) index = -1;
   if (index == followedBall_) return;
@@ -583,6 +628,13 @@ void SceneView::initializeGL() {
   planeProgram_ = buildProgram(kPlaneVertexGlsl, kPlaneFragmentGlsl);
   cylinderProgram_ = buildProgram(kCylinderVertexGlsl, kCylinderFragmentGlsl);
   explosionProgram_ = buildProgram(kExplosionVertexGlsl, kExplosionFragmentGlsl);
+  lineProgram_ = buildProgram(kLineVertexGlsl, kLineFragmentGlsl);
+  glGenVertexArrays(1, &lineVao_);
+  glGenBuffers(1, &lineBuffer_);
+  glBindVertexArray(lineVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, lineBuffer_);
+  vertexAttribute(0, 3, GL_FLOAT, sizeof(Float3), 0, false);
+  glBindVertexArray(0);
 
   std::array<GLuint, 6> buffers{};
   glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
@@ -650,6 +702,10 @@ void SceneView::releaseGl() {
   planeProgram_.reset();
   cylinderProgram_.reset();
   explosionProgram_.reset();
+  lineProgram_.reset();
+  glDeleteBuffers(1, &lineBuffer_);
+  glDeleteVertexArrays(1, &lineVao_);
+  lineBuffer_ = lineVao_ = 0;
   const std::array<GLuint, 2> explosionBuffers = {explosionCornerBuffer_, explosionInstanceBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(explosionBuffers.size()), explosionBuffers.data());
   glDeleteVertexArrays(1, &explosionVao_);
@@ -684,6 +740,52 @@ void SceneView::sortBallsFrontToBack(const QVector3D& eye) {
   }
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
                indices.data(), GL_STREAM_DRAW);
+}
+
+void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
+                               std::vector<int> cylinders) {
+  highlightedBalls_ = std::move(balls);
+  highlightedPlanes_ = std::move(planes);
+  highlightedCylinders_ = std::move(cylinders);
+  staticDataDirty_ = true;
+  update();
+}
+
+void SceneView::setVelocityArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
+  velocityArrow_ = std::move(fromTo);
+  update();
+}
+
+Eigen::AlignedBox3d SceneView::clipBox() const {
+  if (!scene_) return Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
+  return Eigen::AlignedBox3d(scene_->bounds.min, scene_->bounds.max);
+}
+
+void SceneView::drawVelocityArrow(const QMatrix4x4& viewProjection, const QVector3D& eye) {
+  if (!velocityArrow_) return;
+  const auto& [from, to] = *velocityArrow_;
+  const Vec3 shaft = to - from;
+  const double length = shaft.norm();
+  if (length <= 0.0) return;
+  // Two barbs at the tip, in the plane of the shaft and the line of sight.
+  const Vec3 direction = shaft / length;
+  Vec3 side = direction.cross(Vec3(eye.x(), eye.y(), eye.z()) - to);
+  side = side.norm() > 0.0 ? side.normalized() : direction.unitOrthogonal();
+  const double barb = 0.2 * length;
+  const std::vector<Float3> lines = {
+      toFloat3(from), toFloat3(to),
+      toFloat3(to),   toFloat3(to - barb * direction + 0.5 * barb * side),
+      toFloat3(to),   toFloat3(to - barb * direction - 0.5 * barb * side)};
+  uploadBuffer(this, lineBuffer_, lines, GL_STREAM_DRAW);
+  lineProgram_->bind();
+  lineProgram_->setUniformValue("viewProjection", viewProjection);
+  lineProgram_->setUniformValue(
+      "lineColor",
+      QVector3D(kSelectionColor.redF(), kSelectionColor.greenF(), kSelectionColor.blueF()));
+  glBindVertexArray(lineVao_);
+  glDisable(GL_DEPTH_TEST);
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines.size()));
+  glEnable(GL_DEPTH_TEST);
 }
 
 bool SceneView::antialiasing() const {
@@ -861,12 +963,16 @@ void SceneView::uploadStaticData() {
   if (scene_) {
     for (std::size_t i = 0; i < scene_->ballRadii.size(); ++i) {
       const QColor color = i < scene_->ballColors.size() ? scene_->ballColors[i] : QColor(Qt::gray);
+      PackedColor packed = pack(color);
+      if (contains(highlightedBalls_, i)) packed.a = 0;
       balls.insert(balls.end(), kVerticesPerBall,
-                   {static_cast<float>(scene_->ballRadii[i]), pack(color)});
+                   {static_cast<float>(scene_->ballRadii[i]), packed});
     }
     const double spacing = scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0;
-    for (const RenderPlane& plane : scene_->planes) {
+    for (std::size_t index = 0; index < scene_->planes.size(); ++index) {
+      const RenderPlane& plane = scene_->planes[index];
       if (plane.polygon.size() < 3) continue;
+      const PackedColor color = pack(shown(plane.color, contains(highlightedPlanes_, index)));
       // Grid axes in the plane, the same construction for every point so cells line up.
       int leastAxis = 0;
       plane.normal.cwiseAbs().minCoeff(&leastAxis);
@@ -877,7 +983,7 @@ void SceneView::uploadStaticData() {
             toFloat3(p),
             toFloat3(plane.normal),
             {static_cast<float>(p.dot(u) / spacing), static_cast<float>(p.dot(v) / spacing)},
-            pack(plane.color)};
+            color};
       };
       for (std::size_t i = 1; i + 1 < plane.polygon.size(); ++i) {
         planeVertices.push_back(vertex(plane.polygon[0]));
@@ -885,10 +991,12 @@ void SceneView::uploadStaticData() {
         planeVertices.push_back(vertex(plane.polygon[i + 1]));
       }
     }
-    for (const RenderCylinder& cylinder : scene_->cylinders) {
+    for (std::size_t index = 0; index < scene_->cylinders.size(); ++index) {
+      const RenderCylinder& cylinder = scene_->cylinders[index];
       if ((cylinder.end - cylinder.start).norm() == 0.0) continue;  // misses the bounds
       cylinders.push_back({toFloat3(cylinder.start), toFloat3(cylinder.end),
-                           static_cast<float>(cylinder.radius), pack(cylinder.color)});
+                           static_cast<float>(cylinder.radius),
+                           pack(shown(cylinder.color, contains(highlightedCylinders_, index)))});
     }
   }
   uploadBuffer(this, ballAttributeBuffer_, balls, GL_STATIC_DRAW);
@@ -980,6 +1088,7 @@ void SceneView::paintGL() {
     glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
   }
   drawExplosions(viewProjection, eye);
+  drawVelocityArrow(viewProjection, eye);
 
   if (multisampled) {
     const QSize size = multisampleSize_;

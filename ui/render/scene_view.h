@@ -7,6 +7,7 @@
 #include "render_scene.h"
 #include "run_stats.h"
 
+#include <Eigen/Geometry>
 #include <QElapsedTimer>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QOpenGLShaderProgram;
@@ -52,6 +54,15 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   const Camera& camera() const { return camera_; }
   // Widget coordinates (device-independent pixels) of a world point.
   QPointF project(const Vec3& world) const;
+  // Its inverse: the eye and the unit direction of the ray under a point of the widget.
+  std::pair<Vec3, Vec3> rayAt(const QPointF& widgetPosition) const;
+
+  // The box the view clips infinite planes and cylinders to: picking ignores what lies outside.
+  Eigen::AlignedBox3d clipBox() const;
+  // Shown in the selection's colour (indices into the scene's balls, planes, cylinders).
+  void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders);
+  // An arrow drawn on top of everything, such as a selected ball's velocity.
+  void setVelocityArrow(std::optional<std::pair<Vec3, Vec3>> fromTo);
 
   // The camera target tracks this ball; -1 stops. Panning or Home stop it too.
   void setFollowedBall(int index);
@@ -93,6 +104,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
  private:
   void releaseGl();
+  void drawVelocityArrow(const QMatrix4x4& viewProjection, const QVector3D& eye);
   // Binds the multisampled framebuffer, made or resized to the view; false if it cannot be.
   bool bindMultisampleBuffer();
   void releaseMultisampleBuffer();
@@ -116,6 +128,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   QPoint lastMousePosition_;
   ExplosionPool explosions_;
   bool explosionsEnabled_ = true;
+  std::vector<int> highlightedBalls_;
+  std::vector<int> highlightedPlanes_;
+  std::vector<int> highlightedCylinders_;
+  std::optional<std::pair<Vec3, Vec3>> velocityArrow_;
   std::optional<bool> antialiasingChoice_;
   bool softwareRenderer_ = false;
   QElapsedTimer clock_;
@@ -129,6 +145,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
   std::unique_ptr<QOpenGLShaderProgram> explosionProgram_;
+  std::unique_ptr<QOpenGLShaderProgram> lineProgram_;
+  GLuint lineVao_ = 0;
+  GLuint lineBuffer_ = 0;
   GLint samples_ = 0;
   GLuint multisampleFramebuffer_ = 0;
   GLuint multisampleColor_ = 0;

@@ -1,0 +1,155 @@
+#include "ray_cast.h"
+
+#include "shapes.h"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace carom {
+namespace {
+
+// Sine of the angle below which a ray counts as parallel to a plane or a cylinder's axis. Unit
+// vectors carry rounding of about 1e-16, so a ray built parallel may come out a hair off it and
+// would then "meet" the shape some 1e16 lengths away; this keeps such rays from hitting at all.
+constexpr double kParallel = 1e-12;
+
+// Relative slack of the clipping test: a floor lying exactly on the box's bottom face must not be
+// lost because its hit point came out 1e-16 below it.
+constexpr double kClipRoundoff = 1e-9;
+
+std::optional<Vec3> unitOf(const Vec3& v) {
+  if (!v.allFinite()) return std::nullopt;
+  // Stable: a direction of length 1e-200 or 1e200 is still a direction.
+  const double length = v.stableNorm();
+  if (!(length > 0.0)) return std::nullopt;
+  return v / length;
+}
+
+struct Entry {
+  double distance;  // along `unit`
+  Vec3 normal;
+};
+
+// Where a ray from `offset` (relative to the centre) along `unit` enters a solid ball of
+// `radius`, in as many dimensions as the vectors span: a sphere, or a cylinder's cross-section
+// when everything lies in the plane across its axis. None from inside or on the surface.
+std::optional<Entry> enterRound(const Vec3& offset, const Vec3& unit, double radius) {
+  const double centreDistance = offset.norm();
+  if (!(centreDistance > radius)) return std::nullopt;
+  const double along = offset.dot(unit);
+  if (!(along < 0.0)) return std::nullopt;  // heading away
+  // Half the chord from the closest approach itself: the textbook b^2 - c cancels to nothing
+  // when the ball is small and far away, or the ray grazes it.
+  const Vec3 closest = offset - along * unit;
+  const double miss = closest.norm();
+  const double halfChordSquared = (radius - miss) * (radius + miss);
+  if (!(halfChordSquared >= 0.0)) return std::nullopt;
+  const double halfChord = std::sqrt(halfChordSquared);
+  // The near root as the product of the roots over the far one, which has no -along - halfChord
+  // to cancel when the origin is close to the surface.
+  const double farRoot = halfChord - along;
+  const double distance = (centreDistance - radius) * (centreDistance + radius) / farRoot;
+  if (!(distance > 0.0) || !std::isfinite(distance)) return std::nullopt;
+  // Closest approach minus the half chord, with no large terms to cancel.
+  const Vec3 normal = (closest - halfChord * unit).stableNormalized();
+  return Entry{distance, normal};
+}
+
+class NearestHit {
+ public:
+  NearestHit(const Vec3& origin, const Eigen::AlignedBox3d* clip, double clipMargin)
+      : origin_(origin), clip_(clip), clipMargin_(clipMargin) {}
+
+  // True if a hit at `distance` could still be the nearest: saves the clipping test.
+  bool closer(double distance) const { return distance < best_.distance; }
+
+  // Whether the view draws `drawnPoint`, for a hit `distance` along the ray.
+  bool drawn(const Vec3& drawnPoint, double distance) const {
+    if (clip_ == nullptr) return true;
+    const double slack = kClipRoundoff * (clip_->diagonal().norm() + origin_.norm() + distance);
+    return clip_->exteriorDistance(drawnPoint) <= clipMargin_ + slack;
+  }
+
+  void offer(ShapeKind kind, std::size_t index, double distance, const Vec3& point,
+             const Vec3& normal) {
+    if (closer(distance)) best_ = RayHit{kind, static_cast<int>(index), distance, point, normal};
+  }
+
+  std::optional<RayHit> best() const {
+    if (best_.index < 0) return std::nullopt;
+    return best_;
+  }
+
+ private:
+  Vec3 origin_;
+  const Eigen::AlignedBox3d* clip_;
+  double clipMargin_;
+  RayHit best_{ShapeKind::Ball, -1, std::numeric_limits<double>::infinity(), Vec3::Zero(),
+               Vec3::Zero()};
+};
+
+}  // namespace
+
+std::optional<RayHit> castRay(const Scene& scene, const Vec3& origin, const Vec3& direction,
+                              const Eigen::AlignedBox3d* clip, double clipMargin) {
+  const std::optional<Vec3> unit = unitOf(direction);
+  if (!unit || !origin.allFinite()) return std::nullopt;
+  NearestHit nearest(origin, clip, clipMargin);
+
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    const Ball& ball = scene.balls[i];
+    const std::optional<Entry> entry = enterRound(origin - ball.position, *unit, ball.radius);
+    if (!entry) continue;
+    nearest.offer(ShapeKind::Ball, i, entry->distance, origin + entry->distance * *unit,
+                  entry->normal);
+  }
+
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+    const PlaneShape shape = planeShape(scene.planes[i]);
+    // Relative to the plane's own point: n.origin - offset would cancel far from the world's
+    // origin.
+    const double height = shape.normal.dot(origin - scene.planes[i].point);
+    const double approach = -shape.normal.dot(*unit);
+    // Behind the plane the ray is inside the solid, or sees only its undrawn back.
+    if (!(height > 0.0) || !(approach > kParallel)) continue;
+    const double distance = height / approach;
+    if (!std::isfinite(distance) || !nearest.closer(distance)) continue;
+    const Vec3 point = origin + distance * *unit;
+    if (!nearest.drawn(point, distance)) continue;
+    nearest.offer(ShapeKind::Plane, i, distance, point, shape.normal);
+  }
+
+  for (std::size_t i = 0; i < scene.cylinders.size(); ++i) {
+    const CylinderShape shape = cylinderShape(scene.cylinders[i]);
+    // In the plane across the axis the cylinder is a disc, crossed at `across` per unit of the
+    // ray's length.
+    const Vec3 across = shape.perpendicular(*unit);
+    const double acrossSpeed = across.norm();
+    if (!(acrossSpeed > kParallel)) continue;
+    const std::optional<Entry> entry =
+        enterRound(shape.perpendicular(origin - shape.point), across / acrossSpeed, shape.radius);
+    if (!entry) continue;
+    const double distance = entry->distance / acrossSpeed;
+    if (!std::isfinite(distance) || !nearest.closer(distance)) continue;
+    const Vec3 point = origin + distance * *unit;
+    const Vec3 axisPoint = shape.point + shape.axis.dot(point - shape.point) * shape.axis;
+    if (!nearest.drawn(axisPoint, distance)) continue;
+    nearest.offer(ShapeKind::Cylinder, i, distance, point, entry->normal);
+  }
+  return nearest.best();
+}
+
+std::optional<double> rayPlaneDistance(const Vec3& origin, const Vec3& direction,
+                                       const Vec3& planePoint, const Vec3& planeNormal) {
+  const std::optional<Vec3> unit = unitOf(direction);
+  const std::optional<Vec3> normal = unitOf(planeNormal);
+  if (!unit || !normal) return std::nullopt;
+  const double along = normal->dot(*unit);
+  if (!(std::abs(along) > kParallel)) return std::nullopt;
+  const double distance = normal->dot(planePoint - origin) / along;
+  if (!(distance > 0.0) || !std::isfinite(distance)) return std::nullopt;
+  return distance;
+}
+
+}  // namespace carom

@@ -1,0 +1,364 @@
+// The scene editor as a new user meets it: tools, picking, dragging, undo, files and prompts,
+// driven with real mouse and key events under a real X server (Xvfb) with Mesa's OpenGL.
+
+#include "editor_tools.h"
+#include "main_window.h"
+#include "scene_document.h"
+#include "scene_file.h"
+#include "scene_view.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QDialogButtonBox>
+#include <QFile>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <functional>
+#include <memory>
+
+using carom::Vec3;
+using carom::ui::EditorTools;
+using carom::ui::MainWindow;
+using carom::ui::ObjectKind;
+using carom::ui::ObjectRef;
+using carom::ui::SceneDocument;
+
+namespace {
+
+// A floor at y = 0 and one ball resting on it: small enough to reason about every pixel.
+carom::Scene floorScene() {
+  carom::Scene scene;
+  carom::Plane floor;
+  floor.normal = Vec3::UnitY();
+  floor.name = "floor";
+  scene.planes.push_back(floor);
+  carom::Ball ball;
+  ball.position = Vec3(0, 0.5, 0);
+  ball.radius = 0.5;
+  ball.name = "first";
+  ball.color = "#ff0000";
+  scene.balls.push_back(ball);
+  // Keeps the view's bounds (and so the camera) the same whatever the test adds.
+  for (double x : {-4.0, 4.0}) {
+    carom::Plane wall;
+    wall.point = Vec3(x, 0, 0);
+    wall.normal = Vec3(x < 0 ? 1 : -1, 0, 0);
+    scene.planes.push_back(wall);
+  }
+  return scene;
+}
+
+// Answers the next modal dialog by pressing `button` once it shows, and records its text.
+class DialogAnswerer {
+ public:
+  explicit DialogAnswerer(QMessageBox::StandardButton button) {
+    QTimer::singleShot(0, [this, button] { poll(button); });
+  }
+  QString text() const { return text_; }
+  bool answered() const { return answered_; }
+
+ private:
+  void poll(QMessageBox::StandardButton button) {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box) {
+      if (++attempts_ < 500) QTimer::singleShot(10, [this, button] { poll(button); });
+      return;
+    }
+    text_ = box->text();
+    answered_ = true;
+    box->button(button)->click();
+  }
+  QString text_;
+  bool answered_ = false;
+  int attempts_ = 0;
+};
+
+}  // namespace
+
+class TestEditor : public QObject {
+  Q_OBJECT
+ public:
+  static void initMain() { carom::render::SceneView::setDefaultFormat(); }
+
+ private slots:
+  void init();
+  void cleanup() { window_.reset(); }
+
+  void addsEachKindByClicking();
+  void refusesAPlacementWithNoRoom();
+  void selectsByClicking();
+  void dragMovesAsOneCommand();
+  void dragConstrainedToAnAxis();
+  void undoAndRedoEveryStep();
+  void duplicateDeleteCopyPaste();
+  void saveAndReopenGiveTheSameScene();
+  void brokenFileLeavesTheSceneAlone();
+  void unsavedChangesPrompt_data();
+  void unsavedChangesPrompt();
+  void titleShowsModified();
+
+ private:
+  SceneDocument& document() { return *window_->document(); }
+  carom::render::SceneView& view() {
+    return *qobject_cast<carom::render::SceneView*>(window_->view());
+  }
+  QPoint at(const Vec3& world) { return view().project(world).toPoint(); }
+  void click(const Vec3& world, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QTest::mouseClick(&view(), Qt::LeftButton, modifiers, at(world));
+  }
+  void chooseTool(const char* name) {
+    QAction* action = window_->findChild<QAction*>(name);
+    QVERIFY2(action, name);
+    action->trigger();
+  }
+
+  std::unique_ptr<MainWindow> window_;
+  QTemporaryDir folder_;
+};
+
+void TestEditor::init() {
+  window_ = std::make_unique<MainWindow>();
+  window_->openScene(floorScene(), {}, "floor");
+  window_->resize(1100, 800);
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  QApplication::setActiveWindow(window_.get());
+  QTRY_VERIFY(window_->framesRendered() > 0);
+}
+
+void TestEditor::addsEachKindByClicking() {
+  chooseTool("toolAddBall");
+  click(Vec3(2, 0, 1));
+  QCOMPARE(document().scene().balls.size(), std::size_t{2});
+  const carom::Ball& added = document().scene().balls[1];
+  // Resting on the floor where it was clicked, with the last ball's size.
+  QCOMPARE(added.radius, 0.5);
+  QVERIFY2((added.position - Vec3(2, 0.5, 1)).norm() < 0.1,
+           qPrintable(QString("%1 %2 %3")
+                          .arg(added.position.x())
+                          .arg(added.position.y())
+                          .arg(added.position.z())));
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 1}}));
+
+  chooseTool("toolAddCylinder");
+  click(Vec3(-2, 0, -1));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{1});
+  QVERIFY((document().scene().cylinders[0].point - Vec3(-2, 0, -1)).norm() < 0.1);
+  QVERIFY(document().scene().cylinders[0].axis.normalized().isApprox(Vec3::UnitY()));
+
+  chooseTool("toolAddPlane");
+  click(Vec3(-3, 0, 2));
+  QCOMPARE(document().scene().planes.size(), std::size_t{4});
+  const carom::Plane& wall = document().scene().planes[3];
+  QVERIFY(std::abs(wall.normal.y()) < 1e-9);  // standing up, facing the camera
+  QCOMPARE(document().undoStack()->count(), 3);
+}
+
+void TestEditor::refusesAPlacementWithNoRoom() {
+  // A cylinder right through the ball is refused by the scene validation, with a message.
+  chooseTool("toolAddCylinder");
+  click(Vec3(0, 1.0, 0));  // on top of the ball: the post would stand in it
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{0});
+  QCOMPARE(document().undoStack()->count(), 0);
+  QVERIFY2(window_->statusMessage().contains("overlap"), qPrintable(window_->statusMessage()));
+}
+
+void TestEditor::selectsByClicking() {
+  chooseTool("toolSelect");
+  click(Vec3(0, 0.5, 0));
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 0}}));
+  click(Vec3(1.5, 0, 1.5), Qt::ControlModifier);  // the floor joins
+  QCOMPARE(document().selection(),
+           (carom::ui::Selection{{ObjectKind::Ball, 0}, {ObjectKind::Plane, 0}}));
+  click(Vec3(0, 0.5, 0), Qt::ShiftModifier);  // the ball leaves
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Plane, 0}}));
+  // Empty sky above the room clears it.
+  QTest::mouseClick(&view(), Qt::LeftButton, Qt::NoModifier, QPoint(view().width() / 2, 3));
+  QVERIFY(document().selection().empty());
+}
+
+void TestEditor::dragMovesAsOneCommand() {
+  chooseTool("toolSelect");
+  const QPoint from = at(Vec3(0, 0.5, 0));
+  const QPoint to = from + QPoint(100, 0);  // across the screen: along the floor
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
+  for (int i = 1; i <= 10; ++i) QTest::mouseMove(&view(), from + (to - from) * i / 10);
+  // Moves reach the window asynchronously on xcb.
+  QTRY_VERIFY(document().scene().balls[0].position.x() > 0.5);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, to);
+  const Vec3 moved = document().scene().balls[0].position;
+  QVERIFY2(moved.x() > 0.5 && std::abs(moved.y() - 0.5) < 1e-6,
+           qPrintable(QString("%1 %2 %3, %4 commands")
+                          .arg(moved.x())
+                          .arg(moved.y())
+                          .arg(moved.z())
+                          .arg(document().undoStack()->count())));
+  QCOMPARE(document().undoStack()->count(), 1);  // ten moves, one command
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
+}
+
+void TestEditor::dragConstrainedToAnAxis() {
+  chooseTool("toolSelect");
+  const QPoint from = at(Vec3(0, 0.5, 0));
+  const QPoint to = from + QPoint(60, -60);  // up and to the right on screen
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
+  QTest::keyPress(&view(), Qt::Key_Y);
+  for (int i = 1; i <= 6; ++i) QTest::mouseMove(&view(), from + (to - from) * i / 6);
+  QTRY_VERIFY(document().scene().balls[0].position.y() > 0.7);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, to);
+  QTest::keyRelease(&view(), Qt::Key_Y);
+  const Vec3 moved = document().scene().balls[0].position;
+  QCOMPARE(moved.x(), 0.0);
+  QCOMPARE(moved.z(), 0.0);
+  QVERIFY2(moved.y() > 0.7, qPrintable(QString::number(moved.y())));
+}
+
+void TestEditor::undoAndRedoEveryStep() {
+  std::vector<carom::Scene> states = {document().scene()};
+  chooseTool("toolAddBall");
+  click(Vec3(2, 0, 0));
+  states.push_back(document().scene());
+  chooseTool("toolSelect");
+  click(Vec3(2, 0.5, 0));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  states.push_back(document().scene());
+  QCOMPARE(states[2].balls.size(), std::size_t{1});
+  for (int i = 2; i > 0; --i) {
+    QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(document().scene() == states[i - 1]);
+  }
+  for (int i = 1; i <= 2; ++i) {
+    QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(document().scene() == states[i]);
+  }
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QTest::keyClick(window_.get(), Qt::Key_Y, Qt::ControlModifier);  // the other redo key
+  QVERIFY(document().scene() == states[2]);
+}
+
+void TestEditor::duplicateDeleteCopyPaste() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls.size(), std::size_t{2});
+  const carom::Ball& copy = document().scene().balls[1];
+  QCOMPARE(copy.name, std::string("first"));
+  QCOMPARE(copy.color, std::string("#ff0000"));
+  QVERIFY((copy.position - Vec3(0, 0.5, 0)).norm() >= 1.0 - 1e-9);  // beside, not inside
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 1}}));
+
+  QTest::keyClick(window_.get(), Qt::Key_C, Qt::ControlModifier);
+  QVERIFY(QApplication::clipboard()->text().contains("\"balls\""));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+  QTest::keyClick(window_.get(), Qt::Key_V, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls.size(), std::size_t{2});
+  QCOMPARE(document().undoStack()->count(), 3);
+
+  // Text that is not a scene is refused with a message.
+  QApplication::clipboard()->setText("not a scene");
+  QTest::keyClick(window_.get(), Qt::Key_V, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls.size(), std::size_t{2});
+  QVERIFY(window_->statusMessage().startsWith("Nothing to paste"));
+
+  // Select All, then Delete, leaves an empty scene in one step.
+  QTest::keyClick(window_.get(), Qt::Key_A, Qt::ControlModifier);
+  QCOMPARE(document().selection().size(), std::size_t{5});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(document().scene().balls.empty() && document().scene().planes.empty());
+}
+
+void TestEditor::saveAndReopenGiveTheSameScene() {
+  const QString file = folder_.filePath("round-trip.carom");
+  {
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(carom::serializeScene(floorScene()));
+  }
+  QVERIFY(window_->openFile(file, false));
+  chooseTool("toolAddBall");
+  click(Vec3(2, 0, 1));
+  QVERIFY(document().isModified());
+  QVERIFY(window_->save());
+  QVERIFY(!document().isModified());
+  const carom::Scene saved = document().scene();
+  window_->openScene(floorScene(), {}, "other");
+  QVERIFY(window_->openFile(file, false));
+  QVERIFY(document().scene() == saved);
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+}
+
+void TestEditor::brokenFileLeavesTheSceneAlone() {
+  const QString file = folder_.filePath("broken.carom");
+  {
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    QByteArray json = carom::serializeScene(floorScene());
+    const qsizetype radius = json.indexOf("\"radius\"");
+    QVERIFY(radius > 0);
+    json.insert(json.indexOf(':', radius) + 1, " -2, \"unused\":");  // radius: -2
+    out.write(json);
+  }
+  const carom::Scene before = document().scene();
+  DialogAnswerer answer(QMessageBox::Ok);
+  QVERIFY(!window_->openFile(file, false));
+  QVERIFY(answer.answered());
+  QVERIFY2(answer.text().contains("balls[0].radius"), qPrintable(answer.text()));
+  QVERIFY(document().scene() == before);
+  QVERIFY(document().fileName().isEmpty());
+}
+
+void TestEditor::unsavedChangesPrompt_data() {
+  QTest::addColumn<int>("answer");
+  QTest::addColumn<bool>("closes");
+  QTest::addColumn<bool>("written");
+  QTest::newRow("save") << int(QMessageBox::Save) << true << true;
+  QTest::newRow("discard") << int(QMessageBox::Discard) << true << false;
+  QTest::newRow("cancel") << int(QMessageBox::Cancel) << false << false;
+}
+
+void TestEditor::unsavedChangesPrompt() {
+  QFETCH(int, answer);
+  QFETCH(bool, closes);
+  QFETCH(bool, written);
+  const QString file = folder_.filePath("prompt.carom");
+  {
+    QFile out(file);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(carom::serializeScene(floorScene()));
+  }
+  QVERIFY(window_->openFile(file, false));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(document().isModified());
+
+  DialogAnswerer answerer(static_cast<QMessageBox::StandardButton>(answer));
+  const bool closed = window_->close();
+  QVERIFY(answerer.answered());
+  QVERIFY(answerer.text().contains("prompt.carom"));
+  QCOMPARE(closed, closes);
+  const carom::SceneLoadResult onDisk = carom::loadSceneFile(file);
+  QVERIFY(onDisk.scene);
+  QCOMPARE(onDisk.scene->balls.empty(), written);
+  if (!closes) QCOMPARE(document().scene().balls.size(), std::size_t{0});  // still the edit
+}
+
+void TestEditor::titleShowsModified() {
+  QVERIFY(!window_->isWindowModified());
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(window_->isWindowModified());
+  QVERIFY(window_->windowTitle().contains("floor"));
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QVERIFY(!window_->isWindowModified());  // back at the saved state
+}
+
+QTEST_MAIN(TestEditor)
+#include "test_editor.moc"

@@ -1,0 +1,293 @@
+#include "editor_tools.h"
+
+#include "ray_cast.h"
+#include "scene_document.h"
+#include "scene_view.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+namespace carom::ui {
+namespace {
+
+constexpr double kClickSlopPixels = 4.0;  // a press and release closer than this is a click
+constexpr double kTipGrabPixels = 8.0;
+constexpr double kDefaultBallRadius = 0.5;
+constexpr double kDefaultCylinderRadius = 0.3;
+constexpr int kNudgeRings = 4;  // free spots tried around a refused placement
+
+Vec3 toVec3(const QVector3D& v) {
+  return Vec3(v.x(), v.y(), v.z());
+}
+
+// Two unit vectors across `normal`.
+std::pair<Vec3, Vec3> tangents(const Vec3& normal) {
+  const Vec3 helper = std::abs(normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = normal.cross(helper).normalized();
+  return {u, normal.cross(u)};
+}
+
+}  // namespace
+
+EditorTools::EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent)
+    : QObject(parent), document_(document), view_(view) {
+  view_->installEventFilter(this);
+}
+
+void EditorTools::setTool(Tool tool) {
+  if (tool == tool_) return;
+  tool_ = tool;
+  drag_ = Drag::None;
+  emit toolChanged(tool);
+}
+
+bool EditorTools::eventFilter(QObject* watched, QEvent* event) {
+  if (watched != view_) return false;
+  switch (event->type()) {
+    case QEvent::MouseButtonPress:
+      return mousePress(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseMove:
+      return mouseMove(static_cast<QMouseEvent*>(event));
+    case QEvent::MouseButtonRelease:
+      return mouseRelease(static_cast<QMouseEvent*>(event));
+    case QEvent::KeyPress:
+    case QEvent::KeyRelease: {
+      auto* key = static_cast<QKeyEvent*>(event);
+      const int axis = key->key() == Qt::Key_X   ? 0
+                       : key->key() == Qt::Key_Y ? 1
+                       : key->key() == Qt::Key_Z ? 2
+                                                 : -1;
+      if (axis < 0 || key->isAutoRepeat()) return false;
+      axisLock_ = event->type() == QEvent::KeyPress ? axis : -1;
+      return drag_ == Drag::Objects || drag_ == Drag::Velocity;
+    }
+    default:
+      return false;
+  }
+}
+
+std::optional<ObjectRef> EditorTools::pick(const QPointF& position) const {
+  const auto [origin, direction] = view_->rayAt(position);
+  const Eigen::AlignedBox3d clip = view_->clipBox();
+  const std::optional<RayHit> hit = castRay(document_->scene(), origin, direction, &clip);
+  if (!hit) return std::nullopt;
+  const ObjectKind kind = hit->kind == ShapeKind::Ball    ? ObjectKind::Ball
+                          : hit->kind == ShapeKind::Plane ? ObjectKind::Plane
+                                                          : ObjectKind::Cylinder;
+  return ObjectRef{kind, hit->index};
+}
+
+bool EditorTools::nearVelocityTip(const QPointF& position) const {
+  const Selection& selection = document_->selection();
+  if (selection.size() != 1 || selection.front().kind != ObjectKind::Ball) return false;
+  const Ball& ball = document_->scene().balls[selection.front().index];
+  if (ball.velocity.isZero()) return false;
+  const QPointF tip = view_->project(ball.position + kArrowSeconds * ball.velocity);
+  return std::hypot(tip.x() - position.x(), tip.y() - position.y()) <= kTipGrabPixels;
+}
+
+std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3& point) const {
+  const auto [origin, direction] = view_->rayAt(position);
+  const Vec3 facing = toVec3(view_->camera().eye() - view_->camera().target()).normalized();
+  if (axisLock_ >= 0) {
+    // The point of the locked axis through `point` nearest to the cursor's ray.
+    const Vec3 axis = Vec3::Unit(axisLock_);
+    const Vec3 w = origin - point;
+    const double b = axis.dot(direction);
+    const double denominator = 1.0 - b * b;
+    if (denominator < 1e-9) return std::nullopt;  // looking along the axis
+    const double s = (axis.dot(w) - b * direction.dot(w)) / denominator;
+    return point + s * axis;
+  }
+  const std::optional<double> t = rayPlaneDistance(origin, direction, point, facing);
+  if (!t) return std::nullopt;
+  return origin + *t * direction;
+}
+
+bool EditorTools::mousePress(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton) return false;
+  pressPosition_ = event->position();
+  refusedDuringDrag_ = false;
+  if (tool_ != Tool::Select) {
+    drag_ = Drag::Pending;  // a click places; a drag orbits as usual
+    return false;
+  }
+  const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
+  const bool altDrag = event->modifiers() & Qt::AltModifier;
+  if (!extend && nearVelocityTip(pressPosition_)) {
+    const Ball& ball = document_->scene().balls[document_->selection().front().index];
+    drag_ = Drag::Velocity;
+    grabPoint_ = ball.position + kArrowSeconds * ball.velocity;
+    sceneAtPress_ = document_->scene();
+    gesture_ = document_->newGesture();
+    return true;
+  }
+  const std::optional<ObjectRef> hit = pick(pressPosition_);
+  if (!hit) {
+    drag_ = extend ? Drag::None : Drag::Pending;  // a click on nothing clears the selection
+    return false;
+  }
+  Selection selection = document_->selection();
+  const bool selected = std::find(selection.begin(), selection.end(), *hit) != selection.end();
+  if (extend) {
+    if (selected)
+      std::erase(selection, *hit);
+    else
+      selection.push_back(*hit);
+    document_->setSelection(selection);
+    drag_ = Drag::None;
+    return true;
+  }
+  if (!selected) document_->setSelection({*hit});
+  sceneAtPress_ = document_->scene();
+  gesture_ = document_->newGesture();
+  if (altDrag && hit->kind == ObjectKind::Ball) {
+    // Alt-drag from a ball draws its velocity from the centre, for balls at rest.
+    drag_ = Drag::Velocity;
+    document_->setSelection({*hit});
+    grabPoint_ = sceneAtPress_.balls[hit->index].position;
+    return true;
+  }
+  const auto [origin, direction] = view_->rayAt(pressPosition_);
+  const Eigen::AlignedBox3d clip = view_->clipBox();
+  const std::optional<RayHit> at = castRay(sceneAtPress_, origin, direction, &clip);
+  grabPoint_ = at ? at->point : objectPosition(sceneAtPress_, *hit);
+  drag_ = Drag::Objects;
+  return true;
+}
+
+bool EditorTools::mouseMove(QMouseEvent* event) {
+  if (drag_ != Drag::Objects && drag_ != Drag::Velocity) return false;
+  const std::optional<Vec3> point = onDragPlane(event->position(), grabPoint_);
+  if (!point) return true;
+  Scene edited = sceneAtPress_;
+  QString text;
+  if (drag_ == Drag::Velocity) {
+    Ball& ball = edited.balls[document_->selection().front().index];
+    ball.velocity = (*point - ball.position) / kArrowSeconds;
+    text = tr("Change Velocity");
+  } else {
+    const Vec3 offset = *point - grabPoint_;
+    for (const ObjectRef& ref : document_->selection()) {
+      Vec3 moved = objectPosition(sceneAtPress_, ref) + offset;
+      if (snapToGrid_) {
+        for (int a = 0; a < 3; ++a)
+          if (axisLock_ < 0 || axisLock_ == a)
+            moved[a] = gridStep() * std::round(moved[a] / gridStep());
+      }
+      setObjectPosition(edited, ref, moved);
+    }
+    text = tr("Move");
+  }
+  QString error = document_->apply(edited, text, document_->selection(), gesture_);
+  if (!error.isEmpty() && drag_ == Drag::Objects && axisLock_ < 0) {
+    // Most often the move pushes a ball resting on the floor into it: keep the height and
+    // slide instead.
+    Scene level = edited;
+    for (const ObjectRef& ref : document_->selection()) {
+      Vec3 moved = objectPosition(level, ref);
+      moved.y() = objectPosition(sceneAtPress_, ref).y();
+      setObjectPosition(level, ref, moved);
+    }
+    if (document_->apply(level, text, document_->selection(), gesture_).isEmpty()) error.clear();
+  }
+  if (!error.isEmpty() && !refusedDuringDrag_) {
+    refusedDuringDrag_ = true;  // once per drag; the objects stay at their last valid place
+    emit refused(error);
+  }
+  return true;
+}
+
+bool EditorTools::mouseRelease(QMouseEvent* event) {
+  if (event->button() != Qt::LeftButton) return false;
+  const Drag drag = std::exchange(drag_, Drag::None);
+  if (drag == Drag::Pending) {
+    const QPointF moved = event->position() - pressPosition_;
+    if (std::hypot(moved.x(), moved.y()) <= kClickSlopPixels) {
+      if (tool_ == Tool::Select)
+        document_->setSelection({});
+      else
+        place(event->position());
+    }
+    return false;
+  }
+  return drag == Drag::Objects || drag == Drag::Velocity;
+}
+
+void EditorTools::place(const QPointF& position) {
+  const Scene& scene = document_->scene();
+  const auto [origin, direction] = view_->rayAt(position);
+  const Eigen::AlignedBox3d clip = view_->clipBox();
+  Vec3 point;
+  Vec3 normal = Vec3::UnitY();
+  if (const std::optional<RayHit> hit = castRay(scene, origin, direction, &clip)) {
+    point = hit->point;
+    normal = hit->normal;
+  } else if (const std::optional<double> t =
+                 rayPlaneDistance(origin, direction, Vec3::Zero(), Vec3::UnitY())) {
+    point = origin + *t * direction;  // the ground, y = 0
+    if (origin.y() < 0.0) normal = -Vec3::UnitY();
+  } else {
+    emit refused(tr("Click on a surface or on the ground to place an object."));
+    return;
+  }
+
+  Scene edited = scene;
+  QString text;
+  ObjectRef added;
+  QString error;
+  if (tool_ == Tool::AddBall) {
+    Ball ball;
+    ball.radius = scene.balls.empty() ? kDefaultBallRadius : scene.balls.back().radius;
+    ball.mass = scene.balls.empty() ? 1.0 : scene.balls.back().mass;
+    // Resting on the surface clicked; if that spot is taken, the nearest free one around it.
+    const auto [u, v] = tangents(normal);
+    const Vec3 centre = point + ball.radius * normal;
+    for (int ring = 0; ring <= kNudgeRings; ++ring) {
+      const int spots = ring == 0 ? 1 : 8 * ring;
+      for (int spot = 0; spot < spots; ++spot) {
+        const double angle = 2.0 * std::numbers::pi * spot / spots;
+        const double distance = 2.05 * ball.radius * ring;
+        Scene attempt = scene;
+        ball.position = centre + distance * (std::cos(angle) * u + std::sin(angle) * v);
+        attempt.balls.push_back(ball);
+        const QString problem = document_->apply(
+            attempt, tr("Add Ball"), {{ObjectKind::Ball, static_cast<int>(scene.balls.size())}});
+        if (problem.isEmpty()) return;
+        if (error.isEmpty()) error = problem;
+      }
+    }
+    emit refused(tr("No room for a ball there: %1").arg(error));
+    return;
+  }
+  if (tool_ == Tool::AddPlane) {
+    // A wall through the point, facing the camera across the floor.
+    Plane plane;
+    plane.point = point;
+    Vec3 facing = toVec3(view_->camera().eye()) - point;
+    facing.y() = 0.0;
+    plane.normal = facing.norm() > 1e-9 ? facing.normalized() : Vec3::UnitZ();
+    edited.planes.push_back(plane);
+    added = {ObjectKind::Plane, static_cast<int>(scene.planes.size())};
+    text = tr("Add Plane");
+  } else {
+    // A post standing on the surface clicked.
+    Cylinder cylinder;
+    cylinder.point = point;
+    cylinder.axis = normal;
+    cylinder.radius =
+        scene.cylinders.empty() ? kDefaultCylinderRadius : scene.cylinders.back().radius;
+    edited.cylinders.push_back(cylinder);
+    added = {ObjectKind::Cylinder, static_cast<int>(scene.cylinders.size())};
+    text = tr("Add Cylinder");
+  }
+  error = document_->apply(edited, text, {added});
+  if (!error.isEmpty()) emit refused(tr("Cannot place it there: %1").arg(error));
+}
+
+}  // namespace carom::ui

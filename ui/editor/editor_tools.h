@@ -1,0 +1,75 @@
+#pragma once
+// The view's editing tools, as Tiled's: Select (click to pick, drag to move), Add Ball, Add
+// Plane and Add Cylinder (click to place). They watch the view's mouse and keys and change the
+// scene only through the document, one command per click or drag.
+
+#include "object_ref.h"
+#include "scene.h"
+
+#include <QObject>
+#include <QPointF>
+
+#include <optional>
+
+class QMouseEvent;
+
+namespace carom::render {
+class SceneView;
+}
+
+namespace carom::ui {
+
+class SceneDocument;
+
+class EditorTools : public QObject {
+  Q_OBJECT
+ public:
+  enum class Tool { Select, AddBall, AddPlane, AddCylinder };
+
+  EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent = nullptr);
+
+  Tool tool() const { return tool_; }
+  void setTool(Tool tool);
+  // Moves land on multiples of gridStep() on every axis.
+  bool snapToGrid() const { return snapToGrid_; }
+  void setSnapToGrid(bool on) { snapToGrid_ = on; }
+  static constexpr double gridStep() { return 0.25; }
+
+  // A ball's velocity arrow is this many seconds of its flight long.
+  static constexpr double kArrowSeconds = 0.5;
+
+ signals:
+  void toolChanged(Tool tool);
+  // A placement or move was refused; the text says why.
+  void refused(const QString& message);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  bool mousePress(QMouseEvent* event);
+  bool mouseMove(QMouseEvent* event);
+  bool mouseRelease(QMouseEvent* event);
+  void place(const QPointF& position);
+  // The object under the cursor, by ray casting against the true shapes.
+  std::optional<ObjectRef> pick(const QPointF& position) const;
+  bool nearVelocityTip(const QPointF& position) const;
+  // Where the cursor's ray meets the plane through `point` facing the camera.
+  std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
+
+  SceneDocument* document_;
+  render::SceneView* view_;
+  Tool tool_ = Tool::Select;
+  bool snapToGrid_ = false;
+  int axisLock_ = -1;  // 0, 1, 2 while X, Y or Z is held
+
+  enum class Drag { None, Pending, Objects, Velocity };
+  Drag drag_ = Drag::None;
+  QPointF pressPosition_;
+  Vec3 grabPoint_ = Vec3::Zero();
+  Scene sceneAtPress_;
+  int gesture_ = 0;
+  bool refusedDuringDrag_ = false;
+};
+
+}  // namespace carom::ui

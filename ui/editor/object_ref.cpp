@@ -1,0 +1,131 @@
+#include "object_ref.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace carom::ui {
+
+Selection normalized(Selection selection) {
+  std::sort(selection.begin(), selection.end());
+  selection.erase(std::unique(selection.begin(), selection.end()), selection.end());
+  return selection;
+}
+
+int objectCount(const Scene& scene, ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::Ball:
+      return static_cast<int>(scene.balls.size());
+    case ObjectKind::Plane:
+      return static_cast<int>(scene.planes.size());
+    case ObjectKind::Cylinder:
+      return static_cast<int>(scene.cylinders.size());
+  }
+  return 0;
+}
+
+bool exists(const Scene& scene, const ObjectRef& ref) {
+  return ref.index >= 0 && ref.index < objectCount(scene, ref.kind);
+}
+
+const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref) {
+  switch (ref.kind) {
+    case ObjectKind::Plane:
+      return scene.planes[ref.index];
+    case ObjectKind::Cylinder:
+      return scene.cylinders[ref.index];
+    case ObjectKind::Ball:
+      break;
+  }
+  return scene.balls[ref.index];
+}
+
+ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref) {
+  return const_cast<ObjectInfo&>(objectInfo(std::as_const(scene), ref));
+}
+
+Vec3 objectPosition(const Scene& scene, const ObjectRef& ref) {
+  switch (ref.kind) {
+    case ObjectKind::Plane:
+      return scene.planes[ref.index].point;
+    case ObjectKind::Cylinder:
+      return scene.cylinders[ref.index].point;
+    case ObjectKind::Ball:
+      break;
+  }
+  return scene.balls[ref.index].position;
+}
+
+void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position) {
+  switch (ref.kind) {
+    case ObjectKind::Plane:
+      scene.planes[ref.index].point = position;
+      return;
+    case ObjectKind::Cylinder:
+      scene.cylinders[ref.index].point = position;
+      return;
+    case ObjectKind::Ball:
+      scene.balls[ref.index].position = position;
+      return;
+  }
+}
+
+Scene extract(const Scene& scene, const Selection& selection) {
+  Scene part;
+  part.world = scene.world;
+  for (const ObjectRef& ref : selection) {
+    if (!exists(scene, ref)) continue;
+    switch (ref.kind) {
+      case ObjectKind::Ball:
+        part.balls.push_back(scene.balls[ref.index]);
+        break;
+      case ObjectKind::Plane:
+        part.planes.push_back(scene.planes[ref.index]);
+        break;
+      case ObjectKind::Cylinder:
+        part.cylinders.push_back(scene.cylinders[ref.index]);
+        break;
+    }
+  }
+  return part;
+}
+
+Selection append(Scene& scene, const Scene& objects) {
+  Selection added;
+  for (const Plane& plane : objects.planes) {
+    added.push_back({ObjectKind::Plane, static_cast<int>(scene.planes.size())});
+    scene.planes.push_back(plane);
+  }
+  for (const Cylinder& cylinder : objects.cylinders) {
+    added.push_back({ObjectKind::Cylinder, static_cast<int>(scene.cylinders.size())});
+    scene.cylinders.push_back(cylinder);
+  }
+  for (const Ball& ball : objects.balls) {
+    added.push_back({ObjectKind::Ball, static_cast<int>(scene.balls.size())});
+    scene.balls.push_back(ball);
+  }
+  return normalized(added);
+}
+
+namespace {
+
+template <typename T>
+void eraseIndices(std::vector<T>& items, const Selection& selection, ObjectKind kind) {
+  std::vector<bool> doomed(items.size(), false);
+  for (const ObjectRef& ref : selection)
+    if (ref.kind == kind && ref.index >= 0 && ref.index < static_cast<int>(items.size()))
+      doomed[ref.index] = true;
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (!doomed[i]) items[kept++] = std::move(items[i]);
+  items.resize(kept);
+}
+
+}  // namespace
+
+void remove(Scene& scene, const Selection& selection) {
+  eraseIndices(scene.balls, selection, ObjectKind::Ball);
+  eraseIndices(scene.planes, selection, ObjectKind::Plane);
+  eraseIndices(scene.cylinders, selection, ObjectKind::Cylinder);
+}
+
+}  // namespace carom::ui

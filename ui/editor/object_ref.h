@@ -1,0 +1,40 @@
+#pragma once
+// Names one object of a scene by kind and index, as the editor's selection and commands do.
+
+#include "scene.h"
+
+#include <compare>
+#include <vector>
+
+namespace carom::ui {
+
+enum class ObjectKind { Ball, Plane, Cylinder };
+
+struct ObjectRef {
+  ObjectKind kind = ObjectKind::Ball;
+  int index = 0;
+  auto operator<=>(const ObjectRef&) const = default;
+};
+
+// Sorted by kind, then index; no repeats.
+using Selection = std::vector<ObjectRef>;
+
+Selection normalized(Selection selection);
+// Whether `ref` names an object `scene` has.
+bool exists(const Scene& scene, const ObjectRef& ref);
+int objectCount(const Scene& scene, ObjectKind kind);
+// The shared fields of any object: name, colour, restitution, unknown keys.
+const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref);
+ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref);
+// The point an object is placed and dragged by: a ball's centre, a plane's or cylinder's point.
+Vec3 objectPosition(const Scene& scene, const ObjectRef& ref);
+void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position);
+
+// The selected objects copied into a scene of their own (world settings kept), and the reverse:
+// `objects`' planes, cylinders and balls appended to `scene`, returning the new references.
+Scene extract(const Scene& scene, const Selection& selection);
+Selection append(Scene& scene, const Scene& objects);
+// Removes the selected objects.
+void remove(Scene& scene, const Selection& selection);
+
+}  // namespace carom::ui

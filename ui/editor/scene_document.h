@@ -1,0 +1,74 @@
+#pragma once
+// The open scene, as Tiled's MapDocument: it owns the scene's initial state, the selection and
+// the undo stack. Every change is a command on the stack; views and docks observe the signals.
+
+#include "object_ref.h"
+#include "scene.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <memory>
+
+namespace carom::ui {
+
+class SceneDocument : public QObject {
+  Q_OBJECT
+ public:
+  explicit SceneDocument(QObject* parent = nullptr);
+
+  const Scene& scene() const { return *scene_; }
+  std::shared_ptr<const Scene> sharedScene() const { return scene_; }
+  QUndoStack* undoStack() { return &undoStack_; }
+
+  // The file the scene was read from or last saved to; empty for a new scene.
+  QString fileName() const { return fileName_; }
+  // For the title: the file's base name, or "untitled".
+  QString displayName() const;
+  bool isModified() const { return !undoStack_.isClean(); }
+
+  // New and Open: `scene` (valid) replaces the document's, with an empty history.
+  void reset(const Scene& scene, const QString& fileName);
+  // After a successful save to `fileName`: the current state becomes the unmodified one.
+  void markSaved(const QString& fileName);
+
+  // One user action. `edited` is checked with the scene validation every loader uses; when it
+  // fails, nothing changes and the first problem is returned ("balls[2].radius: must be
+  // positive (got -1)"). Otherwise it becomes one command named `text`, selecting `selection`,
+  // and an empty string is returned. Successive edits with the same non-zero `gesture` (one
+  // mouse drag) merge into one command.
+  QString apply(const Scene& edited, const QString& text, const Selection& selection,
+                int gesture = 0);
+  QString apply(const Scene& edited, const QString& text) {
+    return apply(edited, text, selection_);
+  }
+  // A number for a new gesture, never 0.
+  int newGesture() { return ++lastGesture_; }
+
+  const Selection& selection() const { return selection_; }
+  // References to objects the scene lacks are dropped.
+  void setSelection(Selection selection);
+
+ signals:
+  // After every change of the scene: an edit, undo, redo or reset.
+  void sceneChanged();
+  void selectionChanged();
+  void fileNameChanged();
+  void modifiedChanged(bool modified);
+
+ private:
+  friend class SceneEditCommand;
+  // Called by commands: no validation, no history.
+  void setState(std::shared_ptr<const Scene> scene, const Selection& selection);
+  // Whether the selection changed; emits nothing.
+  bool selectSilently(Selection selection);
+
+  std::shared_ptr<const Scene> scene_;
+  Selection selection_;
+  QString fileName_;
+  QUndoStack undoStack_;
+  int lastGesture_ = 0;
+};
+
+}  // namespace carom::ui
