@@ -71,7 +71,7 @@ bool EditorTools::eventFilter(QObject* watched, QEvent* event) {
   }
 }
 
-std::optional<ObjectRef> EditorTools::pick(const QPointF& position) const {
+std::optional<EditorTools::Picked> EditorTools::pick(const QPointF& position) const {
   const auto [origin, direction] = view_->rayAt(position);
   const Eigen::AlignedBox3d clip = view_->clipBox();
   const std::optional<RayHit> hit = castRay(document_->scene(), origin, direction, &clip);
@@ -79,7 +79,7 @@ std::optional<ObjectRef> EditorTools::pick(const QPointF& position) const {
   const ObjectKind kind = hit->kind == ShapeKind::Ball    ? ObjectKind::Ball
                           : hit->kind == ShapeKind::Plane ? ObjectKind::Plane
                                                           : ObjectKind::Cylinder;
-  return ObjectRef{kind, hit->index};
+  return Picked{{kind, hit->index}, hit->point};
 }
 
 bool EditorTools::nearVelocityTip(const QPointF& position) const {
@@ -127,36 +127,34 @@ bool EditorTools::mousePress(QMouseEvent* event) {
     gesture_ = document_->newGesture();
     return true;
   }
-  const std::optional<ObjectRef> hit = pick(pressPosition_);
-  if (!hit) {
+  const std::optional<Picked> picked = pick(pressPosition_);
+  if (!picked) {
     drag_ = extend ? Drag::None : Drag::Pending;  // a click on nothing clears the selection
     return false;
   }
+  const ObjectRef hit = picked->ref;
   Selection selection = document_->selection();
-  const bool selected = std::find(selection.begin(), selection.end(), *hit) != selection.end();
+  const bool selected = std::find(selection.begin(), selection.end(), hit) != selection.end();
   if (extend) {
     if (selected)
-      std::erase(selection, *hit);
+      std::erase(selection, hit);
     else
-      selection.push_back(*hit);
+      selection.push_back(hit);
     document_->setSelection(selection);
     drag_ = Drag::None;
     return true;
   }
-  if (!selected) document_->setSelection({*hit});
+  if (!selected) document_->setSelection({hit});
   sceneAtPress_ = document_->scene();
   gesture_ = document_->newGesture();
-  if (altDrag && hit->kind == ObjectKind::Ball) {
+  if (altDrag && hit.kind == ObjectKind::Ball) {
     // Alt-drag from a ball draws its velocity from the centre, for balls at rest.
     drag_ = Drag::Velocity;
-    document_->setSelection({*hit});
-    grabPoint_ = sceneAtPress_.balls[hit->index].position;
+    document_->setSelection({hit});
+    grabPoint_ = sceneAtPress_.balls[hit.index].position;
     return true;
   }
-  const auto [origin, direction] = view_->rayAt(pressPosition_);
-  const Eigen::AlignedBox3d clip = view_->clipBox();
-  const std::optional<RayHit> at = castRay(sceneAtPress_, origin, direction, &clip);
-  grabPoint_ = at ? at->point : objectPosition(sceneAtPress_, *hit);
+  grabPoint_ = picked->point;
   drag_ = Drag::Objects;
   return true;
 }

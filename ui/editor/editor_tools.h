@@ -51,8 +51,13 @@ class EditorTools : public QObject {
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
   void place(const QPointF& position);
-  // The object under the cursor, by ray casting against the true shapes.
-  std::optional<ObjectRef> pick(const QPointF& position) const;
+  // The object under the cursor, by ray casting against the true shapes, and where the ray
+  // meets it.
+  struct Picked {
+    ObjectRef ref;
+    Vec3 point;
+  };
+  std::optional<Picked> pick(const QPointF& position) const;
   bool nearVelocityTip(const QPointF& position) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
