@@ -1,11 +1,9 @@
 // The scene editor as a new user meets it: tools, picking, dragging, undo, files and prompts,
 // driven with real mouse and key events under a real X server (Xvfb) with Mesa's OpenGL.
 
+#include "editor_fixture.h"
 #include "editor_tools.h"
-#include "main_window.h"
-#include "scene_document.h"
 #include "scene_file.h"
-#include "scene_view.h"
 
 #include <QAction>
 #include <QApplication>
@@ -30,59 +28,10 @@ using carom::ui::ObjectKind;
 using carom::ui::ObjectRef;
 using carom::ui::SceneDocument;
 
-namespace {
+using carom::testing::DialogAnswerer;
+using carom::testing::floorScene;
 
-// A floor at y = 0 and one ball resting on it: small enough to reason about every pixel.
-carom::Scene floorScene() {
-  carom::Scene scene;
-  carom::Plane floor;
-  floor.normal = Vec3::UnitY();
-  floor.name = "floor";
-  scene.planes.push_back(floor);
-  carom::Ball ball;
-  ball.position = Vec3(0, 0.5, 0);
-  ball.radius = 0.5;
-  ball.name = "first";
-  ball.color = "#ff0000";
-  scene.balls.push_back(ball);
-  // Keeps the view's bounds (and so the camera) the same whatever the test adds.
-  for (double x : {-4.0, 4.0}) {
-    carom::Plane wall;
-    wall.point = Vec3(x, 0, 0);
-    wall.normal = Vec3(x < 0 ? 1 : -1, 0, 0);
-    scene.planes.push_back(wall);
-  }
-  return scene;
-}
-
-// Answers the next modal dialog by pressing `button` once it shows, and records its text.
-class DialogAnswerer {
- public:
-  explicit DialogAnswerer(QMessageBox::StandardButton button) {
-    QTimer::singleShot(0, [this, button] { poll(button); });
-  }
-  QString text() const { return text_; }
-  bool answered() const { return answered_; }
-
- private:
-  void poll(QMessageBox::StandardButton button) {
-    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-    if (!box) {
-      if (++attempts_ < 500) QTimer::singleShot(10, [this, button] { poll(button); });
-      return;
-    }
-    text_ = box->text();
-    answered_ = true;
-    box->button(button)->click();
-  }
-  QString text_;
-  bool answered_ = false;
-  int attempts_ = 0;
-};
-
-}  // namespace
-
-class TestEditor : public QObject {
+class TestEditor : public carom::testing::EditorFixture {
   Q_OBJECT
  public:
   static void initMain() { carom::render::SceneView::setDefaultFormat(); }
@@ -105,32 +54,11 @@ class TestEditor : public QObject {
   void titleShowsModified();
 
  private:
-  SceneDocument& document() { return *window_->document(); }
-  carom::render::SceneView& view() {
-    return *qobject_cast<carom::render::SceneView*>(window_->view());
-  }
-  QPoint at(const Vec3& world) { return view().project(world).toPoint(); }
-  void click(const Vec3& world, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
-    QTest::mouseClick(&view(), Qt::LeftButton, modifiers, at(world));
-  }
-  void chooseTool(const char* name) {
-    QAction* action = window_->findChild<QAction*>(name);
-    QVERIFY2(action, name);
-    action->trigger();
-  }
-
-  std::unique_ptr<MainWindow> window_;
   QTemporaryDir folder_;
 };
 
 void TestEditor::init() {
-  window_ = std::make_unique<MainWindow>();
-  window_->openScene(floorScene(), {}, "floor");
-  window_->resize(1100, 800);
-  window_->show();
-  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-  QApplication::setActiveWindow(window_.get());
-  QTRY_VERIFY(window_->framesRendered() > 0);
+  openWindow();
 }
 
 void TestEditor::addsEachKindByClicking() {

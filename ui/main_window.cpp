@@ -4,6 +4,8 @@
 #include "editor_tools.h"
 #include "energy_plot.h"
 #include "language.h"
+#include "outline_dock.h"
+#include "properties_dock.h"
 
 #include "render_scene.h"
 #include "scene_document.h"
@@ -78,6 +80,17 @@ MainWindow::MainWindow(QWidget* parent)
   connect(tools_, &EditorTools::refused, this, [this](const QString& message) {
     statusBar()->showMessage(message, kMessageMilliseconds);
   });
+  outlineDock_ = new OutlineDock(document_, this);
+  addDockWidget(Qt::RightDockWidgetArea, outlineDock_);
+  connect(outlineDock_->model(), &OutlineModel::refused, this, [this](const QString& message) {
+    statusBar()->showMessage(message, kMessageMilliseconds);
+  });
+  propertiesDock_ = new PropertiesDock(document_, this);
+  addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
+  connect(propertiesDock_, &PropertiesDock::refused, this, [this](const QString& message) {
+    statusBar()->showMessage(message, kMessageMilliseconds);
+  });
+  resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   buildActions();
   buildFileActions();
   buildEditActions();
@@ -109,7 +122,17 @@ MainWindow::MainWindow(QWidget* parent)
   resize(1280, 800);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // Closing the window moves the focus, which commits a value being typed in a dock: the
+  // document takes it, but this half-destroyed window must no longer hear of it.
+  document_->disconnect(this);
+}
+
+void MainWindow::commitTypedValue() {
+  // As if the user had pressed Enter: fields and the outline's name editor commit on focus out.
+  if (QWidget* focus = QApplication::focusWidget(); focus && focus->window() == this)
+    focus->clearFocus();
+}
 
 QWidget* MainWindow::view() const {
   return view_;
@@ -121,6 +144,7 @@ QString MainWindow::statusText() const {
 
 void MainWindow::buildActions() {
   playAction_ = new QAction(tr("&Run"), this);
+  playAction_->setObjectName("run");
   playAction_->setCheckable(true);
   playAction_->setShortcut(Qt::Key_Space);
   playAction_->setToolTip(tr("Run or pause the simulation (Space)"));
@@ -283,6 +307,8 @@ void MainWindow::buildMenus() {
       {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
   viewMenu->addSeparator();
   viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
+  viewMenu->addAction(outlineDock_->toggleViewAction());
+  viewMenu->addAction(propertiesDock_->toggleViewAction());
   viewMenu->addAction(historyDock_->toggleViewAction());
   viewMenu->addSeparator();
   QMenu* languageMenu = viewMenu->addMenu(tr("&Language"));
@@ -383,14 +409,10 @@ void MainWindow::showSelection() {
   for (const ObjectRef& ref : document_->selection()) indices[int(ref.kind)].push_back(ref.index);
   view_->setHighlighted(indices[int(ObjectKind::Ball)], indices[int(ObjectKind::Plane)],
                         indices[int(ObjectKind::Cylinder)]);
-  const Selection& selection = document_->selection();
   std::optional<std::pair<Vec3, Vec3>> arrow;
-  if (selection.size() == 1 && selection.front().kind == ObjectKind::Ball) {
-    const Ball& ball = document_->scene().balls[selection.front().index];
-    if (!ball.velocity.isZero())
-      arrow = {ball.position, ball.position + EditorTools::kArrowSeconds * ball.velocity};
-  }
-  view_->setVelocityArrow(arrow);
+  if (const std::optional<EditorTools::Handle> handle = tools_->handle())
+    arrow = {handle->base, handle->tip};
+  view_->setHandleArrow(arrow);
 }
 
 QString MainWindow::statusMessage() const {
@@ -572,6 +594,7 @@ bool MainWindow::saveAs() {
 }
 
 bool MainWindow::saveTo(const QString& fileName) {
+  commitTypedValue();
   QString error;
   if (!saveSceneFile(document_->scene(), fileName, &error)) {
     // The old file, if any, is untouched: the save writes a new one and renames it over.
@@ -585,6 +608,7 @@ bool MainWindow::saveTo(const QString& fileName) {
 }
 
 bool MainWindow::maybeSave() {
+  commitTypedValue();
   if (!document_->isModified()) return true;
   const auto answer = QMessageBox::question(
       this, tr("Unsaved Changes"),
@@ -690,7 +714,8 @@ void MainWindow::buildEditActions() {
   historyDock_ = new QDockWidget(tr("History"), this);
   historyDock_->setObjectName("historyDock");
   historyDock_->setWidget(new QUndoView(document_->undoStack()));
-  addDockWidget(Qt::RightDockWidgetArea, historyDock_);
+  tabifyDockWidget(outlineDock_, historyDock_);
+  outlineDock_->raise();
   historyDock_->hide();
 }
 

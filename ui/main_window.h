@@ -25,6 +25,8 @@ namespace carom::ui {
 class AccuracyWindow;
 class SceneDocument;
 class EditorTools;
+class OutlineDock;
+class PropertiesDock;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
@@ -54,6 +56,8 @@ class MainWindow : public QMainWindow {
   bool saveAs();
   SceneDocument* document() const { return document_; }
   EditorTools* tools() const { return tools_; }
+  OutlineDock* outlineDock() const { return outlineDock_; }
+  PropertiesDock* propertiesDock() const { return propertiesDock_; }
   // The status bar's passing message (refusals, saves), as opposed to the status line.
   QString statusMessage() const;
 
@@ -81,6 +85,8 @@ class MainWindow : public QMainWindow {
   void buildToolActions();
   void showSelection();
   bool saveTo(const QString& fileName);
+  // Commits what the user is typing in a dock, before a save or a question about saving.
+  void commitTypedValue();
   // Asks about unsaved changes; false when the user cancels (or a save fails).
   bool maybeSave();
   QString lastFolder() const;
@@ -132,7 +138,10 @@ class MainWindow : public QMainWindow {
   QAction* useStateAction_ = nullptr;
   QAction* applyToRunningAction_ = nullptr;
   QDockWidget* historyDock_ = nullptr;
+  OutlineDock* outlineDock_ = nullptr;
+  PropertiesDock* propertiesDock_ = nullptr;
   static constexpr int kMessageMilliseconds = 8000;
+  static constexpr int kDockWidth = 330;
   static constexpr int kMaxRecentFiles = 8;
   static constexpr int kMaxPlacementAttempts = 20;
   static constexpr const char* kRecentFilesKey = "files/recent";

@@ -64,7 +64,7 @@ bool EditorTools::eventFilter(QObject* watched, QEvent* event) {
                                                  : -1;
       if (axis < 0 || key->isAutoRepeat()) return false;
       axisLock_ = event->type() == QEvent::KeyPress ? axis : -1;
-      return drag_ == Drag::Objects || drag_ == Drag::Velocity;
+      return drag_ == Drag::Objects || drag_ == Drag::Handle;
     }
     default:
       return false;
@@ -82,13 +82,57 @@ std::optional<EditorTools::Picked> EditorTools::pick(const QPointF& position) co
   return Picked{{kind, hit->index}, hit->point};
 }
 
-bool EditorTools::nearVelocityTip(const QPointF& position) const {
+std::optional<EditorTools::Handle> EditorTools::handle() const {
   const Selection& selection = document_->selection();
-  if (selection.size() != 1 || selection.front().kind != ObjectKind::Ball) return false;
-  const Ball& ball = document_->scene().balls[selection.front().index];
-  if (ball.velocity.isZero()) return false;
-  const QPointF tip = view_->project(ball.position + kArrowSeconds * ball.velocity);
+  if (selection.size() != 1) return std::nullopt;
+  const ObjectRef& ref = selection.front();
+  const Scene& scene = document_->scene();
+  const double length = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
+  switch (ref.kind) {
+    case ObjectKind::Ball: {
+      const Ball& ball = scene.balls[ref.index];
+      if (ball.velocity.isZero()) return std::nullopt;
+      return Handle{ball.position, ball.position + kArrowSeconds * ball.velocity};
+    }
+    case ObjectKind::Plane: {
+      const Plane& plane = scene.planes[ref.index];
+      return Handle{plane.point, plane.point + length * plane.normal.normalized()};
+    }
+    case ObjectKind::Cylinder: {
+      const Cylinder& cylinder = scene.cylinders[ref.index];
+      return Handle{cylinder.point, cylinder.point + length * cylinder.axis.normalized()};
+    }
+  }
+  return std::nullopt;
+}
+
+bool EditorTools::nearHandleTip(const QPointF& position) const {
+  const std::optional<Handle> arrow = handle();
+  if (!arrow) return false;
+  const QPointF tip = view_->project(arrow->tip);
   return std::hypot(tip.x() - position.x(), tip.y() - position.y()) <= kTipGrabPixels;
+}
+
+void EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const {
+  switch (ref.kind) {
+    case ObjectKind::Ball: {
+      Ball& ball = scene.balls[ref.index];
+      ball.velocity = (point - ball.position) / kArrowSeconds;
+      return;
+    }
+    case ObjectKind::Plane: {
+      Plane& plane = scene.planes[ref.index];
+      const Vec3 direction = point - plane.point;
+      if (direction.norm() > 0.0) plane.normal = direction.normalized();
+      return;
+    }
+    case ObjectKind::Cylinder: {
+      Cylinder& cylinder = scene.cylinders[ref.index];
+      const Vec3 direction = point - cylinder.point;
+      if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
+      return;
+    }
+  }
 }
 
 std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3& point) const {
@@ -119,10 +163,9 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   }
   const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
   const bool altDrag = event->modifiers() & Qt::AltModifier;
-  if (!extend && nearVelocityTip(pressPosition_)) {
-    const Ball& ball = document_->scene().balls[document_->selection().front().index];
-    drag_ = Drag::Velocity;
-    grabPoint_ = ball.position + kArrowSeconds * ball.velocity;
+  if (!extend && nearHandleTip(pressPosition_)) {
+    drag_ = Drag::Handle;
+    grabPoint_ = handle()->tip;
     sceneAtPress_ = document_->scene();
     gesture_ = document_->newGesture();
     return true;
@@ -149,7 +192,7 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   gesture_ = document_->newGesture();
   if (altDrag && hit.kind == ObjectKind::Ball) {
     // Alt-drag from a ball draws its velocity from the centre, for balls at rest.
-    drag_ = Drag::Velocity;
+    drag_ = Drag::Handle;
     document_->setSelection({hit});
     grabPoint_ = sceneAtPress_.balls[hit.index].position;
     return true;
@@ -160,15 +203,17 @@ bool EditorTools::mousePress(QMouseEvent* event) {
 }
 
 bool EditorTools::mouseMove(QMouseEvent* event) {
-  if (drag_ != Drag::Objects && drag_ != Drag::Velocity) return false;
+  if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
   const std::optional<Vec3> point = onDragPlane(event->position(), grabPoint_);
   if (!point) return true;
   Scene edited = sceneAtPress_;
   QString text;
-  if (drag_ == Drag::Velocity) {
-    Ball& ball = edited.balls[document_->selection().front().index];
-    ball.velocity = (*point - ball.position) / kArrowSeconds;
-    text = tr("Change Velocity");
+  if (drag_ == Drag::Handle) {
+    const ObjectRef& ref = document_->selection().front();
+    dragHandle(edited, ref, *point);
+    text = ref.kind == ObjectKind::Ball    ? tr("Change Velocity")
+           : ref.kind == ObjectKind::Plane ? tr("Turn Plane")
+                                           : tr("Turn Cylinder");
   } else {
     const Vec3 offset = *point - grabPoint_;
     for (const ObjectRef& ref : document_->selection()) {
@@ -214,7 +259,7 @@ bool EditorTools::mouseRelease(QMouseEvent* event) {
     }
     return false;
   }
-  return drag == Drag::Objects || drag == Drag::Velocity;
+  return drag == Drag::Objects || drag == Drag::Handle;
 }
 
 void EditorTools::place(const QPointF& position) {

@@ -37,6 +37,16 @@ class EditorTools : public QObject {
 
   // A ball's velocity arrow is this many seconds of its flight long.
   static constexpr double kArrowSeconds = 0.5;
+  // A plane's normal and a cylinder's axis arrows are this fraction of the view's clip box.
+  static constexpr double kDirectionArrowFraction = 0.12;
+
+  // The arrow a single selected object shows, whose tip drags: a ball's velocity (none at
+  // rest), a plane's normal from its point, a cylinder's axis from its point.
+  struct Handle {
+    Vec3 base;
+    Vec3 tip;
+  };
+  std::optional<Handle> handle() const;
 
  signals:
   void toolChanged(Tool tool);
@@ -58,7 +68,9 @@ class EditorTools : public QObject {
     Vec3 point;
   };
   std::optional<Picked> pick(const QPointF& position) const;
-  bool nearVelocityTip(const QPointF& position) const;
+  bool nearHandleTip(const QPointF& position) const;
+  // The edit a handle drag to `point` makes of `scene`'s single selected object.
+  void dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
 
@@ -68,7 +80,7 @@ class EditorTools : public QObject {
   bool snapToGrid_ = false;
   int axisLock_ = -1;  // 0, 1, 2 while X, Y or Z is held
 
-  enum class Drag { None, Pending, Objects, Velocity };
+  enum class Drag { None, Pending, Objects, Handle };
   Drag drag_ = Drag::None;
   QPointF pressPosition_;
   Vec3 grabPoint_ = Vec3::Zero();

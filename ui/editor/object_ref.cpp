@@ -1,5 +1,7 @@
 #include "object_ref.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <utility>
 
@@ -41,6 +43,37 @@ const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref) {
 
 ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref) {
   return const_cast<ObjectInfo&>(objectInfo(std::as_const(scene), ref));
+}
+
+QString kindName(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::Plane:
+      return QCoreApplication::translate("ObjectRef", "Plane");
+    case ObjectKind::Cylinder:
+      return QCoreApplication::translate("ObjectRef", "Cylinder");
+    case ObjectKind::Ball:
+      break;
+  }
+  return QCoreApplication::translate("ObjectRef", "Ball");
+}
+
+QString kindPluralName(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::Plane:
+      return QCoreApplication::translate("ObjectRef", "Planes");
+    case ObjectKind::Cylinder:
+      return QCoreApplication::translate("ObjectRef", "Cylinders");
+    case ObjectKind::Ball:
+      break;
+  }
+  return QCoreApplication::translate("ObjectRef", "Balls");
+}
+
+QString objectLabel(const Scene& scene, const ObjectRef& ref) {
+  const std::string& name = objectInfo(scene, ref).name;
+  if (!name.empty()) return QString::fromStdString(name);
+  // Numbered as in the validation's messages ("balls[3].radius").
+  return QCoreApplication::translate("ObjectRef", "%1 %2").arg(kindName(ref.kind)).arg(ref.index);
 }
 
 Vec3 objectPosition(const Scene& scene, const ObjectRef& ref) {

@@ -3,6 +3,8 @@
 
 #include "scene.h"
 
+#include <QString>
+
 #include <compare>
 #include <vector>
 
@@ -29,6 +31,12 @@ ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref);
 // The point an object is placed and dragged by: a ball's centre, a plane's or cylinder's point.
 Vec3 objectPosition(const Scene& scene, const ObjectRef& ref);
 void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position);
+
+// "Ball", "Plane", "Cylinder", and the plural for groups, translated.
+QString kindName(ObjectKind kind);
+QString kindPluralName(ObjectKind kind);
+// What the editor calls an object: its name, or its kind and index ("Ball 3") when it has none.
+QString objectLabel(const Scene& scene, const ObjectRef& ref);
 
 // The selected objects copied into a scene of their own (world settings kept), and the reverse:
 // `objects`' planes, cylinders and balls appended to `scene`, returning the new references.

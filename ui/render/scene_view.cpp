@@ -751,8 +751,8 @@ void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
   update();
 }
 
-void SceneView::setVelocityArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
-  velocityArrow_ = std::move(fromTo);
+void SceneView::setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
+  handleArrow_ = std::move(fromTo);
   update();
 }
 
@@ -761,9 +761,9 @@ Eigen::AlignedBox3d SceneView::clipBox() const {
   return Eigen::AlignedBox3d(scene_->bounds.min, scene_->bounds.max);
 }
 
-void SceneView::drawVelocityArrow(const QMatrix4x4& viewProjection, const QVector3D& eye) {
-  if (!velocityArrow_) return;
-  const auto& [from, to] = *velocityArrow_;
+void SceneView::drawHandleArrow(const QMatrix4x4& viewProjection, const QVector3D& eye) {
+  if (!handleArrow_) return;
+  const auto& [from, to] = *handleArrow_;
   const Vec3 shaft = to - from;
   const double length = shaft.norm();
   if (length <= 0.0) return;
@@ -1088,7 +1088,7 @@ void SceneView::paintGL() {
     glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
   }
   drawExplosions(viewProjection, eye);
-  drawVelocityArrow(viewProjection, eye);
+  drawHandleArrow(viewProjection, eye);
 
   if (multisampled) {
     const QSize size = multisampleSize_;

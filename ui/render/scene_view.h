@@ -61,8 +61,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Eigen::AlignedBox3d clipBox() const;
   // Shown in the selection's colour (indices into the scene's balls, planes, cylinders).
   void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders);
-  // An arrow drawn on top of everything, such as a selected ball's velocity.
-  void setVelocityArrow(std::optional<std::pair<Vec3, Vec3>> fromTo);
+  // An arrow drawn on top of everything: the editor's handle of a ball's velocity, a plane's
+  // normal or a cylinder's axis.
+  void setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo);
 
   // The camera target tracks this ball; -1 stops. Panning or Home stop it too.
   void setFollowedBall(int index);
@@ -104,7 +105,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
  private:
   void releaseGl();
-  void drawVelocityArrow(const QMatrix4x4& viewProjection, const QVector3D& eye);
+  void drawHandleArrow(const QMatrix4x4& viewProjection, const QVector3D& eye);
   // Binds the multisampled framebuffer, made or resized to the view; false if it cannot be.
   bool bindMultisampleBuffer();
   void releaseMultisampleBuffer();
@@ -131,7 +132,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::vector<int> highlightedBalls_;
   std::vector<int> highlightedPlanes_;
   std::vector<int> highlightedCylinders_;
-  std::optional<std::pair<Vec3, Vec3>> velocityArrow_;
+  std::optional<std::pair<Vec3, Vec3>> handleArrow_;
   std::optional<bool> antialiasingChoice_;
   bool softwareRenderer_ = false;
   QElapsedTimer clock_;

@@ -1,0 +1,125 @@
+#pragma once
+// What the editor's GUI tests share: a small scene, a window showing it, clicks at world
+// points, and an answerer for modal dialogs that never lets one hang the run.
+
+#include "main_window.h"
+#include "scene_document.h"
+#include "scene_view.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDialog>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTest>
+#include <QTimer>
+
+#include <functional>
+#include <memory>
+
+namespace carom::testing {
+
+// A floor at y = 0 and one ball resting on it, between two walls at x = -4 and 4 that keep the
+// view's bounds (and so the camera) the same whatever a test adds.
+inline Scene floorScene() {
+  Scene scene;
+  Plane floor;
+  floor.normal = Vec3::UnitY();
+  floor.name = "floor";
+  scene.planes.push_back(floor);
+  Ball ball;
+  ball.position = Vec3(0, 0.5, 0);
+  ball.radius = 0.5;
+  ball.name = "first";
+  ball.color = "#ff0000";
+  scene.balls.push_back(ball);
+  for (double x : {-4.0, 4.0}) {
+    Plane wall;
+    wall.point = Vec3(x, 0, 0);
+    wall.normal = Vec3(x < 0 ? 1 : -1, 0, 0);
+    scene.planes.push_back(wall);
+  }
+  return scene;
+}
+
+// Waits for the next modal dialog of type `Dialog`, then hands it to `answer` (which must close
+// it). Gives up after five seconds, closing whatever modal dialog is up, so no test hangs.
+template <typename Dialog>
+class ModalAnswerer {
+ public:
+  explicit ModalAnswerer(std::function<void(Dialog*)> answer) : answer_(std::move(answer)) {
+    QTimer::singleShot(0, [this] { poll(); });
+  }
+  bool answered() const { return answered_; }
+
+ private:
+  void poll() {
+    QWidget* modal = QApplication::activeModalWidget();
+    if (auto* dialog = qobject_cast<Dialog*>(modal)) {
+      answered_ = true;
+      answer_(dialog);
+      return;
+    }
+    if (++attempts_ < 500) {
+      QTimer::singleShot(10, [this] { poll(); });
+    } else if (auto* other = qobject_cast<QDialog*>(modal)) {
+      other->reject();
+    }
+  }
+  std::function<void(Dialog*)> answer_;
+  bool answered_ = false;
+  int attempts_ = 0;
+};
+
+// Presses `button` in the next message box and records its text.
+class DialogAnswerer {
+ public:
+  explicit DialogAnswerer(QMessageBox::StandardButton button)
+      : answerer_([this, button](QMessageBox* box) {
+          text_ = box->text();
+          box->button(button)->click();
+        }) {}
+  QString text() const { return text_; }
+  bool answered() const { return answerer_.answered(); }
+
+ private:
+  QString text_;
+  ModalAnswerer<QMessageBox> answerer_;
+};
+
+// Opens a window on floorScene() for each test and drives its view.
+class EditorFixture : public QObject {
+ protected:
+  void openWindow() {
+    window_ = std::make_unique<ui::MainWindow>();
+    window_->openScene(floorScene(), {}, "floor");
+    window_->resize(1200, 800);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QApplication::setActiveWindow(window_.get());
+    QTRY_VERIFY(window_->framesRendered() > 0);
+  }
+  ui::SceneDocument& document() { return *window_->document(); }
+  render::SceneView& view() { return *qobject_cast<render::SceneView*>(window_->view()); }
+  QPoint at(const Vec3& world) { return view().project(world).toPoint(); }
+  void click(const Vec3& world, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QTest::mouseClick(&view(), Qt::LeftButton, modifiers, at(world));
+  }
+  void chooseTool(const char* name) {
+    QAction* action = window_->findChild<QAction*>(name);
+    QVERIFY2(action, name);
+    action->trigger();
+  }
+  // A press, moves in `steps` and a release, from `from` to `to` in view pixels; moves reach
+  // the window asynchronously on xcb, so `arrived` is awaited before the release.
+  void drag(QPoint from, QPoint to, const std::function<bool()>& arrived, int steps = 10) {
+    QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
+    for (int i = 1; i <= steps; ++i) QTest::mouseMove(&view(), from + (to - from) * i / steps);
+    QTRY_VERIFY(arrived());
+    QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, to);
+  }
+
+  std::unique_ptr<ui::MainWindow> window_;
+};
+
+}  // namespace carom::testing

@@ -1,0 +1,448 @@
+// The editor's docks and handles as a user drives them: the outline (grouped objects, selection
+// shared with the view, renaming), the properties dock (typed fields, units, the shared
+// validation refusing bad values, multi-selection, the world settings, the colour picker), and
+// the handles that turn a plane's normal and a cylinder's axis.
+
+#include "editor_fixture.h"
+#include "editor_tools.h"
+#include "outline_dock.h"
+#include "properties_dock.h"
+#include "scene_file.h"
+
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QTreeView>
+#include <QUndoStack>
+
+using carom::Vec3;
+using carom::ui::ObjectKind;
+using carom::ui::Selection;
+
+class TestEditorDocks : public carom::testing::EditorFixture {
+  Q_OBJECT
+ public:
+  static void initMain() { carom::render::SceneView::setDefaultFormat(); }
+
+ private slots:
+  void init() { openWindow(); }
+  void cleanup() { window_.reset(); }
+
+  void outlineGroupsEveryObject();
+  void outlineFollowsEdits();
+  void selectingInTheOutlineSelectsInTheView();
+  void selectingInTheViewSelectsInTheOutline();
+  void renamingInTheOutline();
+  void editsAFieldAsOneCommand();
+  void refusesBadValues_data();
+  void refusesBadValues();
+  void editsEverySelectedObject();
+  void showsOnlyTheFieldsTheSelectionHas();
+  void editsTheWorldWhenNothingIsSelected();
+  void picksAColour();
+  void turnsAPlaneByItsHandle();
+  void turnsACylinderByItsHandle();
+  void typesANormal();
+  void saveTakesTheValueBeingTyped();
+
+ private:
+  QTreeView& tree() { return *window_->outlineDock()->tree(); }
+  carom::ui::OutlineModel& outline() { return *window_->outlineDock()->model(); }
+  carom::ui::PropertiesDock& properties() { return *window_->propertiesDock(); }
+  QLineEdit* field(const QString& name) {
+    auto* edit = properties().findChild<QLineEdit*>(name);
+    if (!edit) qWarning("no field %s", qPrintable(name));
+    return edit;
+  }
+  // Clicks into the field, replaces its text as a user would, and presses Enter.
+  void type(const QString& name, const QString& text) {
+    QLineEdit* edit = field(name);
+    QVERIFY(edit);
+    QVERIFY2(edit->isVisible(), qPrintable(name));
+    QTest::mouseClick(edit, Qt::LeftButton);
+    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClick(edit, Qt::Key_Backspace);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+  }
+  void clickRow(const QModelIndex& index, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    tree().scrollTo(index);
+    QTest::mouseClick(tree().viewport(), Qt::LeftButton, modifiers,
+                      tree().visualRect(index).center());
+  }
+  // Pixels of the view's image, in the square round the ball, that differ from `before`.
+  int changedPixelsAroundBall(const QImage& before) {
+    const Vec3 centre = document().scene().balls[0].position;
+    const double radius = document().scene().balls[0].radius;
+    const QPointF middle = view().project(centre);
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const QPointF side = view().project(centre + radius * Vec3::Unit(a)) - middle;
+      reach = std::max(reach, std::hypot(side.x(), side.y()));
+    }
+    const QImage after = view().grabFramebuffer();
+    const double scale = after.width() / double(view().width());
+    int changed = 0;
+    for (int y = int((middle.y() - reach) * scale); y <= int((middle.y() + reach) * scale); ++y)
+      for (int x = int((middle.x() - reach) * scale); x <= int((middle.x() + reach) * scale); ++x)
+        if (after.valid(x, y) && after.pixel(x, y) != before.pixel(x, y)) ++changed;
+    return changed;
+  }
+  Selection outlineSelection() {
+    Selection selection;
+    for (const QModelIndex& index : tree().selectionModel()->selectedIndexes())
+      if (auto ref = outline().objectAt(index)) selection.push_back(*ref);
+    return carom::ui::normalized(selection);
+  }
+  // Adds a cylinder standing at (2, 0, -2), away from the ball, as one command.
+  void addCylinder() {
+    carom::Scene edited = document().scene();
+    carom::Cylinder post;
+    post.point = Vec3(2, 0, -2);
+    post.radius = 0.3;
+    edited.cylinders.push_back(post);
+    QVERIFY(document().apply(edited, "add").isEmpty());
+  }
+};
+
+void TestEditorDocks::outlineGroupsEveryObject() {
+  const QModelIndex balls = outline().groupIndex(ObjectKind::Ball);
+  const QModelIndex planes = outline().groupIndex(ObjectKind::Plane);
+  const QModelIndex cylinders = outline().groupIndex(ObjectKind::Cylinder);
+  QCOMPARE(balls.data().toString(), QString("Balls (1)"));
+  QCOMPARE(planes.data().toString(), QString("Planes (3)"));
+  QCOMPARE(cylinders.data().toString(), QString("Cylinders (0)"));
+  QCOMPARE(outline().rowCount(planes), 3);
+  // Named objects show their names; the others their kind and index, as in messages.
+  QCOMPARE(outline().index(0, 0, balls).data().toString(), QString("first"));
+  QCOMPARE(outline().index(0, 0, planes).data().toString(), QString("floor"));
+  QCOMPARE(outline().index(2, 0, planes).data().toString(), QString("Plane 2"));
+  QCOMPARE(outline().index(2, 0, planes).data(Qt::ToolTipRole).toString(), QString("planes[2]"));
+  // The ball's colour as its icon; groups cannot be selected.
+  QVERIFY(!outline().index(0, 0, balls).data(Qt::DecorationRole).isNull());
+  QVERIFY(!(outline().flags(balls) & Qt::ItemIsSelectable));
+}
+
+void TestEditorDocks::outlineFollowsEdits() {
+  chooseTool("toolAddBall");
+  click(Vec3(2, 0, 1));
+  const QModelIndex balls = outline().groupIndex(ObjectKind::Ball);
+  QCOMPARE(outline().rowCount(balls), 2);
+  QCOMPARE(balls.data().toString(), QString("Balls (2)"));
+  // The new ball is selected, in the outline too.
+  QCOMPARE(outlineSelection(), (Selection{{ObjectKind::Ball, 1}}));
+  document().undoStack()->undo();
+  QCOMPARE(outline().rowCount(balls), 1);
+  QVERIFY(outlineSelection().empty());
+  // Deleting the first of several shifts the rest up.
+  document().setSelection({{ObjectKind::Plane, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  const QModelIndex planes = outline().groupIndex(ObjectKind::Plane);
+  QCOMPARE(outline().rowCount(planes), 2);
+  QCOMPARE(outline().index(0, 0, planes).data().toString(), QString("Plane 0"));
+}
+
+void TestEditorDocks::selectingInTheOutlineSelectsInTheView() {
+  const QModelIndex planes = outline().groupIndex(ObjectKind::Plane);
+  clickRow(outline().index(0, 0, outline().groupIndex(ObjectKind::Ball)));
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Ball, 0}}));
+  QVERIFY(properties().heading().contains("first"));
+  clickRow(outline().index(2, 0, planes), Qt::ControlModifier);
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Ball, 0}, {ObjectKind::Plane, 2}}));
+  clickRow(outline().index(0, 0, planes));
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Plane, 0}}));
+  // A click on a group's row selects nothing.
+  clickRow(planes);
+  QVERIFY(document().selection().empty());
+  // The view draws the selection: a ring round the ball when the outline picks it.
+  const QImage before = view().grabFramebuffer();
+  clickRow(outline().index(0, 0, outline().groupIndex(ObjectKind::Ball)));
+  QTRY_VERIFY(changedPixelsAroundBall(before) > 20);
+}
+
+void TestEditorDocks::selectingInTheViewSelectsInTheOutline() {
+  chooseTool("toolSelect");
+  click(Vec3(0, 0.5, 0));
+  QCOMPARE(outlineSelection(), (Selection{{ObjectKind::Ball, 0}}));
+  click(Vec3(1.5, 0, 1.5), Qt::ControlModifier);
+  QCOMPARE(outlineSelection(), (Selection{{ObjectKind::Ball, 0}, {ObjectKind::Plane, 0}}));
+  QTest::keyClick(window_.get(), Qt::Key_A, Qt::ControlModifier);
+  QCOMPARE(outlineSelection().size(), std::size_t{4});
+  QTest::mouseClick(&view(), Qt::LeftButton, Qt::NoModifier, QPoint(view().width() / 2, 3));
+  QVERIFY(outlineSelection().empty());
+}
+
+void TestEditorDocks::renamingInTheOutline() {
+  const QModelIndex wall = outline().index(1, 0, outline().groupIndex(ObjectKind::Plane));
+  clickRow(wall);
+  QTest::keyClick(&tree(), Qt::Key_F2);
+  auto* editor = tree().viewport()->findChild<QLineEdit*>();
+  QTRY_VERIFY(editor && editor->isVisible());
+  QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(editor, "west wall");  // spaces and letters reach the editor, not shortcuts
+  QTest::keyClick(editor, Qt::Key_Return);
+  // The item view commits on its next turn of the event loop.
+  QTRY_COMPARE(document().scene().planes[1].name, std::string("west wall"));
+  QCOMPARE(document().undoStack()->count(), 1);
+  QCOMPARE(wall.data().toString(), QString("west wall"));
+  // Space typed into the name did not run the simulation.
+  QVERIFY(!window_->findChild<QAction*>("run")->isChecked());
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().planes[1].name, std::string());
+}
+
+void TestEditorDocks::editsAFieldAsOneCommand() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QCOMPARE(field("ballRadius")->text(), QString("0.5"));
+  type("ballRadius", "0.25");
+  QCOMPARE(document().scene().balls[0].radius, 0.25);
+  type("position.y", "2");
+  QCOMPARE(document().scene().balls[0].position, Vec3(0, 2, 0));
+  type("velocity.x", "-1.5");
+  QCOMPARE(document().scene().balls[0].velocity, Vec3(-1.5, 0, 0));
+  type("name", "Cue ball");
+  QCOMPARE(document().scene().balls[0].name, std::string("Cue ball"));
+  QCOMPARE(document().undoStack()->count(), 4);
+  QCOMPARE(document().undoStack()->text(0), QString("Change Radius"));
+  // The typed value shows as the scene has it; the command undoes and redoes.
+  QCOMPARE(field("velocity.x")->text(), QString("-1.5"));
+  document().undoStack()->undo();
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().balls[0].velocity, Vec3::Zero());
+  QCOMPARE(field("velocity.x")->text(), QString("0"));
+  document().undoStack()->redo();
+  QCOMPARE(field("velocity.x")->text(), QString("-1.5"));
+  // Units stand beside the fields.
+  QVERIFY(properties().findChildren<QLabel*>().size() > 0);
+  bool hasUnit = false;
+  for (QLabel* label : properties().findChildren<QLabel*>())
+    hasUnit |= label->isVisible() && label->text() == "m/s";
+  QVERIFY(hasUnit);
+  // Leaving a field unchanged makes no command (which would drop the redoable one).
+  QTest::mouseClick(field("mass"), Qt::LeftButton);
+  QTest::keyClick(field("mass"), Qt::Key_Return);
+  QCOMPARE(document().undoStack()->index(), 3);
+  QCOMPARE(document().undoStack()->count(), 4);
+}
+
+void TestEditorDocks::refusesBadValues_data() {
+  QTest::addColumn<QString>("field");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("negative radius") << "ballRadius"
+                                   << "-1"
+                                   << "balls[0].radius: must be positive";
+  QTest::newRow("zero mass") << "mass"
+                             << "0"
+                             << "balls[0].mass: must be positive";
+  QTest::newRow("not a number") << "mass"
+                                << "heavy"
+                                << "“heavy” is not a number";
+  QTest::newRow("nan") << "position.x"
+                       << "nan"
+                       << "balls[0].position: must be finite";
+  QTest::newRow("overflow") << "velocity.z"
+                            << "1e400"
+                            << "“1e400” is out of range";
+  QTest::newRow("absurd") << "velocity.z"
+                          << "1e300"
+                          << "balls[0].velocity: must be at most";
+  QTest::newRow("restitution") << "restitution"
+                               << "1.5"
+                               << "balls[0].restitution";
+  QTest::newRow("colour") << "color"
+                          << "red"
+                          << "balls[0].color: must be empty or";
+  QTest::newRow("into the floor") << "position.y"
+                                  << "0.2"
+                                  << "overlaps";
+}
+
+void TestEditorDocks::refusesBadValues() {
+  QFETCH(QString, field);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  document().setSelection({{ObjectKind::Ball, 0}});
+  const carom::Scene before = document().scene();
+  const QString shownBefore = this->field(field)->text();
+  type(field, typed);
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), 0);
+  QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
+  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QCOMPARE(this->field(field)->text(), shownBefore);  // the field shows the scene's value again
+  // The next good edit clears the message.
+  type("mass", "2");
+  QCOMPARE(document().scene().balls[0].mass, 2.0);
+  QVERIFY(properties().message().isEmpty());
+}
+
+void TestEditorDocks::editsEverySelectedObject() {
+  carom::Scene edited = document().scene();
+  carom::Ball second = edited.balls[0];
+  second.position = Vec3(2, 1, 0);
+  second.radius = 1.0;
+  second.name = "second";
+  edited.balls.push_back(second);
+  QVERIFY(document().apply(edited, "add").isEmpty());
+  document().setSelection({{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}});
+  QVERIFY2(properties().heading().contains("2 selected"), qPrintable(properties().heading()));
+  // Values the balls share show; those they do not are blank, marked "mixed".
+  QCOMPARE(field("mass")->text(), QString("1"));
+  QCOMPARE(field("ballRadius")->text(), QString());
+  QCOMPARE(field("ballRadius")->placeholderText(), QString("mixed"));
+  QCOMPARE(field("position.z")->text(), QString("0"));
+  type("ballRadius", "0.4");
+  QCOMPARE(document().scene().balls[0].radius, 0.4);
+  QCOMPARE(document().scene().balls[1].radius, 0.4);
+  QCOMPARE(document().undoStack()->count(), 2);  // the add and one edit for both
+  // One component of a vector, for both: their x stays their own.
+  type("velocity.y", "3");
+  QCOMPARE(document().scene().balls[0].velocity, Vec3(0, 3, 0));
+  QCOMPARE(document().scene().balls[1].velocity, Vec3(0, 3, 0));
+  QCOMPARE(document().scene().balls[1].position.x(), 2.0);
+}
+
+void TestEditorDocks::showsOnlyTheFieldsTheSelectionHas() {
+  addCylinder();
+  document().setSelection({{ObjectKind::Plane, 0}});
+  QVERIFY(field("normal.y")->isVisible());
+  QVERIFY(!field("ballRadius")->isVisible() && !field("axis.x")->isVisible());
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  QVERIFY(field("axis.y")->isVisible() && field("cylinderRadius")->isVisible());
+  QCOMPARE(field("cylinderRadius")->text(), QString("0.3"));
+  // A plane and a cylinder share their point, name, colour and restitution.
+  document().setSelection({{ObjectKind::Plane, 1}, {ObjectKind::Cylinder, 0}});
+  QVERIFY(field("point.x")->isVisible() && field("name")->isVisible());
+  QVERIFY(!field("normal.x")->isVisible() && !field("axis.x")->isVisible());
+  QVERIFY(!field("gravity.y")->isVisible());
+  type("point.z", "-1");
+  QCOMPARE(document().scene().planes[1].point.z(), -1.0);
+  QCOMPARE(document().scene().cylinders[0].point.z(), -1.0);
+  // Restitution left empty means the world's; typing sets the objects' own.
+  QCOMPARE(field("restitution")->text(), QString());
+  QVERIFY(field("restitution")->placeholderText().contains("1"));
+  type("restitution", "0.5");
+  QCOMPARE(document().scene().planes[1].restitution, std::optional(0.5));
+  type("restitution", "");
+  QCOMPARE(document().scene().planes[1].restitution, std::nullopt);
+}
+
+void TestEditorDocks::editsTheWorldWhenNothingIsSelected() {
+  document().setSelection({});
+  QVERIFY(properties().heading().contains("World"));
+  QVERIFY(!field("name")->isVisible());
+  type("gravity.y", "-3.5");
+  QCOMPARE(document().scene().world.gravity, Vec3(0, -3.5, 0));
+  // The toolbar shows the same world.
+  QCOMPARE(window_->findChild<QDoubleSpinBox*>("gravityY")->value(), -3.5);
+  type("timeStep", "0");
+  QVERIFY(properties().message().contains("world.timeStep"));
+  QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
+  type("worldRestitution", "0.9");
+  QCOMPARE(document().scene().world.restitution, 0.9);
+  auto* method = properties().findChild<QComboBox*>("method");
+  QVERIFY(method && method->isVisible());
+  method->setCurrentIndex(int(carom::Method::Swept));
+  QCOMPARE(document().scene().world.method, carom::Method::Swept);
+  auto* integrator = properties().findChild<QComboBox*>("integrator");
+  integrator->setCurrentIndex(int(carom::Integrator::VelocityVerlet));
+  QCOMPARE(document().scene().world.integrator, carom::Integrator::VelocityVerlet);
+  QCOMPARE(document().undoStack()->count(), 4);
+  // A world edit from the toolbar shows in the dock.
+  window_->findChild<QDoubleSpinBox*>("gravityX")->setValue(1.25);
+  QCOMPARE(field("gravity.x")->text(), QString("1.25"));
+}
+
+void TestEditorDocks::picksAColour() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QCOMPARE(field("color")->text(), QString("#ff0000"));
+  auto* button = properties().findChild<QToolButton*>("pickColor");
+  QVERIFY(button);
+  carom::testing::ModalAnswerer<QColorDialog> answer([](QColorDialog* dialog) {
+    QCOMPARE(dialog->currentColor(), QColor("#ff0000"));  // starts at the ball's colour
+    dialog->setCurrentColor(QColor("#00ff80"));
+    dialog->accept();
+  });
+  QTest::mouseClick(button, Qt::LeftButton);
+  QTRY_VERIFY(answer.answered());
+  QTRY_COMPARE(document().scene().balls[0].color, std::string("#00ff80"));
+  QCOMPARE(field("color")->text(), QString("#00ff80"));
+  QCOMPARE(document().undoStack()->count(), 1);
+  // A colour typed in works as well; empty means the default.
+  type("color", "");
+  QCOMPARE(document().scene().balls[0].color, std::string());
+}
+
+void TestEditorDocks::turnsAPlaneByItsHandle() {
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Plane, 1}});  // the wall at x = -4, facing +x
+  const std::optional<carom::ui::EditorTools::Handle> handle = window_->tools()->handle();
+  QVERIFY(handle);
+  QCOMPARE(handle->base, Vec3(-4, 0, 0));
+  QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitX()));
+  const QPoint tip = at(handle->tip);
+  // Upwards on screen: the normal tilts up.
+  drag(tip, tip + QPoint(0, -60), [&] { return document().scene().planes[1].normal.y() > 0.2; });
+  const Vec3 normal = document().scene().planes[1].normal;
+  QVERIFY2(normal.y() > 0.2 && normal.x() > 0.0,
+           qPrintable(QString("%1 %2 %3").arg(normal.x()).arg(normal.y()).arg(normal.z())));
+  QCOMPARE(normal.norm(), 1.0);
+  QCOMPARE(document().scene().planes[1].point, Vec3(-4, 0, 0));  // turned, not moved
+  QCOMPARE(document().undoStack()->count(), 1);
+  QCOMPARE(document().undoStack()->text(0), QString("Turn Plane"));
+  // The dock shows the new normal.
+  QCOMPARE(field("normal.y")->text().toDouble(), normal.y());
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().planes[1].normal, Vec3(1, 0, 0));
+}
+
+void TestEditorDocks::turnsACylinderByItsHandle() {
+  addCylinder();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  const std::optional<carom::ui::EditorTools::Handle> handle = window_->tools()->handle();
+  QVERIFY(handle);
+  QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitY()));
+  const QPoint tip = at(handle->tip);
+  drag(tip, tip + QPoint(80, 0),
+       [&] { return std::abs(document().scene().cylinders[0].axis.y()) < 0.95; });
+  const Vec3 axis = document().scene().cylinders[0].axis;
+  QVERIFY2(std::abs(axis.y()) < 0.95, qPrintable(QString::number(axis.y())));
+  QCOMPARE(document().undoStack()->count(), 2);
+  QCOMPARE(document().undoStack()->text(1), QString("Turn Cylinder"));
+}
+
+void TestEditorDocks::typesANormal() {
+  document().setSelection({{ObjectKind::Plane, 2}});  // the wall at x = 4, facing -x
+  type("normal.x", "0");
+  QVERIFY2(properties().message().contains("planes[2].normal"), qPrintable(properties().message()));
+  QCOMPARE(document().scene().planes[2].normal, Vec3(-1, 0, 0));
+  type("normal.z", "-1");
+  QCOMPARE(document().scene().planes[2].normal, Vec3(-1, 0, -1));  // any length will do
+  QCOMPARE(document().undoStack()->count(), 1);
+}
+
+void TestEditorDocks::saveTakesTheValueBeingTyped() {
+  QTemporaryDir folder;
+  const QString file = folder.filePath("typed.carom");
+  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), file, nullptr));
+  QVERIFY(window_->openFile(file, false));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QLineEdit* mass = field("mass");
+  QTest::mouseClick(mass, Qt::LeftButton);
+  QTest::keyClick(mass, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(mass, "3");
+  QTest::keyClick(mass, Qt::Key_S, Qt::ControlModifier);  // no Enter first
+  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  QVERIFY(saved.scene);
+  QCOMPARE(saved.scene->balls[0].mass, 3.0);
+  QVERIFY(!document().isModified());
+}
+
+QTEST_MAIN(TestEditorDocks)
+#include "test_editor_docks.moc"

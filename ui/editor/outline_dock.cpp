@@ -1,0 +1,212 @@
+#include "outline_dock.h"
+
+#include "scene_document.h"
+
+#include <QColor>
+#include <QHeaderView>
+#include <QItemSelection>
+#include <QKeyEvent>
+#include <QPixmap>
+#include <QTreeView>
+
+#include <algorithm>
+
+namespace carom::ui {
+namespace {
+
+// Children carry their group's number plus one; groups carry 0.
+constexpr quintptr kGroupId = 0;
+
+ObjectKind kindOfGroup(int row) {
+  return static_cast<ObjectKind>(row);
+}
+
+}  // namespace
+
+OutlineModel::OutlineModel(SceneDocument* document, QObject* parent)
+    : QAbstractItemModel(parent), document_(document) {
+  for (int g = 0; g < 3; ++g) counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
+  connect(document_, &SceneDocument::sceneChanged, this, &OutlineModel::sync);
+}
+
+void OutlineModel::sync() {
+  const Scene& scene = document_->scene();
+  for (int g = 0; g < 3; ++g) {
+    const int now = objectCount(scene, kindOfGroup(g));
+    const int before = counts_[g];
+    const QModelIndex group = index(g, 0);
+    if (now < before) {
+      beginRemoveRows(group, now, before - 1);
+      counts_[g] = now;
+      endRemoveRows();
+    } else if (now > before) {
+      beginInsertRows(group, before, now - 1);
+      counts_[g] = now;
+      endInsertRows();
+    }
+    // Indices shift when objects are removed, and names and colours may have changed.
+    if (std::min(now, before) > 0)
+      emit dataChanged(index(0, 0, group), index(std::min(now, before) - 1, 0, group));
+    emit dataChanged(group, group);
+  }
+}
+
+QModelIndex OutlineModel::index(int row, int column, const QModelIndex& parent) const {
+  if (column != 0 || row < 0) return {};
+  if (!parent.isValid()) return row < 3 ? createIndex(row, 0, kGroupId) : QModelIndex();
+  if (parent.internalId() != kGroupId || row >= counts_[parent.row()]) return {};
+  return createIndex(row, 0, quintptr(parent.row() + 1));
+}
+
+QModelIndex OutlineModel::parent(const QModelIndex& child) const {
+  if (!child.isValid() || child.internalId() == kGroupId) return {};
+  return createIndex(int(child.internalId() - 1), 0, kGroupId);
+}
+
+int OutlineModel::rowCount(const QModelIndex& parent) const {
+  if (!parent.isValid()) return 3;
+  if (parent.internalId() != kGroupId) return 0;
+  return counts_[parent.row()];
+}
+
+int OutlineModel::columnCount(const QModelIndex&) const {
+  return 1;
+}
+
+QModelIndex OutlineModel::groupIndex(ObjectKind kind) const {
+  return index(static_cast<int>(kind), 0);
+}
+
+QModelIndex OutlineModel::indexOf(const ObjectRef& ref) const {
+  return index(ref.index, 0, groupIndex(ref.kind));
+}
+
+std::optional<ObjectRef> OutlineModel::objectAt(const QModelIndex& index) const {
+  if (!index.isValid() || index.internalId() == kGroupId) return std::nullopt;
+  const ObjectRef ref{kindOfGroup(int(index.internalId() - 1)), index.row()};
+  if (!exists(document_->scene(), ref)) return std::nullopt;
+  return ref;
+}
+
+QVariant OutlineModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid()) return {};
+  const Scene& scene = document_->scene();
+  if (index.internalId() == kGroupId) {
+    const ObjectKind kind = kindOfGroup(index.row());
+    if (role == Qt::DisplayRole)
+      return tr("%1 (%2)").arg(kindPluralName(kind)).arg(objectCount(scene, kind));
+    return {};
+  }
+  const std::optional<ObjectRef> ref = objectAt(index);
+  if (!ref) return {};
+  switch (role) {
+    case Qt::DisplayRole:
+      return objectLabel(scene, *ref);
+    case Qt::EditRole:
+      return QString::fromStdString(objectInfo(scene, *ref).name);
+    case Qt::ToolTipRole: {
+      const char* list = ref->kind == ObjectKind::Ball    ? "balls"
+                         : ref->kind == ObjectKind::Plane ? "planes"
+                                                          : "cylinders";
+      return QString("%1[%2]").arg(list).arg(ref->index);
+    }
+    case Qt::DecorationRole: {
+      const QColor color(QString::fromStdString(objectInfo(scene, *ref).color));
+      if (!color.isValid()) return {};
+      QPixmap swatch(12, 12);
+      swatch.fill(color);
+      return swatch;
+    }
+    default:
+      return {};
+  }
+}
+
+bool OutlineModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+  const std::optional<ObjectRef> ref = objectAt(index);
+  if (!ref || role != Qt::EditRole) return false;
+  Scene edited = document_->scene();
+  objectInfo(edited, *ref).name = value.toString().trimmed().toStdString();
+  if (edited == document_->scene()) return false;
+  const QString error = document_->apply(edited, tr("Rename"));
+  if (!error.isEmpty()) emit refused(error);
+  return error.isEmpty();
+}
+
+Qt::ItemFlags OutlineModel::flags(const QModelIndex& index) const {
+  if (!index.isValid()) return Qt::NoItemFlags;
+  if (index.internalId() == kGroupId) return Qt::ItemIsEnabled;
+  return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable;
+}
+
+OutlineDock::OutlineDock(SceneDocument* document, QWidget* parent)
+    : QDockWidget(tr("Outline"), parent),
+      document_(document),
+      model_(new OutlineModel(document, this)),
+      tree_(new QTreeView) {
+  setObjectName("outlineDock");
+  tree_->setObjectName("outline");
+  tree_->setModel(model_);
+  tree_->setHeaderHidden(true);
+  tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+  // Every row is one line: the view need not measure 100,000 of them.
+  tree_->setUniformRowHeights(true);
+  tree_->expandAll();
+  setWidget(tree_);
+  tree_->installEventFilter(this);
+  connect(tree_->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+          &OutlineDock::selectionEdited);
+  // After the model has caught up with the scene (it connected first).
+  connect(document_, &SceneDocument::sceneChanged, this, &OutlineDock::showSelection);
+  connect(document_, &SceneDocument::selectionChanged, this, &OutlineDock::showSelection);
+  showSelection();
+}
+
+bool OutlineDock::eventFilter(QObject* watched, QEvent* event) {
+  // F2 renames while the outline has the focus, as in any tree, though the window uses it to
+  // follow a ball.
+  if (watched == tree_ && event->type() == QEvent::ShortcutOverride &&
+      static_cast<QKeyEvent*>(event)->key() == Qt::Key_F2) {
+    event->accept();
+    return true;
+  }
+  return QDockWidget::eventFilter(watched, event);
+}
+
+void OutlineDock::showSelection() {
+  // Runs of consecutive indices become one range each, so Select All on a large scene is three.
+  QItemSelection selection;
+  const Selection& refs = document_->selection();
+  for (std::size_t i = 0; i < refs.size();) {
+    std::size_t last = i;
+    while (last + 1 < refs.size() && refs[last + 1].kind == refs[i].kind &&
+           refs[last + 1].index == refs[last].index + 1)
+      ++last;
+    selection.select(model_->indexOf(refs[i]), model_->indexOf(refs[last]));
+    i = last + 1;
+  }
+  showingSelection_ = true;
+  tree_->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
+  if (!refs.empty()) {
+    const QModelIndex first = model_->indexOf(refs.front());
+    tree_->expand(first.parent());
+    tree_->selectionModel()->setCurrentIndex(first, QItemSelectionModel::NoUpdate);
+    tree_->scrollTo(first);
+  }
+  showingSelection_ = false;
+}
+
+void OutlineDock::selectionEdited() {
+  if (showingSelection_) return;
+  Selection selection;
+  for (const QItemSelectionRange& range : tree_->selectionModel()->selection()) {
+    const QModelIndex top = range.topLeft();
+    const std::optional<ObjectRef> first = model_->objectAt(top);
+    if (!first) continue;
+    for (int row = top.row(); row <= range.bottom(); ++row) selection.push_back({first->kind, row});
+  }
+  document_->setSelection(selection);
+}
+
+}  // namespace carom::ui

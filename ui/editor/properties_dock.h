@@ -1,0 +1,106 @@
+#pragma once
+// Edits every field of the selection, or the world settings when nothing is selected. Each
+// field is typed in; a change becomes one document command, checked by the same scene
+// validation the loader uses, and a refused value leaves the scene as it was.
+
+#include "object_ref.h"
+#include "scene.h"
+
+#include <QDockWidget>
+#include <QString>
+
+#include <vector>
+
+class QComboBox;
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+class QToolButton;
+
+namespace carom::ui {
+
+class SceneDocument;
+
+class PropertiesDock : public QDockWidget {
+  Q_OBJECT
+ public:
+  explicit PropertiesDock(SceneDocument* document, QWidget* parent = nullptr);
+
+  // What the dock shows at the top: the object's name, a count of the selection, or "World".
+  QString heading() const;
+  // The last refusal, shown under the fields until the next successful edit.
+  QString message() const;
+
+ signals:
+  // A typed value was refused; the text says why.
+  void refused(const QString& message);
+
+ private:
+  // Which objects a row applies to; a row shows when every selected object is of its kinds.
+  enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kObjects = 7, kWorld = 8 };
+  // Accessors return the field inside a scene, for one object (unused for world rows). The
+  // scene is const for reading; a write goes through the same accessor on the edited copy.
+  using NumberAccess = const double* (*)(const Scene&, const ObjectRef&);
+  using VectorAccess = const Vec3* (*)(const Scene&, const ObjectRef&);
+  using TextAccess = const std::string* (*)(const Scene&, const ObjectRef&);
+
+  struct Row {
+    int kinds;
+    QString label;
+    QString change;  // the command's text
+    std::vector<QWidget*> widgets;
+  };
+  struct NumberEditor {
+    QLineEdit* edit;
+    int row;
+    NumberAccess number;  // a number field, or
+    VectorAccess vector;  // one component of a vector field
+    int component;
+  };
+  struct TextEditor {
+    QLineEdit* edit;
+    int row;
+    TextAccess text;
+  };
+
+  int addRow(int kinds, const QString& label, const QString& change, QWidget* field,
+             const QString& unit = {});
+  void addNumber(int kinds, const char* name, const QString& label, const QString& change,
+                 const QString& unit, NumberAccess access);
+  void addVector(int kinds, const char* name, const QString& label, const QString& change,
+                 const QString& unit, VectorAccess access);
+  void addText(int kinds, const char* name, const QString& label, const QString& change,
+               TextAccess access, QToolButton* extra = nullptr);
+  void addRestitution();
+  void addWorldChoices();
+
+  // Document to fields.
+  void refresh();
+  int selectedKinds() const;
+  // The objects an edit of row `row` applies to: the selection, or one dummy for the world.
+  Selection targets() const;
+  // Fields to document, as one command; false (and a message) when refused.
+  bool commit(const Scene& edited, const QString& change);
+  void refuse(const QString& message);
+  void numberEdited(const NumberEditor& editor);
+  void textEdited(const TextEditor& editor);
+  void restitutionEdited();
+  void pickColor();
+
+  SceneDocument* document_;
+  QFormLayout* form_ = nullptr;
+  QLabel* heading_ = nullptr;
+  QLabel* message_ = nullptr;
+  std::vector<Row> rows_;
+  std::vector<NumberEditor> numbers_;
+  std::vector<TextEditor> texts_;
+  int restitutionRow_ = -1;
+  QLineEdit* restitution_ = nullptr;
+  int colorRow_ = -1;
+  QLineEdit* color_ = nullptr;
+  QToolButton* colorButton_ = nullptr;
+  QComboBox* method_ = nullptr;
+  QComboBox* integrator_ = nullptr;
+};
+
+}  // namespace carom::ui
