@@ -11,6 +11,8 @@
 #include <QDialog>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTest>
 #include <QTimer>
 
@@ -89,8 +91,16 @@ class DialogAnswerer {
 
 // Opens a window on floorScene() for each test and drives its view.
 class EditorFixture : public QObject {
+ public:
+  static void initMain() {
+    render::SceneView::setDefaultFormat();
+    // Settings go to a test folder, not the user's.
+    QStandardPaths::setTestModeEnabled(true);
+  }
+
  protected:
   void openWindow() {
+    QSettings().clear();  // recent files and choices start afresh for every test
     window_ = std::make_unique<ui::MainWindow>();
     window_->openScene(floorScene(), {}, "floor");
     window_->resize(1200, 800);

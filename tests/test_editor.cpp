@@ -4,12 +4,16 @@
 #include "editor_fixture.h"
 #include "editor_tools.h"
 #include "scene_file.h"
+#include "simulation_controller.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QClipboard>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -33,8 +37,6 @@ using carom::testing::floorScene;
 
 class TestEditor : public carom::testing::EditorFixture {
   Q_OBJECT
- public:
-  static void initMain() { carom::render::SceneView::setDefaultFormat(); }
 
  private slots:
   void init();
@@ -52,6 +54,12 @@ class TestEditor : public carom::testing::EditorFixture {
   void unsavedChangesPrompt_data();
   void unsavedChangesPrompt();
   void titleShowsModified();
+  void saveAsAsksForAName();
+  void saveAsCancelledWritesNothing();
+  void aFailedSaveSaysWhyAndKeepsTheEdits();
+  void anEditRestartsTheRun();
+  void editsCanApplyToTheRunningState();
+  void useCurrentStateAsInitial();
 
  private:
   QTemporaryDir folder_;
@@ -286,6 +294,142 @@ void TestEditor::titleShowsModified() {
   QVERIFY(window_->windowTitle().contains("floor"));
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
   QVERIFY(!window_->isWindowModified());  // back at the saved state
+}
+
+void TestEditor::saveAsAsksForAName() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QStringList suggested;
+  const QString typed = folder_.filePath("chosen");  // no suffix: .carom is added
+  carom::testing::ModalAnswerer<QFileDialog> answer([&](QFileDialog* dialog) {
+    suggested = dialog->selectedFiles();
+    dialog->selectFile(typed);
+    QMetaObject::invokeMethod(dialog, "accept");  // the Save button's slot
+  });
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+  QVERIFY(answer.answered());
+  // The example's name was offered.
+  QCOMPARE(suggested.size(), 1);
+  QVERIFY2(suggested.first().endsWith("floor.carom"), qPrintable(suggested.first()));
+  const QString file = typed + ".carom";
+  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  QVERIFY2(saved.scene, qPrintable(saved.error));
+  QVERIFY(*saved.scene == document().scene());
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  QVERIFY(!document().isModified());
+  QVERIFY(window_->windowTitle().startsWith("chosen.carom"));
+  // Ctrl+S now saves there without asking.
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+  QCOMPARE(carom::loadSceneFile(file).scene->balls.size(), std::size_t{1});
+}
+
+void TestEditor::saveAsCancelledWritesNothing() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  const QStringList filesBefore = QDir(folder_.path()).entryList(QDir::Files);
+  carom::testing::ModalAnswerer<QFileDialog> answer([](QFileDialog* dialog) { dialog->reject(); });
+  QVERIFY(!window_->saveAs());
+  QVERIFY(answer.answered());
+  QVERIFY(document().isModified());
+  QVERIFY(document().fileName().isEmpty());
+  QCOMPARE(QDir(folder_.path()).entryList(QDir::Files), filesBefore);
+}
+
+void TestEditor::aFailedSaveSaysWhyAndKeepsTheEdits() {
+  // A scene file that cannot be replaced: its name has become a folder with a file in it.
+  const QString file = folder_.filePath("blocked.carom");
+  QVERIFY(carom::saveSceneFile(floorScene(), file, nullptr));
+  QVERIFY(window_->openFile(file, false));
+  QVERIFY(QFile::remove(file));
+  QVERIFY(QDir(folder_.path()).mkpath("blocked.carom"));
+  {
+    QFile inside(file + "/keep.txt");
+    QVERIFY(inside.open(QIODevice::WriteOnly));
+    inside.write("kept");
+  }
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  DialogAnswerer answer(QMessageBox::Ok);
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+  QVERIFY(answer.answered());
+  QVERIFY2(answer.text().startsWith(file + ": cannot save"), qPrintable(answer.text()));
+  QVERIFY(document().isModified());
+  QCOMPARE(document().scene().balls.size(), std::size_t{0});
+  QVERIFY(QFileInfo(file).isDir());
+  QFile inside(file + "/keep.txt");
+  QVERIFY(inside.open(QIODevice::ReadOnly));
+  QCOMPARE(inside.readAll(), QByteArray("kept"));
+}
+
+namespace {
+
+// Two balls falling from 3 m onto the floor.
+carom::Scene fallingScene() {
+  carom::Scene scene = floorScene();
+  scene.balls[0].position = Vec3(-2, 3, 0);
+  carom::Ball second = scene.balls[0];
+  second.position = Vec3(2, 3, 0);
+  second.name = "second";
+  scene.balls.push_back(second);
+  return scene;
+}
+
+}  // namespace
+
+void TestEditor::anEditRestartsTheRun() {
+  window_->openScene(fallingScene(), {}, "falling");
+  window_->setRunning(true);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.5);
+  carom::Scene edited = document().scene();
+  edited.balls[1].mass = 2.0;
+  QVERIFY(document().apply(edited, "heavier").isEmpty());
+  // From the start of the edited scene, still running.
+  QTRY_VERIFY(window_->simulation().latest()->time < 0.4);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.1);
+  window_->setRunning(false);
+}
+
+void TestEditor::editsCanApplyToTheRunningState() {
+  window_->openScene(fallingScene(), {}, "falling");
+  QAction* applyToRunning = window_->findChild<QAction*>("applyToRunningState");
+  QVERIFY(applyToRunning);
+  applyToRunning->setChecked(true);
+  window_->setRunning(true);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  window_->setRunning(false);
+  QTRY_VERIFY(!window_->simulation().latest()->running);
+  const std::vector<Vec3> running = window_->simulation().latest()->positions;
+  QVERIFY(running[1].y() < 3.0);
+  // Ball 0 is edited and starts over; ball 1 is left alone and stays where the run had it.
+  carom::Scene edited = document().scene();
+  edited.balls[0].color = "#00ff00";
+  QVERIFY(document().apply(edited, "recolour").isEmpty());
+  QTRY_COMPARE(window_->simulation().latest()->time, 0.0);
+  QCOMPARE(window_->simulation().latest()->positions[0], Vec3(-2, 3, 0));
+  QCOMPARE(window_->simulation().latest()->positions[1], running[1]);
+  // Off: the next edit starts everything from the scene.
+  applyToRunning->setChecked(false);
+  edited.balls[0].color = "#0000ff";
+  QVERIFY(document().apply(edited, "recolour").isEmpty());
+  QTRY_COMPARE(window_->simulation().latest()->positions[1], Vec3(2, 3, 0));
+}
+
+void TestEditor::useCurrentStateAsInitial() {
+  window_->openScene(fallingScene(), {}, "falling");
+  window_->setRunning(true);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  window_->setRunning(false);
+  QTRY_VERIFY(!window_->simulation().latest()->running);
+  const std::shared_ptr<const carom::ui::SimulationSnapshot> state = window_->simulation().latest();
+  window_->findChild<QAction*>("useCurrentState")->trigger();
+  QCOMPARE(document().undoStack()->count(), 1);
+  for (std::size_t i = 0; i < 2; ++i) {
+    QCOMPARE(document().scene().balls[i].position, state->positions[i]);
+    QCOMPARE(document().scene().balls[i].velocity, state->velocities[i]);
+  }
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls[1].position, Vec3(2, 3, 0));
 }
 
 QTEST_MAIN(TestEditor)

@@ -25,8 +25,6 @@ using carom::ui::Selection;
 
 class TestEditorDocks : public carom::testing::EditorFixture {
   Q_OBJECT
- public:
-  static void initMain() { carom::render::SceneView::setDefaultFormat(); }
 
  private slots:
   void init() { openWindow(); }

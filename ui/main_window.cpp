@@ -558,7 +558,8 @@ void MainWindow::buildFileActions() {
   saveAction_->setShortcut(QKeySequence::Save);
   connect(saveAction_, &QAction::triggered, this, &MainWindow::save);
   saveAsAction_ = new QAction(tr("Save &As…"), this);
-  saveAsAction_->setShortcut(QKeySequence::SaveAs);
+  // Spelled out: the standard key is empty on X11 outside GNOME and KDE.
+  saveAsAction_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
 }
 
@@ -698,8 +699,10 @@ void MainWindow::buildEditActions() {
   });
 
   useStateAction_ = new QAction(tr("&Use Current State as Initial"), this);
+  useStateAction_->setObjectName("useCurrentState");
   connect(useStateAction_, &QAction::triggered, this, &MainWindow::useCurrentState);
   applyToRunningAction_ = new QAction(tr("Edits Apply to the &Running State"), this);
+  applyToRunningAction_->setObjectName("applyToRunningState");
   applyToRunningAction_->setCheckable(true);
   applyToRunningAction_->setToolTip(
       tr("Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves "
