@@ -10,6 +10,44 @@
     </message>
 </context>
 <context>
+    <name>ObjectRef</name>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="51"/>
+        <source>Plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="53"/>
+        <source>Cylinder</source>
+        <translation>Zylinder</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <source>Ball</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="63"/>
+        <source>Planes</source>
+        <translation>Ebenen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="65"/>
+        <source>Cylinders</source>
+        <translation>Zylinder</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="69"/>
+        <source>Balls</source>
+        <translation>Kugeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="76"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
         <location filename="../ui/accuracy_window.cpp" line="41"/>
@@ -89,6 +127,59 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::EditorTools</name>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="214"/>
+        <source>Change Velocity</source>
+        <translation>Geschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="215"/>
+        <source>Turn Plane</source>
+        <translation>Ebene drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="216"/>
+        <source>Turn Cylinder</source>
+        <translation>Zylinder drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="228"/>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="279"/>
+        <source>Click on a surface or on the ground to place an object.</source>
+        <translation>Klicken Sie auf eine Fläche oder den Boden, um ein Objekt zu platzieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <source>Add Ball</source>
+        <translation>Kugel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <source>No room for a ball there: %1</source>
+        <translation>Dort ist kein Platz für eine Kugel: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="320"/>
+        <source>Add Plane</source>
+        <translation>Ebene hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="330"/>
+        <source>Add Cylinder</source>
+        <translation>Zylinder hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="333"/>
+        <source>Cannot place it there: %1</source>
+        <translation>Kann dort nicht platziert werden: %1</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EnergyPlot</name>
     <message>
         <location filename="../ui/energy_plot.cpp" line="35"/>
@@ -119,238 +210,761 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="53"/>
+        <location filename="../ui/main_window.cpp" line="70"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="94"/>
-        <location filename="../ui/main_window.cpp" line="99"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="97"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="99"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
+        <location filename="../ui/main_window.cpp" line="156"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="105"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="111"/>
+        <location filename="../ui/main_window.cpp" line="164"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="113"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
+        <location filename="../ui/main_window.cpp" line="172"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="184"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="138"/>
+        <location filename="../ui/main_window.cpp" line="191"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="203"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
+        <location filename="../ui/main_window.cpp" line="208"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="211"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="165"/>
+        <location filename="../ui/main_window.cpp" line="218"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="173"/>
+        <location filename="../ui/main_window.cpp" line="226"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="180"/>
+        <location filename="../ui/main_window.cpp" line="233"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="183"/>
+        <location filename="../ui/main_window.cpp" line="236"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
+        <location filename="../ui/main_window.cpp" line="239"/>
+        <source>Change Gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="245"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
+        <source>Change Time Step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
+        <source>Change Method</source>
+        <translation>Methode ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="262"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="212"/>
+        <location filename="../ui/main_window.cpp" line="264"/>
+        <source>Change Integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="271"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="273"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="279"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="286"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="215"/>
+        <location filename="../ui/main_window.cpp" line="289"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="217"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="430"/>
+        <source>Add Ball</source>
+        <translation>Kugel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="431"/>
+        <source>Add Plane</source>
+        <translation>Ebene hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="432"/>
+        <source>Add Cylinder</source>
+        <translation>Zylinder hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="433"/>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="446"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Am &amp;Raster ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Moves land on multiples of %1 m</source>
+        <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="457"/>
+        <source>%1[*] — Carom</source>
+        <translation>%1[*] — Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="483"/>
+        <source>Apply Settings</source>
+        <translation>Einstellungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="544"/>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="549"/>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="554"/>
+        <source>Open Scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="554"/>
+        <source>Carom scenes (*.carom *.json);;All files (*)</source>
+        <translation>Carom-Szenen (*.carom *.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="557"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="560"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="571"/>
+        <source>Cannot Open Scene</source>
+        <translation>Szene kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="587"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="590"/>
+        <source>Save Scene</source>
+        <translation>Szene speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="591"/>
+        <source>Carom scenes (*.carom);;All files (*)</source>
+        <translation>Carom-Szenen (*.carom);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="602"/>
+        <source>Cannot Save Scene</source>
+        <translation>Szene kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="615"/>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="616"/>
+        <source>The scene %1 has unsaved changes. Save them?</source>
+        <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="650"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="671"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="673"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="677"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="680"/>
+        <source>&amp;Paste</source>
+        <translation>E&amp;infügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="683"/>
+        <source>&amp;Duplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="686"/>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="688"/>
+        <source>De&amp;lete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="691"/>
+        <source>Select &amp;All</source>
+        <translation>&amp;Alles auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="701"/>
+        <source>&amp;Use Current State as Initial</source>
+        <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="704"/>
+        <source>Edits Apply to the &amp;Running State</source>
+        <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="708"/>
+        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
+        <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="717"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="740"/>
+        <source>clipboard</source>
+        <translation>Zwischenablage</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="742"/>
+        <source>Nothing to paste: %1</source>
+        <translation>Nichts einzufügen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="745"/>
+        <source>Paste</source>
+        <translation>Einfügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="769"/>
+        <source>Cannot place the objects: %1</source>
+        <translation>Die Objekte können nicht platziert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="776"/>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="788"/>
+        <source>Use Current State as Initial</source>
+        <translation>Aktuellen Zustand als Anfang übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="277"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="219"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="230"/>
+        <location filename="../ui/main_window.cpp" line="305"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="236"/>
+        <location filename="../ui/main_window.cpp" line="314"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="246"/>
+        <location filename="../ui/main_window.cpp" line="324"/>
         <source>The language changes when Carom is next started.</source>
         <translation>Die Sprache wird beim nächsten Start von Carom gewechselt.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
-        <source>%1 — Carom</source>
-        <translation>%1 — Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
         <translation>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %5 Kugeln   E = %6 J (Drift %7)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="344"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>   sound unavailable</source>
         <translation>   Ton nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="346"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>   muted</source>
         <translation>   stummgeschaltet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="347"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — die Physik kommt nicht hinterher; läuft langsamer</translation>
     </message>
 </context>
 <context>
+    <name>carom::ui::OutlineDock</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
+        <source>Outline</source>
+        <translation>Übersicht</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::OutlineModel</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="97"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="131"/>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::PropertiesDock</name>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="54"/>
+        <source>“%1” is out of range</source>
+        <translation>„%1“ liegt außerhalb des Wertebereichs</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
+        <source>“%1” is not a number</source>
+        <translation>„%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="87"/>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="108"/>
+        <source>(any length)</source>
+        <translation>(beliebige Länge)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="114"/>
+        <source>Choose a colour</source>
+        <translation>Farbe wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <source>Change Colour</source>
+        <translation>Farbe ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <source>Change Velocity</source>
+        <translation>Geschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <source>Change Radius</source>
+        <translation>Radius ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Change Mass</source>
+        <translation>Masse ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Normal</source>
+        <translation>Normale</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Turn Plane</source>
+        <translation>Ebene drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Turn Cylinder</source>
+        <translation>Zylinder drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Change Gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <source>Change Time Step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <source>Restitution</source>
+        <translation>Stoßzahl</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <source>Change Restitution</source>
+        <translation>Stoßzahl ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="244"/>
+        <source>0 to 1; empty: the world&apos;s restitution</source>
+        <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="257"/>
+        <source>Change Method</source>
+        <translation>Methode ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="266"/>
+        <source>Change Integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
+        <source>World (nothing selected)</source>
+        <translation>Welt (nichts ausgewählt)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="400"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="291"/>
+        <source>%1: %n selected</source>
+        <translation>
+            <numerusform>%1: %n ausgewählt</numerusform>
+            <numerusform>%1: %n ausgewählt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
+        <source>%n objects selected</source>
+        <translation>
+            <numerusform>%n Objekt ausgewählt</numerusform>
+            <numerusform>%n Objekte ausgewählt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="303"/>
+        <source>mixed</source>
+        <translation>verschieden</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="338"/>
+        <source>world&apos;s (%1)</source>
+        <translation>der Welt (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="415"/>
+        <source>Object Colour</source>
+        <translation>Objektfarbe</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SceneDocument</name>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="55"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="125"/>
+        <location filename="../app/carom_main.cpp" line="123"/>
         <source>Collision physics sandbox</source>
         <translation>Sandbox für Kollisionsphysik</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="128"/>
+        <location filename="../app/carom_main.cpp" line="126"/>
         <source>Scene file to open</source>
         <translation>Zu öffnende Szenendatei</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="131"/>
+        <location filename="../app/carom_main.cpp" line="129"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Ein Bild des Fensters speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="132"/>
+        <location filename="../app/carom_main.cpp" line="130"/>
         <source>file.png</source>
         <translation>datei.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="135"/>
+        <location filename="../app/carom_main.cpp" line="133"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="136"/>
+        <location filename="../app/carom_main.cpp" line="134"/>
         <source>seconds</source>
         <translation>Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="138"/>
+        <location filename="../app/carom_main.cpp" line="136"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Sprache des Programms (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="139"/>
+        <location filename="../app/carom_main.cpp" line="137"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="142"/>
+        <location filename="../app/carom_main.cpp" line="140"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Ein Gas aus N Kugeln 5 s lang mit der Ansicht in 1280x720 laufen lassen, Bildzeiten und die längste Blockade der Oberfläche ausgeben und beenden.</translation>
-    </message>
-    <message>
-        <location filename="../app/carom_main.cpp" line="168"/>
-        <source>Cannot open scene</source>
-        <translation>Szene kann nicht geöffnet werden</translation>
     </message>
 </context>
 </TS>

@@ -10,6 +10,44 @@
     </message>
 </context>
 <context>
+    <name>ObjectRef</name>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="51"/>
+        <source>Plane</source>
+        <translation>Плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="53"/>
+        <source>Cylinder</source>
+        <translation>Цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <source>Ball</source>
+        <translation>Шар</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="63"/>
+        <source>Planes</source>
+        <translation>Плоскости</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="65"/>
+        <source>Cylinders</source>
+        <translation>Цилиндры</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="69"/>
+        <source>Balls</source>
+        <translation>Шары</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp" line="76"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
         <location filename="../ui/accuracy_window.cpp" line="41"/>
@@ -89,6 +127,59 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::EditorTools</name>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="214"/>
+        <source>Change Velocity</source>
+        <translation>Изменить скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="215"/>
+        <source>Turn Plane</source>
+        <translation>Повернуть плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="216"/>
+        <source>Turn Cylinder</source>
+        <translation>Повернуть цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="228"/>
+        <source>Move</source>
+        <translation>Переместить</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="279"/>
+        <source>Click on a surface or on the ground to place an object.</source>
+        <translation>Щёлкните по поверхности или по земле, чтобы поставить объект.</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <source>Add Ball</source>
+        <translation>Добавить шар</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <source>No room for a ball there: %1</source>
+        <translation>Здесь нет места для шара: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="320"/>
+        <source>Add Plane</source>
+        <translation>Добавить плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="330"/>
+        <source>Add Cylinder</source>
+        <translation>Добавить цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="333"/>
+        <source>Cannot place it there: %1</source>
+        <translation>Сюда поставить нельзя: %1</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EnergyPlot</name>
     <message>
         <location filename="../ui/energy_plot.cpp" line="35"/>
@@ -119,238 +210,763 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="53"/>
+        <location filename="../ui/main_window.cpp" line="70"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="94"/>
-        <location filename="../ui/main_window.cpp" line="99"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="97"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="99"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="103"/>
+        <location filename="../ui/main_window.cpp" line="156"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="105"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="111"/>
+        <location filename="../ui/main_window.cpp" line="164"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="113"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="119"/>
+        <location filename="../ui/main_window.cpp" line="172"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="125"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="131"/>
+        <location filename="../ui/main_window.cpp" line="184"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="138"/>
+        <location filename="../ui/main_window.cpp" line="191"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="203"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
+        <location filename="../ui/main_window.cpp" line="208"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="211"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="165"/>
+        <location filename="../ui/main_window.cpp" line="218"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="225"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="173"/>
+        <location filename="../ui/main_window.cpp" line="226"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="180"/>
+        <location filename="../ui/main_window.cpp" line="233"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="183"/>
+        <location filename="../ui/main_window.cpp" line="236"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
+        <location filename="../ui/main_window.cpp" line="239"/>
+        <source>Change Gravity</source>
+        <translation>Изменить гравитацию</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="244"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="245"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
+        <source>Change Time Step</source>
+        <translation>Изменить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
+        <source>Change Method</source>
+        <translation>Изменить метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="262"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="212"/>
+        <location filename="../ui/main_window.cpp" line="264"/>
+        <source>Change Integrator</source>
+        <translation>Изменить интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="271"/>
+        <source>&amp;File</source>
+        <translation>&amp;Файл</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="273"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Недавние файлы</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="279"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="286"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="215"/>
+        <location filename="../ui/main_window.cpp" line="289"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="217"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
+        <source>Select</source>
+        <translation>Выбор</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="430"/>
+        <source>Add Ball</source>
+        <translation>Добавить шар</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="431"/>
+        <source>Add Plane</source>
+        <translation>Добавить плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="432"/>
+        <source>Add Cylinder</source>
+        <translation>Добавить цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="433"/>
+        <source>Tools</source>
+        <translation>Инструменты</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="446"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Привязка к &amp;сетке</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Moves land on multiples of %1 m</source>
+        <translation>Перемещения кратны %1 m</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="457"/>
+        <source>%1[*] — Carom</source>
+        <translation>%1[*] — Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="483"/>
+        <source>Apply Settings</source>
+        <translation>Применить настройки</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="544"/>
+        <source>&amp;New</source>
+        <translation>&amp;Создать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="549"/>
+        <source>&amp;Open…</source>
+        <translation>&amp;Открыть…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="554"/>
+        <source>Open Scene</source>
+        <translation>Открыть сцену</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="554"/>
+        <source>Carom scenes (*.carom *.json);;All files (*)</source>
+        <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="557"/>
+        <source>&amp;Save</source>
+        <translation>Со&amp;хранить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="560"/>
+        <source>Save &amp;As…</source>
+        <translation>Сохранить &amp;как…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="571"/>
+        <source>Cannot Open Scene</source>
+        <translation>Не удаётся открыть сцену</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="587"/>
+        <source>untitled</source>
+        <translation>без имени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="590"/>
+        <source>Save Scene</source>
+        <translation>Сохранить сцену</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="591"/>
+        <source>Carom scenes (*.carom);;All files (*)</source>
+        <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="602"/>
+        <source>Cannot Save Scene</source>
+        <translation>Не удаётся сохранить сцену</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <source>Saved %1</source>
+        <translation>Сохранено: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="615"/>
+        <source>Unsaved Changes</source>
+        <translation>Несохранённые изменения</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="616"/>
+        <source>The scene %1 has unsaved changes. Save them?</source>
+        <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="650"/>
+        <source>(none)</source>
+        <translation>(нет)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="671"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Отменить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="673"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Повторить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="677"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Копировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="680"/>
+        <source>&amp;Paste</source>
+        <translation>В&amp;ставить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="683"/>
+        <source>&amp;Duplicate</source>
+        <translation>&amp;Дублировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="686"/>
+        <source>Duplicate</source>
+        <translation>Дублировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="688"/>
+        <source>De&amp;lete</source>
+        <translation>&amp;Удалить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="691"/>
+        <source>Select &amp;All</source>
+        <translation>Выделить &amp;всё</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="701"/>
+        <source>&amp;Use Current State as Initial</source>
+        <translation>&amp;Сделать текущее состояние начальным</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="704"/>
+        <source>Edits Apply to the &amp;Running State</source>
+        <translation>Правки применяются к &amp;идущей симуляции</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="708"/>
+        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
+        <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="717"/>
+        <source>History</source>
+        <translation>История</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="740"/>
+        <source>clipboard</source>
+        <translation>буфер обмена</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="742"/>
+        <source>Nothing to paste: %1</source>
+        <translation>Нечего вставить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="745"/>
+        <source>Paste</source>
+        <translation>Вставить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="769"/>
+        <source>Cannot place the objects: %1</source>
+        <translation>Не удаётся разместить объекты: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="776"/>
+        <source>Delete</source>
+        <translation>Удалить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="788"/>
+        <source>Use Current State as Initial</source>
+        <translation>Сделать текущее состояние начальным</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="277"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="219"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="230"/>
+        <location filename="../ui/main_window.cpp" line="305"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="236"/>
+        <location filename="../ui/main_window.cpp" line="314"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="246"/>
+        <location filename="../ui/main_window.cpp" line="324"/>
         <source>The language changes when Carom is next started.</source>
         <translation>Язык изменится при следующем запуске Carom.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
-        <source>%1 — Carom</source>
-        <translation>%1 — Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="334"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
         <translation>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   шаров: %5   E = %6 J (дрейф %7)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="344"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>   sound unavailable</source>
         <translation>   звук недоступен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="346"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>   muted</source>
         <translation>   звук выключен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="347"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — физика не успевает; замедленный ход</translation>
     </message>
 </context>
 <context>
+    <name>carom::ui::OutlineDock</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
+        <source>Outline</source>
+        <translation>Структура</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::OutlineModel</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="97"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="131"/>
+        <source>Rename</source>
+        <translation>Переименовать</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::PropertiesDock</name>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="54"/>
+        <source>“%1” is out of range</source>
+        <translation>«%1» вне допустимого диапазона</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
+        <source>“%1” is not a number</source>
+        <translation>«%1» — не число</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="87"/>
+        <source>Properties</source>
+        <translation>Свойства</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="108"/>
+        <source>(any length)</source>
+        <translation>(любой длины)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <source>Name</source>
+        <translation>Имя</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <source>Rename</source>
+        <translation>Переименовать</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="114"/>
+        <source>Choose a colour</source>
+        <translation>Выбрать цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <source>Colour</source>
+        <translation>Цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <source>Change Colour</source>
+        <translation>Изменить цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>default</source>
+        <translation>по умолчанию</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <source>Move</source>
+        <translation>Переместить</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <source>Velocity</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <source>Change Velocity</source>
+        <translation>Изменить скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <source>Radius</source>
+        <translation>Радиус</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <source>Change Radius</source>
+        <translation>Изменить радиус</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Mass</source>
+        <translation>Масса</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Change Mass</source>
+        <translation>Изменить массу</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <source>Point</source>
+        <translation>Точка</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Normal</source>
+        <translation>Нормаль</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Turn Plane</source>
+        <translation>Повернуть плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Turn Cylinder</source>
+        <translation>Повернуть цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Gravity</source>
+        <translation>Гравитация</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Change Gravity</source>
+        <translation>Изменить гравитацию</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <source>Time step</source>
+        <translation>Шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <source>Change Time Step</source>
+        <translation>Изменить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <source>Restitution</source>
+        <translation>Восстановление</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <source>Change Restitution</source>
+        <translation>Изменить коэффициент восстановления</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="244"/>
+        <source>0 to 1; empty: the world&apos;s restitution</source>
+        <translation>От 0 до 1; пусто — коэффициент мира</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="257"/>
+        <source>Change Method</source>
+        <translation>Изменить метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
+        <source>Integrator</source>
+        <translation>Интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="266"/>
+        <source>Change Integrator</source>
+        <translation>Изменить интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
+        <source>World (nothing selected)</source>
+        <translation>Мир (ничего не выбрано)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="400"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="291"/>
+        <source>%1: %n selected</source>
+        <translation>
+            <numerusform>%1: выбран %n</numerusform>
+            <numerusform>%1: выбрано %n</numerusform>
+            <numerusform>%1: выбрано %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
+        <source>%n objects selected</source>
+        <translation>
+            <numerusform>Выбран %n объект</numerusform>
+            <numerusform>Выбрано %n объекта</numerusform>
+            <numerusform>Выбрано %n объектов</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="303"/>
+        <source>mixed</source>
+        <translation>разные</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="338"/>
+        <source>world&apos;s (%1)</source>
+        <translation>как у мира (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="415"/>
+        <source>Object Colour</source>
+        <translation>Цвет объекта</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SceneDocument</name>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="55"/>
+        <source>untitled</source>
+        <translation>без имени</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="125"/>
+        <location filename="../app/carom_main.cpp" line="123"/>
         <source>Collision physics sandbox</source>
         <translation>Песочница для физики столкновений</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="128"/>
+        <location filename="../app/carom_main.cpp" line="126"/>
         <source>Scene file to open</source>
         <translation>Файл сцены для открытия</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="131"/>
+        <location filename="../app/carom_main.cpp" line="129"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="132"/>
+        <location filename="../app/carom_main.cpp" line="130"/>
         <source>file.png</source>
         <translation>файл.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="135"/>
+        <location filename="../app/carom_main.cpp" line="133"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Сколько секунд выполнять симуляцию перед --screenshot.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="136"/>
+        <location filename="../app/carom_main.cpp" line="134"/>
         <source>seconds</source>
         <translation>секунды</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="138"/>
+        <location filename="../app/carom_main.cpp" line="136"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Язык программы (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="139"/>
+        <location filename="../app/carom_main.cpp" line="137"/>
         <source>code</source>
         <translation>код</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="142"/>
+        <location filename="../app/carom_main.cpp" line="140"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Запустить газ из N шаров на 5 с при виде 1280x720, вывести время кадров и самую долгую задержку интерфейса и выйти.</translation>
-    </message>
-    <message>
-        <location filename="../app/carom_main.cpp" line="168"/>
-        <source>Cannot open scene</source>
-        <translation>Не удалось открыть сцену</translation>
     </message>
 </context>
 </TS>
