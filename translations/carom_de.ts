@@ -12,37 +12,37 @@
 <context>
     <name>ObjectRef</name>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="51"/>
+        <location filename="../ui/editor/object_ref.cpp" line="50"/>
         <source>Plane</source>
         <translation>Ebene</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="53"/>
+        <location filename="../ui/editor/object_ref.cpp" line="51"/>
         <source>Cylinder</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <location filename="../ui/editor/object_ref.cpp" line="49"/>
         <source>Ball</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="63"/>
+        <location filename="../ui/editor/object_ref.cpp" line="53"/>
         <source>Planes</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="65"/>
+        <location filename="../ui/editor/object_ref.cpp" line="54"/>
         <source>Cylinders</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="69"/>
+        <location filename="../ui/editor/object_ref.cpp" line="52"/>
         <source>Balls</source>
         <translation>Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="76"/>
+        <location filename="../ui/editor/object_ref.cpp" line="68"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -736,7 +736,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="122"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="323"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
@@ -830,57 +830,55 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
         <source>Change Restitution</source>
         <translation>Stoßzahl ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="244"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="248"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="257"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Integrator</source>
         <translation>Integrator</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="262"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="266"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="284"/>
         <source>World (nothing selected)</source>
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="400"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="287"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="367"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="398"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="291"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -888,7 +886,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -896,17 +894,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="303"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="301"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="338"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="415"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="413"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>

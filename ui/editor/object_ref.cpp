@@ -45,28 +45,20 @@ ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref) {
   return const_cast<ObjectInfo&>(objectInfo(std::as_const(scene), ref));
 }
 
+// In ObjectKind's order.
+constexpr const char* kKindNames[] = {QT_TRANSLATE_NOOP("ObjectRef", "Ball"),
+                                      QT_TRANSLATE_NOOP("ObjectRef", "Plane"),
+                                      QT_TRANSLATE_NOOP("ObjectRef", "Cylinder")};
+constexpr const char* kKindPluralNames[] = {QT_TRANSLATE_NOOP("ObjectRef", "Balls"),
+                                            QT_TRANSLATE_NOOP("ObjectRef", "Planes"),
+                                            QT_TRANSLATE_NOOP("ObjectRef", "Cylinders")};
+
 QString kindName(ObjectKind kind) {
-  switch (kind) {
-    case ObjectKind::Plane:
-      return QCoreApplication::translate("ObjectRef", "Plane");
-    case ObjectKind::Cylinder:
-      return QCoreApplication::translate("ObjectRef", "Cylinder");
-    case ObjectKind::Ball:
-      break;
-  }
-  return QCoreApplication::translate("ObjectRef", "Ball");
+  return QCoreApplication::translate("ObjectRef", kKindNames[static_cast<int>(kind)]);
 }
 
 QString kindPluralName(ObjectKind kind) {
-  switch (kind) {
-    case ObjectKind::Plane:
-      return QCoreApplication::translate("ObjectRef", "Planes");
-    case ObjectKind::Cylinder:
-      return QCoreApplication::translate("ObjectRef", "Cylinders");
-    case ObjectKind::Ball:
-      break;
-  }
-  return QCoreApplication::translate("ObjectRef", "Balls");
+  return QCoreApplication::translate("ObjectRef", kKindPluralNames[static_cast<int>(kind)]);
 }
 
 QString objectLabel(const Scene& scene, const ObjectRef& ref) {

@@ -16,6 +16,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <bit>
 #include <optional>
 
 namespace carom::ui {
@@ -59,12 +60,13 @@ QString text(std::string_view s) {
   return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
 }
 
-ObjectKind kindOfFlag(int flag) {
-  return flag == 2 ? ObjectKind::Plane : flag == 4 ? ObjectKind::Cylinder : ObjectKind::Ball;
-}
-
+// The dock's kind bits are ObjectKind's values as powers of two.
 int flagOf(ObjectKind kind) {
   return 1 << static_cast<int>(kind);
+}
+
+ObjectKind kindOfFlag(int flag) {
+  return static_cast<ObjectKind>(std::countr_zero(static_cast<unsigned>(flag)));
 }
 
 // The value every target shares, or nothing when they differ.
@@ -149,7 +151,11 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
             [](const Scene& scene, const ObjectRef&) { return &scene.world.timeStep; });
   addNumber(kWorld, "worldRestitution", tr("Restitution"), tr("Change Restitution"), {},
             [](const Scene& scene, const ObjectRef&) { return &scene.world.restitution; });
-  addWorldChoices();
+  method_ = addChoice("method", tr("Method"), tr("Change Method"), methodNames(),
+                      [](World& world, int index) { world.method = Method(index); });
+  integrator_ =
+      addChoice("integrator", tr("Integrator"), tr("Change Integrator"), integratorNames(),
+                [](World& world, int index) { world.integrator = Integrator(index); });
 
   auto* scroll = new QScrollArea;
   scroll->setWidget(body);
@@ -246,25 +252,19 @@ void PropertiesDock::addRestitution() {
   connect(restitution_, &QLineEdit::editingFinished, this, &PropertiesDock::restitutionEdited);
 }
 
-void PropertiesDock::addWorldChoices() {
-  method_ = new QComboBox;
-  method_->setObjectName("method");
-  for (std::string_view name : methodNames()) method_->addItem(text(name));
-  addRow(kWorld, tr("Method"), tr("Change Method"), method_);
-  connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
+QComboBox* PropertiesDock::addChoice(const char* name, const QString& label, const QString& change,
+                                     const std::vector<std::string_view>& keys,
+                                     void (*choose)(World&, int)) {
+  auto* box = new QComboBox;
+  box->setObjectName(name);
+  for (std::string_view key : keys) box->addItem(text(key));
+  addRow(kWorld, label, change, box);
+  connect(box, &QComboBox::currentIndexChanged, this, [this, change, choose](int index) {
     Scene edited = document_->scene();
-    edited.world.method = Method(index);
-    if (!(edited.world == document_->scene().world)) commit(edited, tr("Change Method"));
+    choose(edited.world, index);
+    if (!(edited.world == document_->scene().world)) commit(edited, change);
   });
-  integrator_ = new QComboBox;
-  integrator_->setObjectName("integrator");
-  for (std::string_view name : integratorNames()) integrator_->addItem(text(name));
-  addRow(kWorld, tr("Integrator"), tr("Change Integrator"), integrator_);
-  connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    Scene edited = document_->scene();
-    edited.world.integrator = Integrator(index);
-    if (!(edited.world == document_->scene().world)) commit(edited, tr("Change Integrator"));
-  });
+  return box;
 }
 
 int PropertiesDock::selectedKinds() const {

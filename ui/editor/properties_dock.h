@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QString>
 
+#include <string_view>
 #include <vector>
 
 class QComboBox;
@@ -37,6 +38,7 @@ class PropertiesDock : public QDockWidget {
 
  private:
   // Which objects a row applies to; a row shows when every selected object is of its kinds.
+  // The object bits are 1 << ObjectKind.
   enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kObjects = 7, kWorld = 8 };
   // Accessors return the field inside a scene, for one object (unused for world rows). The
   // scene is const for reading; a write goes through the same accessor on the edited copy.
@@ -72,12 +74,15 @@ class PropertiesDock : public QDockWidget {
   void addText(int kinds, const char* name, const QString& label, const QString& change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
-  void addWorldChoices();
+  // A world setting chosen from `keys`; `choose` sets the index chosen.
+  QComboBox* addChoice(const char* name, const QString& label, const QString& change,
+                       const std::vector<std::string_view>& keys, void (*choose)(World&, int));
 
   // Document to fields.
   void refresh();
   int selectedKinds() const;
-  // The objects an edit of row `row` applies to: the selection, or one dummy for the world.
+  // The objects an edit applies to: the selection, or, for the world, one reference the world
+  // rows' accessors ignore.
   Selection targets() const;
   // Fields to document, as one command; false (and a message) when refused.
   bool commit(const Scene& edited, const QString& change);
