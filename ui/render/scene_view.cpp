@@ -281,8 +281,12 @@ QColor shown(const QColor& color, bool selected) {
                 (color.blue() + kSelectionColor.blue()) / 2);
 }
 
-bool contains(const std::vector<int>& indices, std::size_t index) {
-  return std::find(indices.begin(), indices.end(), static_cast<int>(index)) != indices.end();
+// Whether each of `count` items is among `indices`: one pass, however many are selected.
+std::vector<bool> membership(const std::vector<int>& indices, std::size_t count) {
+  std::vector<bool> member(count, false);
+  for (int index : indices)
+    if (index >= 0 && static_cast<std::size_t>(index) < count) member[index] = true;
+  return member;
 }
 
 struct Float3 {
@@ -961,10 +965,14 @@ void SceneView::uploadStaticData() {
   std::vector<PlaneVertex> planeVertices;
   std::vector<CylinderInstance> cylinders;
   if (scene_) {
+    const std::vector<bool> selectedBalls = membership(highlightedBalls_, scene_->ballRadii.size());
+    const std::vector<bool> selectedPlanes = membership(highlightedPlanes_, scene_->planes.size());
+    const std::vector<bool> selectedCylinders =
+        membership(highlightedCylinders_, scene_->cylinders.size());
     for (std::size_t i = 0; i < scene_->ballRadii.size(); ++i) {
       const QColor color = i < scene_->ballColors.size() ? scene_->ballColors[i] : QColor(Qt::gray);
       PackedColor packed = pack(color);
-      if (contains(highlightedBalls_, i)) packed.a = 0;
+      if (selectedBalls[i]) packed.a = 0;
       balls.insert(balls.end(), kVerticesPerBall,
                    {static_cast<float>(scene_->ballRadii[i]), packed});
     }
@@ -972,7 +980,7 @@ void SceneView::uploadStaticData() {
     for (std::size_t index = 0; index < scene_->planes.size(); ++index) {
       const RenderPlane& plane = scene_->planes[index];
       if (plane.polygon.size() < 3) continue;
-      const PackedColor color = pack(shown(plane.color, contains(highlightedPlanes_, index)));
+      const PackedColor color = pack(shown(plane.color, selectedPlanes[index]));
       // Grid axes in the plane, the same construction for every point so cells line up.
       int leastAxis = 0;
       plane.normal.cwiseAbs().minCoeff(&leastAxis);
@@ -996,7 +1004,7 @@ void SceneView::uploadStaticData() {
       if ((cylinder.end - cylinder.start).norm() == 0.0) continue;  // misses the bounds
       cylinders.push_back({toFloat3(cylinder.start), toFloat3(cylinder.end),
                            static_cast<float>(cylinder.radius),
-                           pack(shown(cylinder.color, contains(highlightedCylinders_, index)))});
+                           pack(shown(cylinder.color, selectedCylinders[index]))});
     }
   }
   uploadBuffer(this, ballAttributeBuffer_, balls, GL_STATIC_DRAW);
