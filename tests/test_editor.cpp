@@ -15,12 +15,15 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
+#include <QUrl>
 
 #include <functional>
 #include <memory>
@@ -54,6 +57,12 @@ class TestEditor : public carom::testing::EditorFixture {
   void unsavedChangesPrompt_data();
   void unsavedChangesPrompt();
   void titleShowsModified();
+  void dragSnapsToTheGrid();
+  void velocityArrowTipDrags();
+  void altDragGivesABallAtRestAVelocity();
+  void newAsksAboutUnsavedChanges();
+  void openRecentReopensAFile();
+  void dropOpensAFile();
   void saveAsAsksForAName();
   void saveAsCancelledWritesNothing();
   void aFailedSaveSaysWhyAndKeepsTheEdits();
@@ -294,6 +303,101 @@ void TestEditor::titleShowsModified() {
   QVERIFY(window_->windowTitle().contains("floor"));
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
   QVERIFY(!window_->isWindowModified());  // back at the saved state
+}
+
+void TestEditor::dragSnapsToTheGrid() {
+  chooseTool("toolSelect");
+  window_->findChild<QAction*>("snapToGrid")->trigger();
+  QVERIFY(window_->tools()->snapToGrid());
+  const QPoint from = at(Vec3(0, 0.5, 0));
+  drag(from, from + QPoint(77, 9), [&] { return document().scene().balls[0].position.x() > 0.2; });
+  const Vec3 moved = document().scene().balls[0].position;
+  for (int a = 0; a < 3; ++a) {
+    const double steps = moved[a] / EditorTools::gridStep();
+    QVERIFY2(std::abs(steps - std::round(steps)) < 1e-9, qPrintable(QString::number(moved[a])));
+  }
+  QVERIFY(moved.x() >= 0.25);
+}
+
+void TestEditor::velocityArrowTipDrags() {
+  carom::Scene moving = floorScene();
+  moving.balls[0].velocity = Vec3(2, 0, 0);
+  window_->openScene(moving, {}, "moving");
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Ball, 0}});
+  const std::optional<EditorTools::Handle> arrow = window_->tools()->handle();
+  QVERIFY(arrow);
+  QCOMPARE(arrow->tip, Vec3(1, 0.5, 0));  // half a second of flight
+  const QPoint tip = at(arrow->tip);
+  drag(tip, tip + QPoint(0, -50), [&] { return document().scene().balls[0].velocity.y() > 0.5; });
+  const Vec3 velocity = document().scene().balls[0].velocity;
+  QVERIFY2(velocity.y() > 0.5 && velocity.x() > 1.0, qPrintable(QString::number(velocity.y())));
+  QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));  // the ball stays put
+  QCOMPARE(document().undoStack()->count(), 1);
+  QCOMPARE(document().undoStack()->text(0), QString("Change Velocity"));
+}
+
+void TestEditor::altDragGivesABallAtRestAVelocity() {
+  chooseTool("toolSelect");
+  QVERIFY(!window_->tools()->handle());  // at rest: no arrow to grab
+  const QPoint from = at(Vec3(0, 0.5, 0));
+  const QPoint to = from + QPoint(60, 0);
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::AltModifier, from);
+  for (int i = 1; i <= 6; ++i) QTest::mouseMove(&view(), from + (to - from) * i / 6);
+  QTRY_VERIFY(document().scene().balls[0].velocity.norm() > 0.5);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::AltModifier, to);
+  QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
+  QVERIFY(window_->tools()->handle());
+}
+
+void TestEditor::newAsksAboutUnsavedChanges() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  const carom::Scene edited = document().scene();
+  {
+    DialogAnswerer cancel(QMessageBox::Cancel);
+    QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+    QVERIFY(cancel.answered());
+    QVERIFY(document().scene() == edited);
+  }
+  DialogAnswerer discard(QMessageBox::Discard);
+  QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+  QVERIFY(discard.answered());
+  QVERIFY(document().scene() == carom::Scene());
+  QVERIFY(!document().isModified());
+  QVERIFY(window_->windowTitle().startsWith("untitled"));
+}
+
+void TestEditor::openRecentReopensAFile() {
+  const QString file = folder_.filePath("recent.carom");
+  QVERIFY(carom::saveSceneFile(floorScene(), file, nullptr));
+  QVERIFY(window_->openFile(file, false));
+  window_->openScene(carom::Scene(), {});
+  auto* menu = window_->findChild<QMenu*>("recentMenu");
+  QVERIFY(menu);
+  emit menu->aboutToShow();
+  const QList<QAction*> entries = menu->actions();
+  QVERIFY(!entries.isEmpty());
+  QCOMPARE(entries.first()->text(), QDir::toNativeSeparators(QFileInfo(file).absoluteFilePath()));
+  entries.first()->trigger();
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+}
+
+void TestEditor::dropOpensAFile() {
+  const QString file = folder_.filePath("dropped.carom");
+  carom::Scene scene = floorScene();
+  scene.balls[0].name = "dropped";
+  QVERIFY(carom::saveSceneFile(scene, file, nullptr));
+  QMimeData mime;
+  mime.setUrls({QUrl::fromLocalFile(file)});
+  QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window_.get(), &enter);
+  QVERIFY(enter.isAccepted());
+  QDropEvent drop(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window_.get(), &drop);
+  QTRY_COMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  QCOMPARE(document().scene().balls[0].name, std::string("dropped"));
 }
 
 void TestEditor::saveAsAsksForAName() {

@@ -271,6 +271,7 @@ void MainWindow::buildMenus() {
   QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
   fileMenu->addActions({newAction_, openAction_});
   recentMenu_ = fileMenu->addMenu(tr("Open &Recent"));
+  recentMenu_->setObjectName("recentMenu");
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
   fileMenu->addActions({saveAction_, saveAsAction_});
   fileMenu->addSeparator();
@@ -444,6 +445,7 @@ void MainWindow::buildToolActions() {
     bar->addAction(action);
   }
   snapAction_ = new QAction(tr("Snap to &Grid"), this);
+  snapAction_->setObjectName("snapToGrid");
   snapAction_->setCheckable(true);
   snapAction_->setToolTip(tr("Moves land on multiples of %1 m").arg(EditorTools::gridStep()));
   connect(snapAction_, &QAction::toggled, this, [this](bool on) { tools_->setSnapToGrid(on); });
