@@ -286,7 +286,10 @@ void PropertiesDock::refresh() {
     heading_->setText(tr("World (nothing selected)"));
   } else if (selection.size() == 1) {
     const ObjectRef& ref = selection.front();
-    heading_->setText(tr("%1: %2").arg(kindName(ref.kind), objectLabel(scene, ref)));
+    // "Ball: first", or just "Ball 3" when it has no name.
+    heading_->setText(objectInfo(scene, ref).name.empty()
+                          ? objectLabel(scene, ref)
+                          : tr("%1: %2").arg(kindName(ref.kind), objectLabel(scene, ref)));
   } else if (kinds == kBalls || kinds == kPlanes || kinds == kCylinders) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
                           .arg(kindPluralName(kindOfFlag(kinds))));
