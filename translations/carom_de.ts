@@ -129,52 +129,52 @@
 <context>
     <name>carom::ui::EditorTools</name>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="214"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
         <source>Change Velocity</source>
         <translation>Geschwindigkeit ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="215"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="124"/>
         <source>Turn Plane</source>
         <translation>Ebene drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="216"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="130"/>
         <source>Turn Cylinder</source>
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="228"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="226"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="279"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="277"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Klicken Sie auf eine Fläche oder den Boden, um ein Objekt zu platzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="301"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="306"/>
         <source>No room for a ball there: %1</source>
         <translation>Dort ist kein Platz für eine Kugel: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="320"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="318"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="330"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="328"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="333"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Kann dort nicht platziert werden: %1</translation>
     </message>
@@ -215,198 +215,198 @@
         <translation>Energie</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <location filename="../ui/main_window.cpp" line="146"/>
-        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="152"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="156"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="164"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="160"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="178"/>
+        <location filename="../ui/main_window.cpp" line="172"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="184"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="191"/>
+        <location filename="../ui/main_window.cpp" line="185"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="203"/>
+        <location filename="../ui/main_window.cpp" line="197"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="208"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="211"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="218"/>
+        <location filename="../ui/main_window.cpp" line="212"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="225"/>
+        <location filename="../ui/main_window.cpp" line="219"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="226"/>
+        <location filename="../ui/main_window.cpp" line="220"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="233"/>
+        <location filename="../ui/main_window.cpp" line="227"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="236"/>
+        <location filename="../ui/main_window.cpp" line="230"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="239"/>
+        <location filename="../ui/main_window.cpp" line="233"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="238"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
+        <location filename="../ui/main_window.cpp" line="239"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="248"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="256"/>
+        <location filename="../ui/main_window.cpp" line="250"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="262"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="264"/>
+        <location filename="../ui/main_window.cpp" line="258"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="271"/>
+        <location filename="../ui/main_window.cpp" line="265"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="273"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="279"/>
+        <location filename="../ui/main_window.cpp" line="274"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="286"/>
+        <location filename="../ui/main_window.cpp" line="281"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="289"/>
+        <location filename="../ui/main_window.cpp" line="284"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
@@ -591,27 +591,27 @@
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="277"/>
+        <location filename="../ui/main_window.cpp" line="272"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="288"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="305"/>
+        <location filename="../ui/main_window.cpp" line="300"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="314"/>
+        <location filename="../ui/main_window.cpp" line="309"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="324"/>
+        <location filename="../ui/main_window.cpp" line="319"/>
         <source>The language changes when Carom is next started.</source>
         <translation>Die Sprache wird beim nächsten Start von Carom gewechselt.</translation>
     </message>
@@ -660,225 +660,225 @@
 <context>
     <name>carom::ui::PropertiesDock</name>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="54"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
         <source>“%1” is out of range</source>
         <translation>„%1“ liegt außerhalb des Wertebereichs</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="56"/>
         <source>“%1” is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="87"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="89"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="108"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="110"/>
         <source>(any length)</source>
         <translation>(beliebige Länge)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Rename</source>
         <translation>Umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="114"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="116"/>
         <source>Choose a colour</source>
         <translation>Farbe wählen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
         <source>Change Colour</source>
         <translation>Farbe ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="323"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
         <source>Change Velocity</source>
         <translation>Geschwindigkeit ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
         <source>Radius</source>
         <translation>Radius</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
         <source>Change Radius</source>
         <translation>Radius ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Mass</source>
         <translation>Masse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Change Mass</source>
         <translation>Masse ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Normal</source>
         <translation>Normale</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Turn Plane</source>
         <translation>Ebene drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Axis</source>
         <translation>Achse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Turn Cylinder</source>
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Change Restitution</source>
         <translation>Stoßzahl ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="248"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="250"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
         <source>Integrator</source>
         <translation>Integrator</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="284"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
         <source>World (nothing selected)</source>
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="287"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="367"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="398"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="372"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="403"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -886,7 +886,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="297"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -894,17 +894,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="301"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="306"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="341"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="413"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="418"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>

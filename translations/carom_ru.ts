@@ -129,52 +129,52 @@
 <context>
     <name>carom::ui::EditorTools</name>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="214"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
         <source>Change Velocity</source>
         <translation>Изменить скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="215"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="124"/>
         <source>Turn Plane</source>
         <translation>Повернуть плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="216"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="130"/>
         <source>Turn Cylinder</source>
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="228"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="226"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="279"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="277"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Щёлкните по поверхности или по земле, чтобы поставить объект.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="301"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="306"/>
         <source>No room for a ball there: %1</source>
         <translation>Здесь нет места для шара: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="320"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="318"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="330"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="328"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="333"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Сюда поставить нельзя: %1</translation>
     </message>
@@ -215,198 +215,198 @@
         <translation>Энергия</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.cpp" line="140"/>
         <location filename="../ui/main_window.cpp" line="146"/>
-        <location filename="../ui/main_window.cpp" line="152"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="150"/>
+        <location filename="../ui/main_window.cpp" line="144"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="152"/>
+        <location filename="../ui/main_window.cpp" line="146"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="156"/>
+        <location filename="../ui/main_window.cpp" line="150"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="158"/>
+        <location filename="../ui/main_window.cpp" line="152"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="164"/>
+        <location filename="../ui/main_window.cpp" line="158"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="166"/>
+        <location filename="../ui/main_window.cpp" line="160"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="172"/>
+        <location filename="../ui/main_window.cpp" line="166"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="178"/>
+        <location filename="../ui/main_window.cpp" line="172"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="184"/>
+        <location filename="../ui/main_window.cpp" line="178"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="191"/>
+        <location filename="../ui/main_window.cpp" line="185"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="203"/>
+        <location filename="../ui/main_window.cpp" line="197"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="208"/>
+        <location filename="../ui/main_window.cpp" line="202"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="211"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="218"/>
+        <location filename="../ui/main_window.cpp" line="212"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="225"/>
+        <location filename="../ui/main_window.cpp" line="219"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="226"/>
+        <location filename="../ui/main_window.cpp" line="220"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="233"/>
+        <location filename="../ui/main_window.cpp" line="227"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="236"/>
+        <location filename="../ui/main_window.cpp" line="230"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="239"/>
+        <location filename="../ui/main_window.cpp" line="233"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="238"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
+        <location filename="../ui/main_window.cpp" line="239"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="248"/>
+        <location filename="../ui/main_window.cpp" line="242"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="256"/>
+        <location filename="../ui/main_window.cpp" line="250"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="262"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="264"/>
+        <location filename="../ui/main_window.cpp" line="258"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="271"/>
+        <location filename="../ui/main_window.cpp" line="265"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="273"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="279"/>
+        <location filename="../ui/main_window.cpp" line="274"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="286"/>
+        <location filename="../ui/main_window.cpp" line="281"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="289"/>
+        <location filename="../ui/main_window.cpp" line="284"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
@@ -591,27 +591,27 @@
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="277"/>
+        <location filename="../ui/main_window.cpp" line="272"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="288"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="305"/>
+        <location filename="../ui/main_window.cpp" line="300"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="314"/>
+        <location filename="../ui/main_window.cpp" line="309"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="324"/>
+        <location filename="../ui/main_window.cpp" line="319"/>
         <source>The language changes when Carom is next started.</source>
         <translation>Язык изменится при следующем запуске Carom.</translation>
     </message>
@@ -660,225 +660,225 @@
 <context>
     <name>carom::ui::PropertiesDock</name>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="54"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
         <source>“%1” is out of range</source>
         <translation>«%1» вне допустимого диапазона</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="56"/>
         <source>“%1” is not a number</source>
         <translation>«%1» — не число</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="87"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="89"/>
         <source>Properties</source>
         <translation>Свойства</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="107"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="108"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="110"/>
         <source>(any length)</source>
         <translation>(любой длины)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Name</source>
         <translation>Имя</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Rename</source>
         <translation>Переименовать</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="114"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="116"/>
         <source>Choose a colour</source>
         <translation>Выбрать цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
         <source>Colour</source>
         <translation>Цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="117"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
         <source>Change Colour</source>
         <translation>Изменить цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="323"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Position</source>
         <translation>Положение</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
         <source>Velocity</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
         <source>Change Velocity</source>
         <translation>Изменить скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
         <source>Radius</source>
         <translation>Радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
         <source>Change Radius</source>
         <translation>Изменить радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Mass</source>
         <translation>Масса</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Change Mass</source>
         <translation>Изменить массу</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
         <source>Point</source>
         <translation>Точка</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Normal</source>
         <translation>Нормаль</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Turn Plane</source>
         <translation>Повернуть плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Axis</source>
         <translation>Ось</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Turn Cylinder</source>
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="249"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Change Restitution</source>
         <translation>Изменить коэффициент восстановления</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="248"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="250"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>От 0 до 1; пусто — коэффициент мира</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
         <source>Method</source>
         <translation>Метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
         <source>Integrator</source>
         <translation>Интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="284"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
         <source>World (nothing selected)</source>
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="287"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="367"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="398"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="372"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="403"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -887,7 +887,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="297"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -896,17 +896,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="301"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="306"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="341"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="413"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="418"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>

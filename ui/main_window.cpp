@@ -77,19 +77,13 @@ MainWindow::MainWindow(QWidget* parent)
   statusBar()->addWidget(status_, 1);
   sound_ = new SoundBoard(this);
   tools_ = new EditorTools(document_, view_, this);
-  connect(tools_, &EditorTools::refused, this, [this](const QString& message) {
-    statusBar()->showMessage(message, kMessageMilliseconds);
-  });
+  connect(tools_, &EditorTools::refused, this, &MainWindow::showMessage);
   outlineDock_ = new OutlineDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, outlineDock_);
-  connect(outlineDock_->model(), &OutlineModel::refused, this, [this](const QString& message) {
-    statusBar()->showMessage(message, kMessageMilliseconds);
-  });
+  connect(outlineDock_->model(), &OutlineModel::refused, this, &MainWindow::showMessage);
   propertiesDock_ = new PropertiesDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
-  connect(propertiesDock_, &PropertiesDock::refused, this, [this](const QString& message) {
-    statusBar()->showMessage(message, kMessageMilliseconds);
-  });
+  connect(propertiesDock_, &PropertiesDock::refused, this, &MainWindow::showMessage);
   resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   buildActions();
   buildFileActions();
@@ -322,7 +316,7 @@ void MainWindow::buildMenus() {
     languages->addAction(action);
     connect(action, &QAction::triggered, this, [this, code = language.code] {
       saveLanguageChoice(code);
-      statusBar()->showMessage(tr("The language changes when Carom is next started."), 8000);
+      showMessage(tr("The language changes when Carom is next started."));
     });
   }
 }
@@ -400,7 +394,7 @@ void MainWindow::editWorld(const QString& text, const std::function<void(World&)
   if (edited.world == document_->scene().world) return;
   const QString error = document_->apply(edited, text);
   if (!error.isEmpty()) {
-    statusBar()->showMessage(error, kMessageMilliseconds);
+    showMessage(error);
     showDocumentScene();  // puts the toolbar back
   }
 }
@@ -414,6 +408,10 @@ void MainWindow::showSelection() {
   if (const std::optional<EditorTools::Handle> handle = tools_->handle())
     arrow = {handle->base, handle->tip};
   view_->setHandleArrow(arrow);
+}
+
+void MainWindow::showMessage(const QString& message) {
+  statusBar()->showMessage(message, kMessageMilliseconds);
 }
 
 QString MainWindow::statusMessage() const {
@@ -606,7 +604,7 @@ bool MainWindow::saveTo(const QString& fileName) {
   }
   document_->markSaved(QFileInfo(fileName).absoluteFilePath());
   addRecentFile(document_->fileName());
-  statusBar()->showMessage(tr("Saved %1").arg(fileName), kMessageMilliseconds);
+  showMessage(tr("Saved %1").arg(fileName));
   return true;
 }
 
@@ -741,7 +739,7 @@ void MainWindow::paste() {
       mime->hasFormat(kSceneMimeType) ? mime->data(kSceneMimeType) : mime->text().toUtf8();
   const SceneLoadResult parsed = parseScene(json, tr("clipboard"));
   if (!parsed.scene) {
-    statusBar()->showMessage(tr("Nothing to paste: %1").arg(parsed.error), kMessageMilliseconds);
+    showMessage(tr("Nothing to paste: %1").arg(parsed.error));
     return;
   }
   insertObjects(*parsed.scene, tr("Paste"));
@@ -768,7 +766,7 @@ void MainWindow::insertObjects(Scene objects, const QString& text) {
     if (error.isEmpty()) return;
     if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
   }
-  statusBar()->showMessage(tr("Cannot place the objects: %1").arg(error), kMessageMilliseconds);
+  showMessage(tr("Cannot place the objects: %1").arg(error));
 }
 
 void MainWindow::deleteSelection() {
@@ -776,7 +774,7 @@ void MainWindow::deleteSelection() {
   Scene edited = document_->scene();
   remove(edited, document_->selection());
   const QString error = document_->apply(edited, tr("Delete"), {});
-  if (!error.isEmpty()) statusBar()->showMessage(error, kMessageMilliseconds);
+  if (!error.isEmpty()) showMessage(error);
 }
 
 void MainWindow::useCurrentState() {
@@ -788,7 +786,7 @@ void MainWindow::useCurrentState() {
     edited.balls[i].velocity = snapshot->velocities[i];
   }
   const QString error = document_->apply(edited, tr("Use Current State as Initial"));
-  if (!error.isEmpty()) statusBar()->showMessage(error, kMessageMilliseconds);
+  if (!error.isEmpty()) showMessage(error);
 }
 
 }  // namespace carom::ui

@@ -60,6 +60,7 @@ class MainWindow : public QMainWindow {
   PropertiesDock* propertiesDock() const { return propertiesDock_; }
   // The status bar's passing message (refusals, saves), as opposed to the status line.
   QString statusMessage() const;
+  void showMessage(const QString& message);
 
   SimulationController& simulation() { return *simulation_; }
   // As the Run/Pause control does.

@@ -87,7 +87,9 @@ std::optional<EditorTools::Handle> EditorTools::handle() const {
   if (selection.size() != 1) return std::nullopt;
   const ObjectRef& ref = selection.front();
   const Scene& scene = document_->scene();
-  const double length = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
+  const auto length = [this] {
+    return kDirectionArrowFraction * view_->clipBox().diagonal().norm();
+  };
   switch (ref.kind) {
     case ObjectKind::Ball: {
       const Ball& ball = scene.balls[ref.index];
@@ -96,11 +98,11 @@ std::optional<EditorTools::Handle> EditorTools::handle() const {
     }
     case ObjectKind::Plane: {
       const Plane& plane = scene.planes[ref.index];
-      return Handle{plane.point, plane.point + length * plane.normal.normalized()};
+      return Handle{plane.point, plane.point + length() * plane.normal.normalized()};
     }
     case ObjectKind::Cylinder: {
       const Cylinder& cylinder = scene.cylinders[ref.index];
-      return Handle{cylinder.point, cylinder.point + length * cylinder.axis.normalized()};
+      return Handle{cylinder.point, cylinder.point + length() * cylinder.axis.normalized()};
     }
   }
   return std::nullopt;
@@ -113,26 +115,26 @@ bool EditorTools::nearHandleTip(const QPointF& position) const {
   return std::hypot(tip.x() - position.x(), tip.y() - position.y()) <= kTipGrabPixels;
 }
 
-void EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const {
+QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const {
   switch (ref.kind) {
-    case ObjectKind::Ball: {
-      Ball& ball = scene.balls[ref.index];
-      ball.velocity = (point - ball.position) / kArrowSeconds;
-      return;
-    }
     case ObjectKind::Plane: {
       Plane& plane = scene.planes[ref.index];
       const Vec3 direction = point - plane.point;
       if (direction.norm() > 0.0) plane.normal = direction.normalized();
-      return;
+      return tr("Turn Plane");
     }
     case ObjectKind::Cylinder: {
       Cylinder& cylinder = scene.cylinders[ref.index];
       const Vec3 direction = point - cylinder.point;
       if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
-      return;
+      return tr("Turn Cylinder");
     }
+    case ObjectKind::Ball:
+      break;
   }
+  Ball& ball = scene.balls[ref.index];
+  ball.velocity = (point - ball.position) / kArrowSeconds;
+  return tr("Change Velocity");
 }
 
 std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3& point) const {
@@ -209,11 +211,7 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
   Scene edited = sceneAtPress_;
   QString text;
   if (drag_ == Drag::Handle) {
-    const ObjectRef& ref = document_->selection().front();
-    dragHandle(edited, ref, *point);
-    text = ref.kind == ObjectKind::Ball    ? tr("Change Velocity")
-           : ref.kind == ObjectKind::Plane ? tr("Turn Plane")
-                                           : tr("Turn Cylinder");
+    text = dragHandle(edited, document_->selection().front(), *point);
   } else {
     const Vec3 offset = *point - grabPoint_;
     for (const ObjectRef& ref : document_->selection()) {

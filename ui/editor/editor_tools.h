@@ -69,8 +69,8 @@ class EditorTools : public QObject {
   };
   std::optional<Picked> pick(const QPointF& position) const;
   bool nearHandleTip(const QPointF& position) const;
-  // The edit a handle drag to `point` makes of `scene`'s single selected object.
-  void dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
+  // The edit a handle drag to `point` makes of `ref` in `scene`; returns the command's text.
+  QString dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
 
