@@ -68,6 +68,7 @@ class TestEditor : public carom::testing::EditorFixture {
   void aFailedSaveSaysWhyAndKeepsTheEdits();
   void anEditRestartsTheRun();
   void editsCanApplyToTheRunningState();
+  void runningStateSurvivesAddingAndDeleting();
   void useCurrentStateAsInitial();
 
  private:
@@ -517,6 +518,40 @@ void TestEditor::editsCanApplyToTheRunningState() {
   edited.balls[0].color = "#0000ff";
   QVERIFY(document().apply(edited, "recolour").isEmpty());
   QTRY_COMPARE(window_->simulation().latest()->positions[1], Vec3(2, 3, 0));
+}
+
+void TestEditor::runningStateSurvivesAddingAndDeleting() {
+  window_->openScene(fallingScene(), {}, "falling");
+  window_->findChild<QAction*>("applyToRunningState")->setChecked(true);
+  window_->setRunning(true);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  window_->setRunning(false);
+  QTRY_VERIFY(!window_->simulation().latest()->running);
+  const std::vector<Vec3> running = window_->simulation().latest()->positions;
+  // A ball added beside them: both keep falling from where they were.
+  chooseTool("toolAddBall");
+  click(Vec3(0, 0, 2));
+  QCOMPARE(document().scene().balls.size(), std::size_t{3});
+  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
+  QCOMPARE(window_->simulation().latest()->positions[0], running[0]);
+  QCOMPARE(window_->simulation().latest()->positions[1], running[1]);
+  // The first one deleted: the second, now first, still keeps its running state.
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{2});
+  QCOMPARE(window_->simulation().latest()->positions[0], running[1]);
+  // A ball placed where a running ball now is cannot join the running state: everything
+  // restarts from the edited scene, and the status bar says why.
+  carom::Scene edited = document().scene();
+  carom::Ball inTheWay = edited.balls[0];
+  inTheWay.position = running[1] - Vec3(0, 0.6, 0);  // clear of where it started
+  inTheWay.name = "in the way";
+  edited.balls.push_back(inTheWay);
+  QVERIFY(document().apply(edited, "add").isEmpty());
+  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
+  QCOMPARE(window_->simulation().latest()->positions[0], Vec3(2, 3, 0));
+  QVERIFY2(window_->statusMessage().contains("does not fit the running state"),
+           qPrintable(window_->statusMessage()));
 }
 
 void TestEditor::useCurrentStateAsInitial() {

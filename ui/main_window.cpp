@@ -13,6 +13,7 @@
 #include "scene_view.h"
 #include "simulation_controller.h"
 #include "sound_board.h"
+#include "validation.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -45,6 +46,26 @@ namespace {
 
 QString text(std::string_view s) {
   return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
+}
+
+// For each ball of `edited`, the index of the same ball in `shown` when the edit left it
+// alone. Every edit keeps the order of the balls it does not touch and either changes balls in
+// place, appends them, or removes some, so one pass in step finds them.
+std::vector<std::optional<std::size_t>> matchUnchangedBalls(const std::vector<Ball>& shown,
+                                                            const std::vector<Ball>& edited) {
+  std::vector<std::optional<std::size_t>> match(edited.size());
+  if (edited.size() >= shown.size()) {
+    for (std::size_t i = 0; i < shown.size(); ++i)
+      if (shown[i] == edited[i]) match[i] = i;
+    return match;
+  }
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < edited.size(); ++i) {
+    while (j < shown.size() && !(shown[j] == edited[i])) ++j;  // removed
+    if (j == shown.size()) break;
+    match[i] = j++;
+  }
+  return match;
 }
 
 QDoubleSpinBox* numberBox(double low, double high, int decimals, double step, const QString& tip) {
@@ -373,17 +394,23 @@ void MainWindow::showDocumentScene() {
 }
 
 // The edited scene, with every ball the edit left alone where the running simulation has it.
-// Balls are matched by index, so this holds when the edit did not add or remove balls.
-Scene MainWindow::withRunningState(const Scene& edited) const {
-  Scene start = edited;
+// When that state would overlap what the edit added, the edited scene as it is.
+Scene MainWindow::withRunningState(const Scene& edited) {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
-  if (!snapshot || shownScene_->balls.size() != edited.balls.size() ||
-      snapshot->positions.size() != edited.balls.size())
-    return start;
+  if (!snapshot || snapshot->positions.size() != shownScene_->balls.size()) return edited;
+  Scene start = edited;
+  const std::vector<std::optional<std::size_t>> running =
+      matchUnchangedBalls(shownScene_->balls, edited.balls);
   for (std::size_t i = 0; i < start.balls.size(); ++i) {
-    if (!(shownScene_->balls[i] == edited.balls[i])) continue;
-    start.balls[i].position = snapshot->positions[i];
-    start.balls[i].velocity = snapshot->velocities[i];
+    if (!running[i]) continue;
+    start.balls[i].position = snapshot->positions[*running[i]];
+    start.balls[i].velocity = snapshot->velocities[*running[i]];
+  }
+  if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty()) {
+    showMessage(tr("The edit does not fit the running state (%1): restarted from the edited "
+                   "scene.")
+                    .arg(QString::fromStdString(errors.front().text())));
+    return edited;
   }
   return start;
 }

@@ -94,7 +94,7 @@ class MainWindow : public QMainWindow {
   void addRecentFile(const QString& fileName);
   void fillRecentMenu();
   void showDocumentScene();
-  Scene withRunningState(const Scene& edited) const;
+  Scene withRunningState(const Scene& edited);
   void editWorld(const QString& text, const std::function<void(World&)>& change);
   void updateTitle();
   int followTarget() const;
