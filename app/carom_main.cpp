@@ -161,6 +161,7 @@ int main(int argc, char** argv) {
   if (!parser.positionalArguments().isEmpty())
     window.openFile(parser.positionalArguments().first(), false);
   window.show();
+  if (!parser.isSet(screenshot)) window.offerRecovery();
   if (parser.isSet(screenshot)) {
     // For the README's pictures: run a while in real time, then save what the window shows.
     bool ok = false;

@@ -10,6 +10,7 @@
 #include "render_scene.h"
 #include "scene_document.h"
 #include "scene_file.h"
+#include "scene_recovery.h"
 #include "scene_view.h"
 #include "simulation_controller.h"
 #include "sound_board.h"
@@ -32,6 +33,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -106,6 +108,7 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
   connect(propertiesDock_, &PropertiesDock::refused, this, &MainWindow::showMessage);
   resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
+  recovery_ = new SceneRecovery(document_, this);
   buildActions();
   buildFileActions();
   buildEditActions();
@@ -601,6 +604,34 @@ bool MainWindow::openFile(const QString& fileName, bool askToSave) {
   openScene(*loaded.scene, QFileInfo(fileName).absoluteFilePath());
   addRecentFile(document_->fileName());
   return true;
+}
+
+bool MainWindow::offerRecovery() {
+  for (const SceneRecovery::Orphan& orphan : SceneRecovery::orphans()) {
+    const QString name = orphan.originalFile.isEmpty()
+                             ? tr("an unsaved scene")
+                             : QDir::toNativeSeparators(orphan.originalFile);
+    QMessageBox box(QMessageBox::Question, tr("Recover Scene"),
+                    tr("Carom did not close properly while %1 had unsaved changes. The copy "
+                       "saved at %2 can be recovered.")
+                        .arg(name, QLocale().toString(orphan.saved, QLocale::ShortFormat)),
+                    QMessageBox::Yes | QMessageBox::No, this);
+    box.button(QMessageBox::Yes)->setText(tr("&Recover"));
+    box.button(QMessageBox::No)->setText(tr("&Discard"));
+    box.setDefaultButton(QMessageBox::Yes);
+    const bool recover = box.exec() == QMessageBox::Yes;
+    const SceneLoadResult loaded = recover ? loadSceneFile(orphan.sceneFile) : SceneLoadResult{};
+    if (recover && !loaded.scene) {
+      QMessageBox::warning(this, tr("Cannot Recover Scene"), loaded.error);
+      continue;  // kept, for a later try
+    }
+    SceneRecovery::discard(orphan);
+    if (!recover) continue;
+    openScene(*loaded.scene, orphan.originalFile);
+    document_->markUnsaved();
+    return true;
+  }
+  return false;
 }
 
 bool MainWindow::save() {

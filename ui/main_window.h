@@ -27,6 +27,7 @@ class SceneDocument;
 class EditorTools;
 class OutlineDock;
 class PropertiesDock;
+class SceneRecovery;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
@@ -55,6 +56,10 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAs();
   SceneDocument* document() const { return document_; }
+  SceneRecovery* recovery() const { return recovery_; }
+  // At start: offers the scenes that sessions which did not end cleanly left unsaved, newest
+  // first; the first one recovered opens as an unsaved scene. Returns whether one did.
+  bool offerRecovery();
   EditorTools* tools() const { return tools_; }
   OutlineDock* outlineDock() const { return outlineDock_; }
   PropertiesDock* propertiesDock() const { return propertiesDock_; }
@@ -141,6 +146,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* historyDock_ = nullptr;
   OutlineDock* outlineDock_ = nullptr;
   PropertiesDock* propertiesDock_ = nullptr;
+  SceneRecovery* recovery_ = nullptr;
   static constexpr int kMessageMilliseconds = 8000;
   static constexpr int kDockWidth = 330;
   static constexpr int kMaxRecentFiles = 8;

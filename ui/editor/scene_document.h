@@ -32,6 +32,8 @@ class SceneDocument : public QObject {
   void reset(const Scene& scene, const QString& fileName);
   // After a successful save to `fileName`: the current state becomes the unmodified one.
   void markSaved(const QString& fileName);
+  // A scene recovered after a crash: unsaved, with no history to undo back to the saved file.
+  void markUnsaved() { undoStack_.resetClean(); }
 
   // One user action. `edited` is checked with the scene validation every loader uses; when it
   // fails, nothing changes and the first problem is returned ("balls[2].radius: must be

@@ -1,0 +1,153 @@
+// No lost work: the editor keeps a copy of unsaved changes, and after the process is killed the
+// next start offers it back. The test runs itself as a child editor and kills it.
+
+#include "editor_fixture.h"
+#include "scene_file.h"
+#include "scene_recovery.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include <cstdio>
+
+using carom::Vec3;
+using carom::testing::DialogAnswerer;
+using carom::ui::MainWindow;
+using carom::ui::SceneRecovery;
+
+namespace {
+
+constexpr int kChildIntervalMilliseconds = 200;
+
+// The child: opens `file`, moves its ball, says "autosaved" once the copy is written, and
+// waits to be killed.
+int runChild(const QString& file) {
+  MainWindow window;
+  if (!window.openFile(file, false)) return 3;
+  window.recovery()->setInterval(kChildIntervalMilliseconds);
+  QObject::connect(window.recovery(), &SceneRecovery::autosaved, [] {
+    std::printf("autosaved\n");
+    std::fflush(stdout);
+  });
+  carom::Scene edited = window.document()->scene();
+  edited.balls[0].position = Vec3(1, 2, 3);
+  edited.balls[0].name = "unsaved work";
+  if (!window.document()->apply(edited, "edit").isEmpty()) return 4;
+  window.show();
+  return QApplication::exec();
+}
+
+}  // namespace
+
+class TestRecovery : public carom::testing::EditorFixture {
+  Q_OBJECT
+ private slots:
+  void init();
+  void cleanup() { window_.reset(); }
+  void killedEditorsWorkIsOfferedBack();
+  void declinedRecoveryIsGone();
+  void aCleanEndLeavesNothing();
+  void copiesFollowTheUnsavedState();
+
+ private:
+  // Starts the child on `file` and kills it once it has autosaved.
+  void crashAChild(const QString& file);
+  QTemporaryDir folder_;
+};
+
+void TestRecovery::init() {
+  QDir(SceneRecovery::folder()).removeRecursively();
+  openWindow();
+}
+
+void TestRecovery::crashAChild(const QString& file) {
+  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), file, nullptr));
+  QProcess child;
+  child.start(QCoreApplication::applicationFilePath(), {"--child", file});
+  QVERIFY(child.waitForStarted());
+  QByteArray said;
+  QTRY_VERIFY_WITH_TIMEOUT((said += child.readAllStandardOutput()).contains("autosaved"), 20000);
+  child.kill();  // SIGKILL: no clean-up runs
+  QVERIFY(child.waitForFinished());
+  QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+}
+
+void TestRecovery::killedEditorsWorkIsOfferedBack() {
+  const QString file = folder_.filePath("work.carom");
+  crashAChild(file);
+  QCOMPARE(SceneRecovery::orphans().size(), 1);
+  DialogAnswerer answer(QMessageBox::Yes);
+  QVERIFY(window_->offerRecovery());
+  QVERIFY(answer.answered());
+  QVERIFY2(answer.text().contains("work.carom"), qPrintable(answer.text()));
+  // The edit is back, unsaved, belonging to the file it came from, which is as it was.
+  QCOMPARE(document().scene().balls[0].name, std::string("unsaved work"));
+  QCOMPARE(document().scene().balls[0].position, Vec3(1, 2, 3));
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  QVERIFY(document().isModified());
+  QVERIFY(window_->isWindowModified());
+  QVERIFY(carom::loadSceneFile(file).scene == carom::testing::floorScene());
+  // Offered once only.
+  QVERIFY(SceneRecovery::orphans().isEmpty());
+  QVERIFY(!window_->offerRecovery());
+  // Saving puts it in the file.
+  QVERIFY(window_->save());
+  QCOMPARE(carom::loadSceneFile(file).scene->balls[0].name, std::string("unsaved work"));
+}
+
+void TestRecovery::declinedRecoveryIsGone() {
+  crashAChild(folder_.filePath("declined.carom"));
+  const carom::Scene before = document().scene();
+  DialogAnswerer answer(QMessageBox::No);
+  QVERIFY(!window_->offerRecovery());
+  QVERIFY(answer.answered());
+  QVERIFY(document().scene() == before);
+  QVERIFY(SceneRecovery::orphans().isEmpty());
+  QVERIFY(QDir(SceneRecovery::folder()).entryList({"*.carom"}, QDir::Files).isEmpty());
+}
+
+void TestRecovery::aCleanEndLeavesNothing() {
+  window_->recovery()->setInterval(kChildIntervalMilliseconds);
+  document().setSelection({{carom::ui::ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QTRY_VERIFY(QFileInfo::exists(window_->recovery()->copyFile()));
+  const QString copy = window_->recovery()->copyFile();
+  // A live session's copy is not an orphan.
+  QVERIFY(SceneRecovery::orphans().isEmpty());
+  DialogAnswerer discard(QMessageBox::Discard);
+  QVERIFY(window_->close());
+  window_.reset();
+  QVERIFY(!QFileInfo::exists(copy));
+  QVERIFY(QDir(SceneRecovery::folder()).entryList(QDir::Files).isEmpty());
+}
+
+void TestRecovery::copiesFollowTheUnsavedState() {
+  SceneRecovery* recovery = window_->recovery();
+  QVERIFY(recovery->autosave());  // nothing unsaved: no copy
+  QVERIFY(!QFileInfo::exists(recovery->copyFile()));
+  document().setSelection({{carom::ui::ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QSignalSpy written(recovery, &SceneRecovery::autosaved);
+  QVERIFY(recovery->autosave());
+  QCOMPARE(written.size(), 1);
+  QCOMPARE(carom::loadSceneFile(recovery->copyFile()).scene->balls.size(), std::size_t{0});
+  QVERIFY(recovery->autosave());  // unchanged since: not written again
+  QCOMPARE(written.size(), 1);
+  // Undone back to the saved state: nothing to recover.
+  document().undoStack()->undo();
+  QVERIFY(!QFileInfo::exists(recovery->copyFile()));
+}
+
+int main(int argc, char** argv) {
+  carom::testing::EditorFixture::initMain();
+  QApplication app(argc, argv);
+  if (argc == 3 && QByteArray(argv[1]) == "--child")
+    return runChild(QString::fromLocal8Bit(argv[2]));
+  TestRecovery test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_recovery.moc"
