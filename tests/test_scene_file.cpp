@@ -587,6 +587,46 @@ class SceneFileTest : public QObject {
     QVERIFY(!carom::saveSceneFile(Scene(), fileName, nullptr));
   }
 
+  // The fuzzers' seeds of bad input and every finding they were fixed for: each gives a scene
+  // that writes back as itself, or a message.
+  void fuzzFilesGiveASceneOrAMessage_data() {
+    QTest::addColumn<QString>("file");
+    const QString root = qEnvironmentVariable("CAROM_SOURCE_DIR") + "/tests/fuzz/";
+    int files = 0;
+    for (const char* folder : {"seeds/fuzz_scene_loader", "regressions/fuzz_scene_loader"}) {
+      const QDir dir(root + folder);
+      for (const QString& name : dir.entryList(QDir::Files, QDir::Name)) {
+        QTest::newRow(qPrintable(QString(folder) + "/" + name)) << dir.filePath(name);
+        ++files;
+      }
+    }
+    QVERIFY(files >= 10);
+  }
+  void fuzzFilesGiveASceneOrAMessage() {
+    QFETCH(QString, file);
+    const SceneLoadResult result = carom::loadSceneFile(file);
+    if (!result.scene) {
+      QVERIFY(result.error.startsWith(file + ": "));
+      return;
+    }
+    const SceneLoadResult again = parse(carom::serializeScene(*result.scene));
+    QVERIFY2(again.scene, qPrintable(again.error));
+    QVERIFY(*again.scene == *result.scene);
+  }
+  void deepNestingIsRefused() {
+    const QByteArray deep = document("\"x\": " + QByteArray(100000, '[') + QByteArray(100000, ']'));
+    const SceneLoadResult result = parse(deep);
+    QVERIFY(!result.scene);
+    QVERIFY2(result.error.endsWith("too deeply nested document"), qPrintable(result.error));
+  }
+  void absurdCountsAreRefused() {
+    QByteArray balls = "\"balls\": [{}";
+    for (int i = 1; i < 10'000'000; ++i) balls += ",{}";
+    const SceneLoadResult result = parse(document(balls + "]"));
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error, kSource + ": balls: must have at most 1000000 entries (got 10000000)");
+  }
+
   void saveIntoReadOnlyDirectoryKeepsOldFile() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());

@@ -417,6 +417,9 @@ SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 SceneView::~SceneView() {
+  // QOpenGLWidget's destructor destroys the context, whose notice must not reach this view's
+  // slot once this part of the object is gone.
+  if (QOpenGLContext* gl = context()) disconnect(gl, nullptr, this, nullptr);
   if (glReady_) {
     makeCurrent();
     releaseGl();
