@@ -49,6 +49,7 @@ class TestRecovery : public carom::testing::EditorFixture {
   void cleanup() { window_.reset(); }
   void killedEditorsWorkIsOfferedBack();
   void declinedRecoveryIsGone();
+  void notNowKeepsTheCopy();
   void aCleanEndLeavesNothing();
   void copiesFollowTheUnsavedState();
 
@@ -107,6 +108,21 @@ void TestRecovery::declinedRecoveryIsGone() {
   QVERIFY(document().scene() == before);
   QVERIFY(SceneRecovery::orphans().isEmpty());
   QVERIFY(QDir(SceneRecovery::folder()).entryList({"*.carom"}, QDir::Files).isEmpty());
+}
+
+void TestRecovery::notNowKeepsTheCopy() {
+  crashAChild(folder_.filePath("later.carom"));
+  const carom::Scene before = document().scene();
+  {
+    DialogAnswerer later(QMessageBox::Cancel);  // as Escape would
+    QVERIFY(!window_->offerRecovery());
+    QVERIFY(later.answered());
+  }
+  QVERIFY(document().scene() == before);
+  QCOMPARE(SceneRecovery::orphans().size(), 1);  // still there for the next start
+  DialogAnswerer recover(QMessageBox::Yes);
+  QVERIFY(window_->offerRecovery());
+  QCOMPARE(document().scene().balls[0].name, std::string("unsaved work"));
 }
 
 void TestRecovery::aCleanEndLeavesNothing() {

@@ -615,11 +615,14 @@ bool MainWindow::offerRecovery() {
                     tr("Carom did not close properly while %1 had unsaved changes. The copy "
                        "saved at %2 can be recovered.")
                         .arg(name, QLocale().toString(orphan.saved, QLocale::ShortFormat)),
-                    QMessageBox::Yes | QMessageBox::No, this);
+                    QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, this);
     box.button(QMessageBox::Yes)->setText(tr("&Recover"));
     box.button(QMessageBox::No)->setText(tr("&Discard"));
+    box.button(QMessageBox::Cancel)->setText(tr("Not &Now"));  // and Escape: asked again next time
     box.setDefaultButton(QMessageBox::Yes);
-    const bool recover = box.exec() == QMessageBox::Yes;
+    const int answer = box.exec();
+    if (answer == QMessageBox::Cancel) continue;
+    const bool recover = answer == QMessageBox::Yes;
     const SceneLoadResult loaded = recover ? loadSceneFile(orphan.sceneFile) : SceneLoadResult{};
     if (recover && !loaded.scene) {
       QMessageBox::warning(this, tr("Cannot Recover Scene"), loaded.error);

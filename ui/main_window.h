@@ -58,7 +58,8 @@ class MainWindow : public QMainWindow {
   SceneDocument* document() const { return document_; }
   SceneRecovery* recovery() const { return recovery_; }
   // At start: offers the scenes that sessions which did not end cleanly left unsaved, newest
-  // first; the first one recovered opens as an unsaved scene. Returns whether one did.
+  // first, to recover, discard or keep for later; the first one recovered opens as an unsaved
+  // scene. Returns whether one did.
   bool offerRecovery();
   EditorTools* tools() const { return tools_; }
   OutlineDock* outlineDock() const { return outlineDock_; }
