@@ -351,9 +351,35 @@ QByteArray listText(const QByteArrayList& items) {
   return "[\n    " + items.join(",\n    ") + "\n  ]";
 }
 
+// An upper bound on the values a JSON document holds: one more than its commas outside strings.
+qint64 valueBound(const QByteArray& json) {
+  qint64 commas = 0;
+  bool inString = false;
+  bool escaped = false;
+  for (const char c : json) {
+    if (inString) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == ',') {
+      ++commas;
+    }
+  }
+  return commas + 1;
+}
+
 }  // namespace
 
 SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
+  if (valueBound(json) > kMaxSceneValues)
+    return {std::nullopt, sourceName + QString(": the document holds more than %1 values, the "
+                                               "limit for scene files")
+                                           .arg(kMaxSceneValues)};
   QJsonParseError parseError;
   const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
   if (parseError.error != QJsonParseError::NoError) {

@@ -29,5 +29,8 @@ bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error);
 
 // Files larger than this are refused unread.
 inline constexpr qint64 kMaxSceneFileBytes = qint64{256} * 1024 * 1024;
+// Documents with more values than this are refused before they are parsed, since the parsed
+// tree takes tens of bytes a value. A million balls with every field set hold about 14 million.
+inline constexpr qint64 kMaxSceneValues = 30'000'000;
 
 }  // namespace carom

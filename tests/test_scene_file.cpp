@@ -619,6 +619,16 @@ class SceneFileTest : public QObject {
     QVERIFY(!result.scene);
     QVERIFY2(result.error.endsWith("too deeply nested document"), qPrintable(result.error));
   }
+  void tooManyValuesAreRefusedBeforeParsing() {
+    const QByteArray many = document("\"x\": [0" + QByteArray(",0").repeated(40'000'000) + "]");
+    const SceneLoadResult result = parse(many);
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error,
+             kSource + ": the document holds more than 30000000 values, the limit for scene files");
+    // Commas inside strings are not values.
+    const QByteArray names = document("\"x\": \"" + QByteArray(40'000'000, ',') + "\"");
+    QVERIFY2(!parse(names).error.contains("values"), qPrintable(parse(names).error));
+  }
   void absurdCountsAreRefused() {
     QByteArray balls = "\"balls\": [{}";
     for (int i = 1; i < 10'000'000; ++i) balls += ",{}";
