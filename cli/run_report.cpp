@@ -24,10 +24,6 @@ QJsonArray vectorJson(const Vec3& v) {
   return {v.x(), v.y(), v.z()};
 }
 
-QString text(std::string_view s) {
-  return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-
 struct RunResult {
   double initialEnergy = 0.0;
   double finalEnergy = 0.0;
@@ -69,8 +65,8 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
   for (const std::string& note : sim.modelNotes()) model.append(QString::fromStdString(note));
   const World& world = sim.world();
   return QJsonObject{
-      {"method", text(methodName(world.method))},
-      {"integrator", text(integratorName(world.integrator))},
+      {"method", QString::fromUtf8(methodName(world.method))},
+      {"integrator", QString::fromUtf8(integratorName(world.integrator))},
       {"timeStep", world.timeStep},
       {"simulatedTime", sim.time()},
       {"wallSeconds", result.wallSeconds},
@@ -94,9 +90,10 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
 void printText(QTextStream& out, const Simulation& sim, const RunResult& result) {
   const RunStats& stats = sim.stats();
   const World& world = sim.world();
-  out << "method: " << text(methodName(world.method));
+  out << "method: " << QString::fromUtf8(methodName(world.method));
   if (world.method != Method::Exact)
-    out << " (" << text(integratorName(world.integrator)) << ", dt " << world.timeStep << " s)";
+    out << " (" << QString::fromUtf8(integratorName(world.integrator)) << ", dt " << world.timeStep
+        << " s)";
   out << "\nsimulated: " << sim.time() << " s in " << result.wallSeconds << " s wall\n";
   out << "collisions: ball-ball " << stats.collisions.ballBall << ", ball-plane "
       << stats.collisions.ballPlane << ", ball-cylinder " << stats.collisions.ballCylinder << "\n";

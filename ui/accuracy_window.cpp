@@ -23,14 +23,10 @@ namespace {
 constexpr double kErrorFloor = 1e-16;
 const std::vector<double> kStepFactors{0.25, 0.5, 1.0, 2.0, 4.0};
 
-QString text(std::string_view s) {
-  return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-
 QString caseName(const StudyCase& c) {
-  if (c.method == Method::Exact) return text(methodName(c.method));
+  if (c.method == Method::Exact) return QString::fromUtf8(methodName(c.method));
   return QString("%1, %2, dt %3 s")
-      .arg(text(methodName(c.method)), text(integratorName(c.integrator)))
+      .arg(QString::fromUtf8(methodName(c.method)), QString::fromUtf8(integratorName(c.integrator)))
       .arg(c.timeStep, 0, 'g', 4);
 }
 
@@ -55,7 +51,7 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   chart_->addAxis(errorAxis_, Qt::AlignLeft);
   for (Method method : {Method::Exact, Method::Swept, Method::Discrete}) {
     auto* series = new QScatterSeries;
-    series->setName(text(methodName(method)));
+    series->setName(QString::fromUtf8(methodName(method)));
     series->setMarkerSize(9);
     chart_->addSeries(series);
     series->attachAxis(timeAxis_);

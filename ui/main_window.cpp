@@ -46,10 +46,6 @@ using render::SceneView;
 
 namespace {
 
-QString text(std::string_view s) {
-  return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-
 // For each ball of `edited`, the index of the same ball in `shown` when the edit left it
 // alone. Every edit keeps the order of the balls it does not touch and either changes balls in
 // place, appends them, or removes some, so one pass in step finds them.
@@ -268,7 +264,7 @@ void MainWindow::buildToolBar() {
   bar->addWidget(timeStep_);
 
   method_ = new QComboBox;
-  for (std::string_view name : methodNames()) method_->addItem(text(name));
+  for (std::string_view name : methodNames()) method_->addItem(QString::fromUtf8(name));
   method_->setToolTip(tr("Exact (event-driven), swept, or discrete steps"));
   connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
     editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
@@ -276,7 +272,7 @@ void MainWindow::buildToolBar() {
   bar->addWidget(method_);
 
   integrator_ = new QComboBox;
-  for (std::string_view name : integratorNames()) integrator_->addItem(text(name));
+  for (std::string_view name : integratorNames()) integrator_->addItem(QString::fromUtf8(name));
   integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
   connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
     editWorld(tr("Change Integrator"),

@@ -56,10 +56,6 @@ ParsedNumber parseNumber(const QString& typed) {
   return {std::nullopt, PropertiesDock::tr("“%1” is not a number").arg(text)};
 }
 
-QString text(std::string_view s) {
-  return QString::fromUtf8(s.data(), static_cast<int>(s.size()));
-}
-
 // The dock's kind bits are ObjectKind's values as powers of two.
 int flagOf(ObjectKind kind) {
   return 1 << static_cast<int>(kind);
@@ -257,7 +253,7 @@ QComboBox* PropertiesDock::addChoice(const char* name, const QString& label, con
                                      void (*choose)(World&, int)) {
   auto* box = new QComboBox;
   box->setObjectName(name);
-  for (std::string_view key : keys) box->addItem(text(key));
+  for (std::string_view key : keys) box->addItem(QString::fromUtf8(key));
   addRow(kWorld, label, change, box);
   connect(box, &QComboBox::currentIndexChanged, this, [this, change, choose](int index) {
     Scene edited = document_->scene();
