@@ -18,6 +18,8 @@ constexpr double kWorkBudgetSeconds = 0.025;
 // When the physics falls further behind than this, the backlog is dropped: simulated time then
 // runs slower than asked, and the status bar says so, instead of jumping.
 constexpr double kMaxBacklogSeconds = 0.25;
+// Once dropped, the backlog builds again over a few batches; the warning stays up this long.
+constexpr double kFallingBehindHoldSeconds = 1.0;
 // The explosion and sound queue is capped; the view and the speakers could not use more.
 constexpr std::size_t kMaxPendingCollisions = 4096;
 
@@ -38,7 +40,7 @@ void SimulationWorker::reset() {
   simulation_->setCollisionLog(true);
   initialEnergy_ = simulation_->totalEnergy();
   owed_ = 0.0;
-  fallingBehind_ = false;
+  sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   if (!timer_) {
     timer_ = new QTimer(this);  // created here so that it lives on the worker's thread
     timer_->setTimerType(Qt::PreciseTimer);
@@ -52,6 +54,7 @@ void SimulationWorker::reset() {
 void SimulationWorker::setRunning(bool running) {
   running_ = running;
   owed_ = 0.0;
+  sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   factorSimulated_ = factorReal_ = 0.0;
   clock_.restart();
   publish();
@@ -119,8 +122,11 @@ void SimulationWorker::tick() {
     simulation_->step();
     owed_ -= dt;
   }
-  fallingBehind_ = owed_ > kMaxBacklogSeconds * std::max(speed_, 1e-9) + dt;
-  if (fallingBehind_) owed_ = 0.0;
+  sinceBacklogDropped_ += elapsed;
+  if (owed_ > kMaxBacklogSeconds * std::max(speed_, 1e-9) + dt) {
+    owed_ = 0.0;
+    sinceBacklogDropped_ = 0.0;
+  }
   // Averaged over about half a second, so the figure does not flicker with each batch.
   factorSimulated_ += simulation_->time() - before;
   factorReal_ += elapsed;
@@ -152,7 +158,7 @@ void SimulationWorker::publish() {
   snapshot->world = simulation_->world();
   snapshot->running = running_;
   snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
-  snapshot->fallingBehind = running_ && fallingBehind_;
+  snapshot->fallingBehind = running_ && sinceBacklogDropped_ < kFallingBehindHoldSeconds;
   if (exchange_.publish(std::move(snapshot))) emit snapshotPublished();
 }
 

@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 
+#include <limits>
 #include <memory>
 
 class QTimer;
@@ -58,7 +59,9 @@ class SimulationWorker : public QObject {
   double lastRealTimeFactor_ = 0.0;
   double factorSimulated_ = 0.0;  // simulated and real time since the factor was last taken
   double factorReal_ = 0.0;
-  bool fallingBehind_ = false;
+  // Real seconds since a backlog was last dropped; the warning is held a while so it does not
+  // blink on and off with every batch.
+  double sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   double stall_ = 0.0;
 };
 
