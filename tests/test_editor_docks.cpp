@@ -46,6 +46,9 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void turnsACylinderByItsHandle();
   void typesANormal();
   void saveTakesTheValueBeingTyped();
+  void toolbarRefusesBadValues_data();
+  void toolbarRefusesBadValues();
+  void toolbarShowsShortButKeepsExactValues();
 
  private:
   QTreeView& tree() { return *window_->outlineDock()->tree(); }
@@ -440,6 +443,83 @@ void TestEditorDocks::saveTakesTheValueBeingTyped() {
   QVERIFY(saved.scene);
   QCOMPARE(saved.scene->balls[0].mass, 3.0);
   QVERIFY(!document().isModified());
+}
+
+void TestEditorDocks::toolbarRefusesBadValues_data() {
+  QTest::addColumn<QString>("box");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("letters") << "timeStep"
+                           << "fast"
+                           << "Time step: “fast” is not a number";
+  QTest::newRow("empty") << "gravityY"
+                         << ""
+                         << "Gravity y: “” is not a number";
+  QTest::newRow("nan") << "gravityX"
+                       << "nan"
+                       << "Gravity x: must be finite (got nan)";
+  QTest::newRow("inf") << "timeStep"
+                       << "inf"
+                       << "Time step: must be finite (got inf)";
+  QTest::newRow("overflow") << "gravityZ"
+                            << "1e400"
+                            << "Gravity z: “1e400” is out of range";
+  QTest::newRow("too large") << "timeStep"
+                             << "2e6"
+                             << "Time step: must be between 1e-12 and 1e+06 (got 2e+06)";
+  QTest::newRow("zero") << "timeStep"
+                        << "0"
+                        << "Time step: must be between 1e-12 and 1e+06 (got 0)";
+  QTest::newRow("absurd gravity") << "gravityY"
+                                  << "-1e13"
+                                  << "Gravity y: must be between -1e+12 and 1e+12 (got -1e+13)";
+  QTest::newRow("speed") << "speed"
+                         << "1000"
+                         << "Speed: must be between 0.01 and 100 (got 1000)";
+}
+
+// Where QDoubleSpinBox would drop the keystrokes or clamp, the toolbar says why and keeps its
+// value.
+void TestEditorDocks::toolbarRefusesBadValues() {
+  QFETCH(QString, box);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  auto* spin = window_->findChild<QDoubleSpinBox*>(box);
+  QVERIFY(spin);
+  const double before = spin->value();
+  const QString shownBefore = spin->text();
+  const carom::Scene scene = document().scene();
+  QTest::mouseClick(spin, Qt::LeftButton);
+  QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(spin, Qt::Key_Backspace);
+  QTest::keyClicks(spin, typed);
+  QCOMPARE(spin->text(), typed);  // every keystroke reached the box
+  QTest::keyClick(spin, Qt::Key_Return);
+  QVERIFY2(window_->statusMessage().startsWith(message), qPrintable(window_->statusMessage()));
+  QCOMPARE(spin->value(), before);
+  QCOMPARE(spin->text(), shownBefore);
+  QVERIFY(document().scene() == scene);
+  QCOMPARE(document().undoStack()->count(), 0);
+  // A good value typed next is taken.
+  QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(spin, "0.02");
+  QTest::keyClick(spin, Qt::Key_Return);
+  QCOMPARE(spin->value(), 0.02);
+  if (box == "timeStep") QCOMPARE(document().scene().world.timeStep, 0.02);
+}
+
+void TestEditorDocks::toolbarShowsShortButKeepsExactValues() {
+  auto* step = window_->findChild<QDoubleSpinBox*>("timeStep");
+  QCOMPARE(step->text(), QString("0.0166667"));
+  QTest::mouseClick(step, Qt::LeftButton);
+  QTest::keyClick(step, Qt::Key_Return);  // entered without a change: 1/60 is not rounded
+  QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
+  QCOMPARE(document().undoStack()->count(), 0);
+  QTest::keyClick(step, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(step, "0.000123456789");  // typed digits are all taken
+  QTest::keyClick(step, Qt::Key_Return);
+  QCOMPARE(document().scene().world.timeStep, 0.000123456789);
+  QCOMPARE(step->text(), QString("0.000123457"));
 }
 
 QTEST_MAIN(TestEditorDocks)

@@ -12,11 +12,15 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <grp.h>
+#include <pwd.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 
 using carom::Ball;
@@ -54,6 +58,40 @@ bool writeAll(const QString& fileName, const QByteArray& data) {
 }
 
 // Doubles compared bit for bit: QCOMPARE would allow a small relative difference.
+// Permissions do not bind root, and CI runs as root. Tests of permission errors then run their
+// part in a child process that has become the unprivileged user `nobody`, owner of `paths`;
+// `work` returns its report as bytes. As any other user, `work` runs in this process.
+QByteArray runUnprivileged(const QStringList& paths, const std::function<QByteArray()>& work) {
+  if (::geteuid() != 0) return work();
+  const passwd* nobody = ::getpwnam("nobody");
+  if (!nobody) qFatal("no user 'nobody' to run as");
+  for (const QString& path : paths)
+    if (::chown(path.toLocal8Bit().constData(), nobody->pw_uid, nobody->pw_gid) != 0)
+      qFatal("cannot give %s to 'nobody'", qPrintable(path));
+  int channel[2];
+  if (::pipe(channel) != 0) qFatal("pipe failed");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::close(channel[0]);
+    if (::setgroups(0, nullptr) != 0 || ::setgid(nobody->pw_gid) != 0 ||
+        ::setuid(nobody->pw_uid) != 0)
+      ::_exit(2);
+    const QByteArray report = work();
+    const bool sent = ::write(channel[1], report.constData(), report.size()) == report.size();
+    ::_exit(sent ? 0 : 3);
+  }
+  ::close(channel[1]);
+  QByteArray report;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(channel[0], buffer, sizeof buffer)) > 0;) report.append(buffer, n);
+  ::close(channel[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    qFatal("the unprivileged part did not report (status %d)", status);
+  return report;
+}
+
 bool same(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
@@ -542,10 +580,9 @@ class SceneFileTest : public QObject {
     const QString locked = dir.filePath("locked.json");
     QVERIFY(writeAll(locked, document("")));
     QVERIFY(QFile::setPermissions(locked, QFile::WriteOwner));
-    if (QFile(locked).open(QIODevice::ReadOnly))
-      QSKIP("permissions do not restrict this user (root?)");
-    QCOMPARE(carom::loadSceneFile(locked).error,
-             locked + ": cannot open the file: Permission denied");
+    const QByteArray report = runUnprivileged(
+        {dir.path(), locked}, [&] { return carom::loadSceneFile(locked).error.toUtf8(); });
+    QCOMPARE(QString::fromUtf8(report), locked + ": cannot open the file: Permission denied");
   }
 
   // A sparse file one byte over the limit: refused from its size, without reading it.
@@ -643,14 +680,18 @@ class SceneFileTest : public QObject {
     const QString fileName = dir.filePath("scene.json");
     QVERIFY(writeAll(fileName, "old"));
     QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
-    const bool writable = ::access(qPrintable(dir.path()), W_OK) == 0;
-    QString error;
-    const bool saved = writable || carom::saveSceneFile(Scene(), fileName, &error);
+    const QByteArray report = runUnprivileged({dir.path(), fileName}, [&] {
+      const QByteArray folder = dir.path().toLocal8Bit();
+      const bool readOnly =
+          ::access(folder.constData(), R_OK | X_OK) == 0 && ::access(folder.constData(), W_OK) != 0;
+      QString error;
+      const bool saved = carom::saveSceneFile(Scene(), fileName, &error);
+      return QByteArray(readOnly ? "r" : "w") + (saved ? "saved" : error.toUtf8());
+    });
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
-    if (writable) QSKIP("permissions do not restrict this user (root?)");
-    QVERIFY(!saved);
-    QCOMPARE(error, fileName + ": cannot save: Permission denied");
+    QCOMPARE(QString::fromUtf8(report), "r" + fileName + ": cannot save: Permission denied");
     QCOMPARE(readAll(fileName), QByteArray("old"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"scene.json"});
   }
 
   void saveReplacesAndReportsSuccess() {

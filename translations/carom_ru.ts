@@ -10,6 +10,19 @@
     </message>
 </context>
 <context>
+    <name>NumberText</name>
+    <message>
+        <location filename="../ui/editor/number_text.cpp" line="31"/>
+        <source>“%1” is out of range</source>
+        <translation>«%1» вне допустимого диапазона</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/number_text.cpp" line="33"/>
+        <source>“%1” is not a number</source>
+        <translation>«%1» — не число</translation>
+    </message>
+</context>
+<context>
     <name>ObjectRef</name>
     <message>
         <location filename="../ui/editor/object_ref.cpp" line="50"/>
@@ -50,78 +63,78 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <location filename="../ui/accuracy_window.cpp" line="37"/>
         <source>Speed vs accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="43"/>
+        <location filename="../ui/accuracy_window.cpp" line="39"/>
         <source>Position error against exact (m)</source>
         <translation>Ошибка положения относительно exact (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="43"/>
+        <location filename="../ui/accuracy_window.cpp" line="39"/>
         <source>Relative energy drift</source>
         <translation>Относительный дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="44"/>
+        <location filename="../ui/accuracy_window.cpp" line="40"/>
         <source>Deepest penetration (m)</source>
         <translation>Максимальная глубина проникновения (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="44"/>
+        <location filename="../ui/accuracy_window.cpp" line="40"/>
         <source>Escaped balls</source>
         <translation>Вылетевшие шары</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="50"/>
-        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <location filename="../ui/accuracy_window.cpp" line="46"/>
+        <location filename="../ui/accuracy_window.cpp" line="69"/>
         <source>Computing time (s)</source>
         <translation>Время вычислений (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <location filename="../ui/accuracy_window.cpp" line="69"/>
         <source>Run</source>
         <translation>Прогон</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="73"/>
+        <location filename="../ui/accuracy_window.cpp" line="69"/>
         <source>Position error</source>
         <translation>Ошибка положения</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <location filename="../ui/accuracy_window.cpp" line="70"/>
         <source>Energy drift</source>
         <translation>Дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <location filename="../ui/accuracy_window.cpp" line="70"/>
         <source>Penetration</source>
         <translation>Проникновение</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="74"/>
+        <location filename="../ui/accuracy_window.cpp" line="70"/>
         <source>Escaped</source>
         <translation>Вылетело</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="81"/>
+        <location filename="../ui/accuracy_window.cpp" line="77"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="83"/>
+        <location filename="../ui/accuracy_window.cpp" line="79"/>
         <source>Apply Selected Settings</source>
         <translation>Применить выбранные настройки</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="90"/>
+        <location filename="../ui/accuracy_window.cpp" line="86"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
         <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="97"/>
+        <location filename="../ui/accuracy_window.cpp" line="93"/>
         <source>Error:</source>
         <translation>Ошибка:</translation>
     </message>
@@ -210,470 +223,499 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="93"/>
+        <location filename="../ui/main_window.cpp" line="80"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="164"/>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="151"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
+        <location filename="../ui/main_window.cpp" line="155"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="157"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="174"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="176"/>
+        <location filename="../ui/main_window.cpp" line="163"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="182"/>
+        <location filename="../ui/main_window.cpp" line="169"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="184"/>
+        <location filename="../ui/main_window.cpp" line="171"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="190"/>
+        <location filename="../ui/main_window.cpp" line="177"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="196"/>
+        <location filename="../ui/main_window.cpp" line="183"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="202"/>
+        <location filename="../ui/main_window.cpp" line="189"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="209"/>
+        <location filename="../ui/main_window.cpp" line="196"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="221"/>
+        <location filename="../ui/main_window.cpp" line="208"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="226"/>
+        <location filename="../ui/main_window.cpp" line="213"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="229"/>
+        <location filename="../ui/main_window.cpp" line="216"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="236"/>
+        <location filename="../ui/main_window.cpp" line="223"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
+        <location filename="../ui/main_window.cpp" line="230"/>
+        <location filename="../ui/main_window.cpp" line="231"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="244"/>
+        <location filename="../ui/main_window.cpp" line="232"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="251"/>
+        <location filename="../ui/main_window.cpp" line="240"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
+        <location filename="../ui/main_window.cpp" line="243"/>
+        <source>Gravity %1</source>
+        <translation>Гравитация %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="245"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="257"/>
+        <location filename="../ui/main_window.cpp" line="249"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="262"/>
+        <location filename="../ui/main_window.cpp" line="254"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="263"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
+        <source>Time step</source>
+        <translation>Шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="257"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="266"/>
+        <location filename="../ui/main_window.cpp" line="261"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="272"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="274"/>
+        <location filename="../ui/main_window.cpp" line="269"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="280"/>
+        <location filename="../ui/main_window.cpp" line="275"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="282"/>
+        <location filename="../ui/main_window.cpp" line="277"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="289"/>
+        <location filename="../ui/main_window.cpp" line="284"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="291"/>
+        <location filename="../ui/main_window.cpp" line="286"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="298"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="305"/>
+        <location filename="../ui/main_window.cpp" line="300"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="308"/>
+        <location filename="../ui/main_window.cpp" line="303"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="574"/>
+        <location filename="../ui/main_window.cpp" line="569"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="574"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="584"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="584"/>
+        <location filename="../ui/main_window.cpp" line="579"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="587"/>
+        <location filename="../ui/main_window.cpp" line="582"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="590"/>
+        <location filename="../ui/main_window.cpp" line="585"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="601"/>
+        <location filename="../ui/main_window.cpp" line="596"/>
         <source>Cannot Open Scene</source>
         <translation>Не удаётся открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="612"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
         <source>an unsaved scene</source>
         <translation>несохранённая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="614"/>
+        <location filename="../ui/main_window.cpp" line="609"/>
         <source>Recover Scene</source>
         <translation>Восстановление сцены</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="615"/>
+        <location filename="../ui/main_window.cpp" line="610"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom завершился некорректно, когда в «%1» были несохранённые изменения. Копию, сохранённую %2, можно восстановить.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="619"/>
+        <location filename="../ui/main_window.cpp" line="614"/>
         <source>&amp;Recover</source>
         <translation>&amp;Восстановить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="620"/>
+        <location filename="../ui/main_window.cpp" line="615"/>
         <source>&amp;Discard</source>
         <translation>&amp;Отбросить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="621"/>
+        <location filename="../ui/main_window.cpp" line="616"/>
         <source>Not &amp;Now</source>
         <translation>Не &amp;сейчас</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="628"/>
+        <location filename="../ui/main_window.cpp" line="623"/>
         <source>Cannot Recover Scene</source>
         <translation>Не удаётся восстановить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="648"/>
+        <location filename="../ui/main_window.cpp" line="643"/>
         <source>untitled</source>
         <translation>без имени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window.cpp" line="646"/>
         <source>Save Scene</source>
         <translation>Сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="652"/>
+        <location filename="../ui/main_window.cpp" line="647"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="658"/>
         <source>Cannot Save Scene</source>
         <translation>Не удаётся сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="668"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="676"/>
+        <location filename="../ui/main_window.cpp" line="671"/>
         <source>Unsaved Changes</source>
         <translation>Несохранённые изменения</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="677"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="711"/>
+        <location filename="../ui/main_window.cpp" line="706"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="732"/>
+        <location filename="../ui/main_window.cpp" line="727"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="734"/>
+        <location filename="../ui/main_window.cpp" line="729"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="738"/>
+        <location filename="../ui/main_window.cpp" line="733"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="741"/>
+        <location filename="../ui/main_window.cpp" line="736"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="744"/>
+        <location filename="../ui/main_window.cpp" line="739"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="747"/>
+        <location filename="../ui/main_window.cpp" line="742"/>
         <source>Duplicate</source>
         <translation>Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="749"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="752"/>
+        <location filename="../ui/main_window.cpp" line="747"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="762"/>
+        <location filename="../ui/main_window.cpp" line="757"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="765"/>
+        <location filename="../ui/main_window.cpp" line="760"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="769"/>
+        <location filename="../ui/main_window.cpp" line="764"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="778"/>
+        <location filename="../ui/main_window.cpp" line="773"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="801"/>
+        <location filename="../ui/main_window.cpp" line="796"/>
         <source>clipboard</source>
         <translation>буфер обмена</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="803"/>
+        <location filename="../ui/main_window.cpp" line="798"/>
         <source>Nothing to paste: %1</source>
         <translation>Нечего вставить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="806"/>
+        <location filename="../ui/main_window.cpp" line="801"/>
         <source>Paste</source>
         <translation>Вставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="830"/>
+        <location filename="../ui/main_window.cpp" line="825"/>
         <source>Cannot place the objects: %1</source>
         <translation>Не удаётся разместить объекты: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="837"/>
+        <location filename="../ui/main_window.cpp" line="832"/>
         <source>Delete</source>
         <translation>Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="849"/>
+        <location filename="../ui/main_window.cpp" line="844"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="296"/>
+        <location filename="../ui/main_window.cpp" line="291"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="312"/>
+        <location filename="../ui/main_window.cpp" line="307"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="324"/>
+        <location filename="../ui/main_window.cpp" line="319"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="333"/>
+        <location filename="../ui/main_window.cpp" line="328"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="343"/>
+        <location filename="../ui/main_window.cpp" line="338"/>
         <source>The language changes when Carom is next started.</source>
         <translation>Язык изменится при следующем запуске Carom.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="554"/>
+        <location filename="../ui/main_window.cpp" line="549"/>
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
         <translation>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   шаров: %5   E = %6 J (дрейф %7)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="564"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>   sound unavailable</source>
         <translation>   звук недоступен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="566"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>   muted</source>
         <translation>   звук выключен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="567"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — физика не успевает; замедленный ход</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::NumberBox</name>
+    <message>
+        <location filename="../ui/number_box.cpp" line="35"/>
+        <source>must be finite (got %1)</source>
+        <translation>должно быть конечным (получено %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="37"/>
+        <source>must be between %1 and %2 (got %3)</source>
+        <translation>должно быть от %1 до %2 (получено %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="76"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -700,225 +742,215 @@
 <context>
     <name>carom::ui::PropertiesDock</name>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="55"/>
-        <source>“%1” is out of range</source>
-        <translation>«%1» вне допустимого диапазона</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="56"/>
-        <source>“%1” is not a number</source>
-        <translation>«%1» — не число</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="89"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="50"/>
         <source>Properties</source>
         <translation>Свойства</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="110"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="71"/>
         <source>(any length)</source>
         <translation>(любой длины)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
         <source>Name</source>
         <translation>Имя</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
         <source>Rename</source>
         <translation>Переименовать</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="76"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="116"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="77"/>
         <source>Choose a colour</source>
         <translation>Выбрать цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
         <source>Colour</source>
         <translation>Цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
         <source>Change Colour</source>
         <translation>Изменить цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="85"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
         <source>Position</source>
         <translation>Положение</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
         <source>Velocity</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="129"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
         <source>Change Velocity</source>
         <translation>Изменить скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
         <source>Radius</source>
         <translation>Радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="145"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
         <source>Change Radius</source>
         <translation>Изменить радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
         <source>Mass</source>
         <translation>Масса</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
         <source>Change Mass</source>
         <translation>Изменить массу</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="135"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
         <source>Point</source>
         <translation>Точка</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
         <source>Normal</source>
         <translation>Нормаль</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
         <source>Turn Plane</source>
         <translation>Повернуть плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
         <source>Axis</source>
         <translation>Ось</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
         <source>Turn Cylinder</source>
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="150"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="152"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
         <source>Change Restitution</source>
         <translation>Изменить коэффициент восстановления</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="250"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>От 0 до 1; пусто — коэффициент мира</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
         <source>Method</source>
         <translation>Метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="154"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
         <source>Integrator</source>
         <translation>Интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="157"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="286"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="247"/>
         <source>World (nothing selected)</source>
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="292"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="372"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="403"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="333"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="364"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="294"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="255"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -927,7 +959,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="297"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="258"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -936,17 +968,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="306"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="267"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="341"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="418"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="379"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>

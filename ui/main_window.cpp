@@ -4,6 +4,7 @@
 #include "editor_tools.h"
 #include "energy_plot.h"
 #include "language.h"
+#include "number_box.h"
 #include "outline_dock.h"
 #include "properties_dock.h"
 
@@ -14,6 +15,7 @@
 #include "scene_view.h"
 #include "simulation_controller.h"
 #include "sound_board.h"
+#include "tolerances.h"
 #include "validation.h"
 
 #include <QAction>
@@ -24,7 +26,6 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -64,16 +65,6 @@ std::vector<std::optional<std::size_t>> matchUnchangedBalls(const std::vector<Ba
     match[i] = j++;
   }
   return match;
-}
-
-QDoubleSpinBox* numberBox(double low, double high, int decimals, double step, const QString& tip) {
-  auto* box = new QDoubleSpinBox;
-  box->setRange(low, high);
-  box->setDecimals(decimals);
-  box->setSingleStep(step);
-  box->setToolTip(tip);
-  box->setKeyboardTracking(false);  // apply a typed value when it is complete, not per digit
-  return box;
 }
 
 }  // namespace
@@ -237,9 +228,11 @@ void MainWindow::buildToolBar() {
   bar->addSeparator();
 
   bar->addWidget(new QLabel(tr("Speed")));
-  speed_ = numberBox(0.01, 100.0, 2, 0.25, tr("Simulated seconds per real second"));
+  speed_ = new NumberBox(tr("Speed"), 0.01, 100.0, 0.25);
+  speed_->setToolTip(tr("Simulated seconds per real second"));
   speed_->setObjectName("speed");
   speed_->setValue(1.0);
+  connect(speed_, &NumberBox::refused, this, &MainWindow::showMessage);
   connect(speed_, &QDoubleSpinBox::valueChanged, this,
           [this](double value) { simulation_->setSpeed(value); });
   bar->addWidget(speed_);
@@ -247,8 +240,11 @@ void MainWindow::buildToolBar() {
   bar->addWidget(new QLabel(tr("Gravity")));
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    gravity_[a] = numberBox(-1000.0, 1000.0, 3, 0.5, tr("Gravity %1 (m/s²)").arg(axes[a]));
+    gravity_[a] = new NumberBox(tr("Gravity %1").arg(axes[a]), -tolerance::kMaxMagnitude,
+                                tolerance::kMaxMagnitude, 0.5);
+    gravity_[a]->setToolTip(tr("Gravity %1 (m/s²)").arg(axes[a]));
     gravity_[a]->setObjectName(QString("gravity") + QChar(axes[a][0]).toUpper());
+    connect(gravity_[a], &NumberBox::refused, this, &MainWindow::showMessage);
     connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, [this, a](double value) {
       editWorld(tr("Change Gravity"), [a, value](World& world) { world.gravity[a] = value; });
     });
@@ -256,8 +252,11 @@ void MainWindow::buildToolBar() {
   }
 
   bar->addWidget(new QLabel(tr("Step")));
-  timeStep_ = numberBox(1e-6, 10.0, 6, 0.001, tr("Time step in seconds (+ and - keys)"));
+  timeStep_ =
+      new NumberBox(tr("Time step"), tolerance::kMinTimeStep, tolerance::kMaxTimeStep, 0.001);
+  timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
   timeStep_->setObjectName("timeStep");
+  connect(timeStep_, &NumberBox::refused, this, &MainWindow::showMessage);
   connect(timeStep_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
     editWorld(tr("Change Time Step"), [value](World& world) { world.timeStep = value; });
   });

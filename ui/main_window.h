@@ -16,7 +16,6 @@
 class QAction;
 class QComboBox;
 class QDockWidget;
-class QDoubleSpinBox;
 class QLabel;
 class QMenu;
 
@@ -25,6 +24,7 @@ namespace carom::ui {
 class AccuracyWindow;
 class SceneDocument;
 class EditorTools;
+class NumberBox;
 class OutlineDock;
 class PropertiesDock;
 class SceneRecovery;
@@ -160,9 +160,9 @@ class MainWindow : public QMainWindow {
   QAction* resetAction_ = nullptr;
   QAction* fullScreenAction_ = nullptr;
   QAction* followAction_ = nullptr;
-  QDoubleSpinBox* speed_ = nullptr;
-  QDoubleSpinBox* gravity_[3] = {};
-  QDoubleSpinBox* timeStep_ = nullptr;
+  NumberBox* speed_ = nullptr;
+  NumberBox* gravity_[3] = {};
+  NumberBox* timeStep_ = nullptr;
   QComboBox* method_ = nullptr;
   QComboBox* integrator_ = nullptr;
   QLabel* status_ = nullptr;

@@ -1,5 +1,6 @@
 #include "properties_dock.h"
 
+#include "number_text.h"
 #include "scene_document.h"
 
 #include <QColorDialog>
@@ -8,9 +9,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
 #include <QPixmap>
-#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QToolButton>
@@ -21,40 +20,6 @@
 
 namespace carom::ui {
 namespace {
-
-// Numbers are shown in the user's locale without group separators, shortest round-trip form,
-// and read back in the user's locale or the C locale ("0,5" and "0.5" both work in German).
-QLocale numberLocale() {
-  QLocale locale;
-  locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
-  return locale;
-}
-
-QString formatNumber(double value) {
-  return numberLocale().toString(value, 'g', QLocale::FloatingPointShortest);
-}
-
-// A number typed in, or why it is not one.
-struct ParsedNumber {
-  std::optional<double> value;
-  QString problem;
-};
-
-ParsedNumber parseNumber(const QString& typed) {
-  const QString text = typed.trimmed();
-  bool ok = false;
-  const double value = numberLocale().toDouble(text, &ok);
-  if (ok) return {value, {}};
-  QLocale c = QLocale::c();
-  c.setNumberOptions(QLocale::RejectGroupSeparator);
-  const double inC = c.toDouble(text, &ok);
-  if (ok) return {inC, {}};
-  // Written as a number, but beyond what a double holds (1e400, 1e-400).
-  static const QRegularExpression numeral(R"(^[+-]?(\d+([.,]\d*)?|[.,]\d+)[eE][+-]?\d+$)");
-  if (numeral.match(text).hasMatch())
-    return {std::nullopt, PropertiesDock::tr("“%1” is out of range").arg(text)};
-  return {std::nullopt, PropertiesDock::tr("“%1” is not a number").arg(text)};
-}
 
 // The dock's kind bits are ObjectKind's values as powers of two.
 int flagOf(ObjectKind kind) {
