@@ -21,6 +21,11 @@ double volumeForSpeed(double speed, double referenceSpeed) {
 
 namespace {
 const char* const kSources[] = {"qrc:/sounds/ball-ball.wav", "qrc:/sounds/ball-wall.wav"};
+// Both sounds last under half a second. Played a few times a second, about one QSoundEffect in
+// five on Qt 6.4's PulseAudio backend never leaves "playing" (its stream's drain fails) and stays
+// silent even when stopped and played again: within seconds every voice was stuck and Carom went
+// quiet. A voice still "playing" this long after it began is replaced by a new one.
+constexpr std::int64_t kStuckVoiceMs = 1000;
 }  // namespace
 
 SoundBoard::SoundBoard(QObject* parent) : SoundBoard(Settings{}, parent) {}
@@ -41,18 +46,23 @@ SoundBoard::SoundBoard(const Settings& settings, QObject* parent)
 
 SoundBoard::~SoundBoard() = default;
 
+QSoundEffect* SoundBoard::createVoice(Sound sound) {
+  auto* voice = new QSoundEffect(QMediaDevices::defaultAudioOutput(), this);
+  voice->setSource(QUrl(QString::fromLatin1(kSources[sound])));
+  connect(voice, &QSoundEffect::statusChanged, this, [this, voice] {
+    if (voice->status() == QSoundEffect::Error) {
+      loadFailed_ = true;
+      updateAvailability();
+    }
+  });
+  return voice;
+}
+
 void SoundBoard::createVoices() {
   for (int s = 0; s < SoundCount; ++s) {
     for (int v = 0; v < std::max(1, settings_.voicesPerSound); ++v) {
-      auto* voice = new QSoundEffect(this);
-      voice->setSource(QUrl(QString::fromLatin1(kSources[s])));
-      connect(voice, &QSoundEffect::statusChanged, this, [this, voice] {
-        if (voice->status() == QSoundEffect::Error) {
-          loadFailed_ = true;
-          updateAvailability();
-        }
-      });
-      voices_[s].push_back(voice);
+      voices_[s].push_back(createVoice(Sound(s)));
+      voiceStartMs_[s].push_back(0);
     }
   }
 }
@@ -106,12 +116,22 @@ bool SoundBoard::start(Sound sound, double speed, std::int64_t nowMs) {
   if (static_cast<int>(recentStartsMs_.size()) >= settings_.maxPerSecond) return false;
   if (nowMs - lastStartMs_[sound] < settings_.minimumGapMs) return false;
   // A voice still sounding is left alone; cutting it off would click.
-  auto free = std::find_if(voices_[sound].begin(), voices_[sound].end(),
-                           [](const QSoundEffect* v) { return !v->isPlaying(); });
-  if (free == voices_[sound].end()) return false;
+  std::vector<QSoundEffect*>& pool = voices_[sound];
+  std::size_t free = 0;
+  while (free < pool.size() && pool[free]->isPlaying() &&
+         nowMs - voiceStartMs_[sound][free] < kStuckVoiceMs)
+    ++free;
+  if (free == pool.size()) return false;
+  if (pool[free]->isPlaying()) {
+    pool[free]->deleteLater();
+    pool[free] = createVoice(sound);
+    ++unstuck_;
+  }
+  QSoundEffect* voice = pool[free];
   const double volume = settings_.masterVolume * volumeForSpeed(speed, settings_.referenceSpeed);
-  (*free)->setVolume(static_cast<float>(std::clamp(volume, 0.0, 1.0)));
-  (*free)->play();
+  voice->setVolume(static_cast<float>(std::clamp(volume, 0.0, 1.0)));
+  voice->play();
+  voiceStartMs_[sound][free] = nowMs;
   lastStartMs_[sound] = nowMs;
   recentStartsMs_.push_back(nowMs);
   return true;

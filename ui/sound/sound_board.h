@@ -52,6 +52,8 @@ class SoundBoard : public QObject {
 
   int playedCount() const { return played_; }
   int droppedCount() const { return dropped_; }
+  // Voices found still "playing" long after their sound ended, and replaced.
+  int unstuckCount() const { return unstuck_; }
   const Settings& settings() const { return settings_; }
 
  signals:
@@ -60,6 +62,7 @@ class SoundBoard : public QObject {
  private:
   enum Sound { Clack, Thud, SoundCount };
 
+  QSoundEffect* createVoice(Sound sound);
   void createVoices();
   void updateAvailability();
   void useDefaultOutput();
@@ -68,6 +71,7 @@ class SoundBoard : public QObject {
   Settings settings_;
   QMediaDevices* devices_ = nullptr;
   std::array<std::vector<QSoundEffect*>, SoundCount> voices_;
+  std::array<std::vector<std::int64_t>, SoundCount> voiceStartMs_;  // when each voice last began
   std::array<std::int64_t, SoundCount> lastStartMs_;
   std::deque<std::int64_t> recentStartsMs_;  // starts within the last second, oldest first
   QElapsedTimer clock_;
@@ -76,6 +80,7 @@ class SoundBoard : public QObject {
   bool loadFailed_ = false;
   int played_ = 0;
   int dropped_ = 0;
+  int unstuck_ = 0;
 };
 
 }  // namespace carom

@@ -1,0 +1,239 @@
+#include "window_benchmarks.h"
+
+#include "main_window.h"
+#include "scene_builders.h"
+#include "scene_view.h"
+#include "simulation_controller.h"
+#include "simulation_snapshot.h"
+#include "sound_board.h"
+
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QFile>
+#include <QTimer>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+namespace carom::ui {
+namespace {
+
+constexpr QSize kBenchViewSize(1280, 720);
+constexpr int kBenchWarmUpMs = 1000;  // scene upload, first frames, the worker's first batches
+constexpr int kRenderRunMs = 5000;
+constexpr int kStallProbeMs = 5;
+constexpr int kStressReportSeconds = 10;
+// The stress gas: its balls' speeds are scaled up until collisions come at about 10,000 a second.
+constexpr int kStressBalls = 1000;
+constexpr double kStressSpeedScale = 2.2;
+// Memory is flat when the last sample is within 10 % + 4 MiB of the one a fifth of the way in,
+// the rule of scripts/soak.sh.
+constexpr double kFlatFraction = 0.10;
+constexpr double kFlatSlackMiB = 4.0;
+
+// A nested loop rather than polling processEvents, which would keep a core busy.
+void processEventsFor(int milliseconds) {
+  QEventLoop loop;
+  QTimer::singleShot(milliseconds, Qt::PreciseTimer, &loop, &QEventLoop::quit);
+  loop.exec();
+}
+
+double percentile(const std::vector<double>& sorted, double fraction) {
+  if (sorted.empty()) return 0.0;
+  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(sorted.size() - 1));
+  return sorted[index];
+}
+
+double mean(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+}
+
+// Resident memory of this process, MiB.
+double residentMiB() {
+  QFile statm(QStringLiteral("/proc/self/statm"));
+  if (!statm.open(QIODevice::ReadOnly)) return 0.0;
+  const QList<QByteArray> fields = statm.readAll().split(' ');
+  return fields.size() > 1 ? fields[1].toDouble() * 4096.0 / (1024.0 * 1024.0) : 0.0;
+}
+
+// A busy GUI thread delays every timer: the gaps between this timer's ticks beyond its period are
+// the stalls, the time the window could not have answered the user.
+class StallProbe {
+ public:
+  explicit StallProbe(QObject* context) {
+    timer_.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&timer_, &QTimer::timeout, context, [this] {
+      if (clock_.isValid()) gaps_.push_back(clock_.nsecsElapsed() * 1e-6);
+      clock_.start();
+    });
+    timer_.start(kStallProbeMs);
+  }
+  // Gaps since the last call, ms, sorted.
+  std::vector<double> takeGaps() {
+    std::vector<double> gaps = std::move(gaps_);
+    gaps_.clear();
+    std::sort(gaps.begin(), gaps.end());
+    return gaps;
+  }
+
+ private:
+  QTimer timer_;
+  QElapsedTimer clock_;
+  std::vector<double> gaps_;
+};
+
+// Shows `window` grown until its view alone is 1280x720: the toolbar, status bar and docks
+// take their share.
+render::SceneView* showWithBenchViewSize(MainWindow& window) {
+  auto* view = qobject_cast<render::SceneView*>(window.view());
+  if (!view) return nullptr;
+  window.show();
+  processEventsFor(300);
+  window.resize(window.size() + kBenchViewSize - view->size());
+  processEventsFor(300);
+  return view;
+}
+
+void printView(const render::SceneView& view) {
+  const QSize shown = view.size();
+  std::printf("view: %dx%d (device pixel ratio %.2f)%s\n", shown.width(), shown.height(),
+              view.devicePixelRatioF(),
+              shown == kBenchViewSize ? "" : "  -- smaller than the 1280x720 asked for");
+  std::printf("antialiasing: %s (%s renderer)\n", view.antialiasing() ? "4x" : "off",
+              view.softwareRenderer() ? "software" : "hardware");
+}
+
+}  // namespace
+
+int benchmarkRender(int ballCount) {
+  MainWindow window;
+  window.openScene(makeGasInBox(ballCount, 0.25, Vec3::Zero(), 2007), {},
+                   QStringLiteral("gas of %1 balls").arg(ballCount));
+  render::SceneView* view = showWithBenchViewSize(window);
+  if (!view) return 1;
+
+  std::vector<double> intervals;  // between consecutive frames, ms
+  std::vector<double> paintTimes;
+  QElapsedTimer frameClock;
+  bool measuring = false;
+  QObject::connect(view, &render::SceneView::frameRendered, &window, [&](double paintMs) {
+    if (!measuring) return;
+    if (frameClock.isValid()) intervals.push_back(frameClock.nsecsElapsed() * 1e-6);
+    paintTimes.push_back(paintMs);
+    frameClock.start();
+  });
+  StallProbe probe(&window);
+
+  window.setRunning(true);
+  processEventsFor(kBenchWarmUpMs);
+  probe.takeGaps();
+  measuring = true;
+  QElapsedTimer run;
+  run.start();
+  processEventsFor(kRenderRunMs);
+  const double seconds = run.nsecsElapsed() * 1e-9;
+  measuring = false;
+  window.setRunning(false);
+  const std::vector<double> gaps = probe.takeGaps();
+
+  std::sort(intervals.begin(), intervals.end());
+  std::printf("balls: %d\n", ballCount);
+  printView(*view);
+  std::printf("run: %.2f s\n", seconds);
+  std::printf("frames: %zu\n", paintTimes.size());
+  std::printf("mean fps: %.1f\n", paintTimes.size() / seconds);
+  std::printf("frame interval ms: mean %.2f  median %.2f  p95 %.2f  max %.2f\n", mean(intervals),
+              percentile(intervals, 0.5), percentile(intervals, 0.95),
+              intervals.empty() ? 0.0 : intervals.back());
+  std::printf("paintGL ms (incl. glFinish): mean %.2f\n", mean(paintTimes));
+  std::printf("longest GUI stall ms: %.2f\n", gaps.empty() ? 0.0 : gaps.back());
+  std::fflush(stdout);
+  return 0;
+}
+
+int benchmarkStress(int seconds) {
+  Scene gas = makeGasInBox(kStressBalls, 0.25, Vec3::Zero(), 2007);
+  for (Ball& ball : gas.balls) ball.velocity *= kStressSpeedScale;
+  MainWindow window;
+  window.openScene(gas, {}, QStringLiteral("stress gas"));
+  render::SceneView* view = showWithBenchViewSize(window);
+  if (!view) return 1;
+  view->setExplosionsEnabled(true);
+  window.sound().setMuted(false);
+
+  int frames = 0;
+  QObject::connect(view, &render::SceneView::frameRendered, &window, [&](double) { ++frames; });
+  StallProbe probe(&window);
+  window.setRunning(true);
+  processEventsFor(kBenchWarmUpMs);
+  probe.takeGaps();
+
+  std::printf("stress: %d balls, %d s, sound %s\n", kStressBalls, seconds,
+              window.sound().available() ? "on" : "unavailable");
+  printView(*view);
+  std::printf("%6s %13s %6s %16s %16s %9s %11s %14s %14s\n", "t s", "collisions/s", "fps",
+              "longest stall ms", "p99 stall ms", "RSS MiB", "explosions", "sounds played",
+              "sounds dropped");
+  const auto collisionsSoFar = [&] {
+    const auto snapshot = window.simulation().latest();
+    return snapshot ? snapshot->stats.collisions.total() : std::uint64_t{0};
+  };
+  std::vector<double> memory;  // one sample a report
+  std::vector<double> allGaps;
+  const std::uint64_t firstCollisions = collisionsSoFar();
+  std::uint64_t collisions = firstCollisions;
+  int played = window.sound().playedCount();
+  int dropped = window.sound().droppedCount();
+  int mostExplosions = 0;
+  QElapsedTimer run;
+  run.start();
+  for (int elapsed = 0; elapsed < seconds; elapsed += kStressReportSeconds) {
+    const int slice = std::min(kStressReportSeconds, seconds - elapsed);
+    const int framesBefore = frames;
+    int explosions = 0;
+    // Sampled each second: how many explosions are alive in the view.
+    for (int s = 0; s < slice; ++s) {
+      processEventsFor(1000);
+      explosions = std::max(explosions, view->liveExplosions());
+    }
+    mostExplosions = std::max(mostExplosions, explosions);
+    const std::uint64_t nowCollisions = collisionsSoFar();
+    const std::vector<double> gaps = probe.takeGaps();
+    allGaps.insert(allGaps.end(), gaps.begin(), gaps.end());
+    memory.push_back(residentMiB());
+    std::printf("%6d %13.0f %6.1f %16.1f %16.1f %9.1f %11d %14d %14d\n", elapsed + slice,
+                double(nowCollisions - collisions) / slice, double(frames - framesBefore) / slice,
+                gaps.empty() ? 0.0 : gaps.back(), percentile(gaps, 0.99), memory.back(), explosions,
+                window.sound().playedCount() - played, window.sound().droppedCount() - dropped);
+    std::fflush(stdout);
+    collisions = nowCollisions;
+    played = window.sound().playedCount();
+    dropped = window.sound().droppedCount();
+  }
+  const double runSeconds = run.nsecsElapsed() * 1e-9;
+  window.setRunning(false);
+
+  std::sort(allGaps.begin(), allGaps.end());
+  const double reference = memory[memory.size() / 5];
+  const bool flat = memory.back() <= reference * (1.0 + kFlatFraction) + kFlatSlackMiB;
+  std::printf("collisions: %llu in %.1f s (%.0f a second)\n",
+              static_cast<unsigned long long>(collisions - firstCollisions), runSeconds,
+              double(collisions - firstCollisions) / runSeconds);
+  std::printf("frames: %d (%.1f fps)\n", frames, frames / runSeconds);
+  std::printf("GUI stalls ms: median %.1f  p99 %.1f  p99.9 %.1f  longest %.1f\n",
+              percentile(allGaps, 0.5), percentile(allGaps, 0.99), percentile(allGaps, 0.999),
+              allGaps.empty() ? 0.0 : allGaps.back());
+  std::printf("most live explosions: %d (limit %d)\n", mostExplosions, view->explosionLimit());
+  std::printf("sounds: %d played, %d dropped, %d stuck voices replaced%s\n",
+              window.sound().playedCount(), window.sound().droppedCount(),
+              window.sound().unstuckCount(), window.sound().available() ? "" : " (no sound)");
+  std::printf("memory MiB: %.1f at a fifth of the run, %.1f at the end, %.1f at most\n", reference,
+              memory.back(), *std::max_element(memory.begin(), memory.end()));
+  std::printf("memory flat: %s\n", flat ? "yes" : "no");
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace carom::ui

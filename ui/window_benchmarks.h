@@ -1,0 +1,17 @@
+#pragma once
+
+// Benchmarks of the whole program in its real window, for `carom --bench-render` and
+// `carom --bench-stress`. Both print their figures to stdout and return an exit code.
+
+namespace carom::ui {
+
+// A gas of `ballCount` balls running with the view at 1280x720: frame intervals and the longest
+// stall of the GUI thread over 5 s.
+int benchmarkRender(int ballCount);
+
+// A gas hot enough for about 10,000 collisions a second, run for `seconds` with explosions and
+// sound on: every 10 s the collision rate, frame rate, the GUI thread's longest stall, resident
+// memory, live explosions and sounds played; then whether memory stayed flat.
+int benchmarkStress(int seconds);
+
+}  // namespace carom::ui
