@@ -13,10 +13,12 @@ import sys
 import wave
 
 RATE = 44100
-# Qt 6.4's QSoundEffect stops (and flushes) its PulseAudio stream as soon as it has handed over
-# the last sample, cutting off whatever the server had not played yet: up to ~100 ms. Silence
-# after each sound makes that cut fall where nothing is lost.
-TAIL_SILENCE = 0.25
+# Carom plays each sound as an endless loop and stops it itself, after at least 300 ms
+# (ui/sound/sound_board.cpp), in this silence: Qt 6.4's QSoundEffect, reused or left to end a
+# sound on its own, goes silent for good after a few plays and can crash on a late drain. The
+# silence leaves room for the server's ~100 ms of buffer and for a stop that comes late because
+# the GUI thread stalled, before the loop comes round again.
+TAIL_SILENCE = 1.0
 # It also often loses the first 5-20 ms of a fresh stream, which is most of a clack; starting
 # with 40 ms of silence keeps the attack, at the price of 40 ms more latency.
 LEAD_SILENCE = 0.04

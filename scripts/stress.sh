@@ -50,11 +50,13 @@ loud = [max(map(abs, samples[i:i + block]), default=0) > 327 for i in range(0, l
 if True in loud:
     first, last = loud.index(True), len(loud) - 1 - loud[::-1].index(True)
     longest = gap = 0
-    for value in loud[first:last + 1]:
-        gap = 0 if value else gap + 1
-        longest = max(longest, gap)
+    longest_end = first
+    for index in range(first, last + 1):
+        gap = 0 if loud[index] else gap + 1
+        if gap > longest:
+            longest, longest_end = gap, index
     print(f"recording: {len(samples) / rate:.1f} s, sound from {first / 4:.2f} s to {last / 4:.2f} s, "
-          f"longest silence {longest / 4:.2f} s")
+          f"longest silence {longest / 4:.2f} s (ending at {longest_end / 4 + 0.25:.2f} s)")
     if longest / 4 > 3:
         problems.append(f"the sound stopped for {longest / 4:.2f} s")
     if (last - first) / 4 < 0.9 * float(re.search(r"stress: \d+ balls, (\d+) s", report).group(1)):

@@ -3,6 +3,7 @@
 #include <QAudioDevice>
 #include <QMediaDevices>
 #include <QSoundEffect>
+#include <QTimer>
 #include <QUrl>
 
 #include <algorithm>
@@ -21,11 +22,21 @@ double volumeForSpeed(double speed, double referenceSpeed) {
 
 namespace {
 const char* const kSources[] = {"qrc:/sounds/ball-ball.wav", "qrc:/sounds/ball-wall.wav"};
-// Both sounds last under half a second. Played a few times a second, about one QSoundEffect in
-// five on Qt 6.4's PulseAudio backend never leaves "playing" (its stream's drain fails) and stays
-// silent even when stopped and played again: within seconds every voice was stuck and Carom went
-// quiet. A voice still "playing" this long after it began is replaced by a new one.
-constexpr std::int64_t kStuckVoiceMs = 1000;
+// Every sound gets a QSoundEffect of its own, which plays it as an endless loop and is stopped
+// and deleted in the silence that ends both sound files (scripts/make-sounds.py). Qt 6.4's
+// PulseAudio sink goes wrong when a QSoundEffect is reused or left to end a sound itself: each
+// reopening of its stream asks for three quarters of the previous buffer, and after five or six
+// plays the buffer is smaller than one 20 ms period, so nothing is ever written again (Carom
+// fell silent within seconds); and a drain completing after the sink was stopped leaves it idle
+// with no stream, which crashed in pa_stream_writable_size after a few minutes. A fresh,
+// looping QSoundEffect has neither.
+//
+// The sink is fed from this thread's event loop: a voice is stopped on the second tick of a
+// 150 ms timer, after at least 300 ms and two turns of the loop, so that a GUI thread stalled
+// for longer has still fed it the whole sound. A stop later than about a second would let the
+// loop come round again.
+constexpr int kVoiceTickMs = 150;
+constexpr int kVoiceTicks = 2;
 }  // namespace
 
 SoundBoard::SoundBoard(QObject* parent) : SoundBoard(Settings{}, parent) {}
@@ -49,6 +60,7 @@ SoundBoard::~SoundBoard() = default;
 QSoundEffect* SoundBoard::createVoice(Sound sound) {
   auto* voice = new QSoundEffect(QMediaDevices::defaultAudioOutput(), this);
   voice->setSource(QUrl(QString::fromLatin1(kSources[sound])));
+  voice->setLoopCount(QSoundEffect::Infinite);
   connect(voice, &QSoundEffect::statusChanged, this, [this, voice] {
     if (voice->status() == QSoundEffect::Error) {
       loadFailed_ = true;
@@ -58,25 +70,18 @@ QSoundEffect* SoundBoard::createVoice(Sound sound) {
   return voice;
 }
 
-void SoundBoard::createVoices() {
-  for (int s = 0; s < SoundCount; ++s) {
-    for (int v = 0; v < std::max(1, settings_.voicesPerSound); ++v) {
-      voices_[s].push_back(createVoice(Sound(s)));
-      voiceStartMs_[s].push_back(0);
-    }
-  }
-}
-
 void SoundBoard::useDefaultOutput() {
   const QAudioDevice device = QMediaDevices::defaultAudioOutput();
-  for (auto& pool : voices_)
-    for (QSoundEffect* voice : pool) voice->setAudioDevice(device);
+  for (QSoundEffect* sample : samples_) sample->setAudioDevice(device);
 }
 
 void SoundBoard::updateAvailability() {
   const bool outputs = !QMediaDevices::audioOutputs().isEmpty();
-  // Voices are made only once there is an output: with none, each QSoundEffect would warn.
-  if (outputs && voices_[Clack].empty()) createVoices();
+  // The samples are loaded only once there is an output: with none, each QSoundEffect would
+  // warn. They are never played; they keep the decoded sounds in Qt's cache for the voices and
+  // report a file that cannot be loaded.
+  if (outputs && !samples_[Clack])
+    for (int s = 0; s < SoundCount; ++s) samples_[s] = createVoice(Sound(s));
   const bool now = outputs && !loadFailed_;
   if (now == available_) return;
   available_ = now;
@@ -115,23 +120,24 @@ bool SoundBoard::start(Sound sound, double speed, std::int64_t nowMs) {
   if (speed < settings_.minimumSpeed) return false;
   if (static_cast<int>(recentStartsMs_.size()) >= settings_.maxPerSecond) return false;
   if (nowMs - lastStartMs_[sound] < settings_.minimumGapMs) return false;
-  // A voice still sounding is left alone; cutting it off would click.
-  std::vector<QSoundEffect*>& pool = voices_[sound];
-  std::size_t free = 0;
-  while (free < pool.size() && pool[free]->isPlaying() &&
-         nowMs - voiceStartMs_[sound][free] < kStuckVoiceMs)
-    ++free;
-  if (free == pool.size()) return false;
-  if (pool[free]->isPlaying()) {
-    pool[free]->deleteLater();
-    pool[free] = createVoice(sound);
-    ++unstuck_;
-  }
-  QSoundEffect* voice = pool[free];
+  // Voices still sounding are left alone; cutting one off would click.
+  std::vector<QSoundEffect*>& sounding = voices_[sound];
+  if (static_cast<int>(sounding.size()) >= std::max(1, settings_.voicesPerSound)) return false;
+  QSoundEffect* voice = createVoice(sound);
   const double volume = settings_.masterVolume * volumeForSpeed(speed, settings_.referenceSpeed);
   voice->setVolume(static_cast<float>(std::clamp(volume, 0.0, 1.0)));
   voice->play();
-  voiceStartMs_[sound][free] = nowMs;
+  sounding.push_back(voice);
+  auto* ticks = new QTimer(voice);
+  ticks->setInterval(kVoiceTickMs);
+  connect(ticks, &QTimer::timeout, voice, [this, voice, sound, ticks, count = 0]() mutable {
+    if (++count < kVoiceTicks) return;
+    ticks->stop();
+    voice->stop();
+    std::erase(voices_[sound], voice);
+    voice->deleteLater();
+  });
+  ticks->start();
   lastStartMs_[sound] = nowMs;
   recentStartsMs_.push_back(nowMs);
   return true;

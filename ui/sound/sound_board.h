@@ -29,7 +29,7 @@ class SoundBoard : public QObject {
     double minimumSpeed = 0.05;   // m/s; softer touches (resting jitter) make no sound
     int maxPerSecond = 30;        // sounds started in any one-second window, all kinds
     int minimumGapMs = 15;        // between two starts of the same sound
-    int voicesPerSound = 8;       // one QSoundEffect cannot overlap itself
+    int voicesPerSound = 8;       // sounds of one kind at once (a QSoundEffect each)
     double masterVolume = 0.5;    // headroom: two hard hits at once must not clip
   };
 
@@ -52,8 +52,6 @@ class SoundBoard : public QObject {
 
   int playedCount() const { return played_; }
   int droppedCount() const { return dropped_; }
-  // Voices found still "playing" long after their sound ended, and replaced.
-  int unstuckCount() const { return unstuck_; }
   const Settings& settings() const { return settings_; }
 
  signals:
@@ -63,15 +61,14 @@ class SoundBoard : public QObject {
   enum Sound { Clack, Thud, SoundCount };
 
   QSoundEffect* createVoice(Sound sound);
-  void createVoices();
   void updateAvailability();
   void useDefaultOutput();
   bool start(Sound sound, double speed, std::int64_t nowMs);
 
   Settings settings_;
   QMediaDevices* devices_ = nullptr;
-  std::array<std::vector<QSoundEffect*>, SoundCount> voices_;
-  std::array<std::vector<std::int64_t>, SoundCount> voiceStartMs_;  // when each voice last began
+  std::array<QSoundEffect*, SoundCount> samples_{};
+  std::array<std::vector<QSoundEffect*>, SoundCount> voices_;  // sounding now
   std::array<std::int64_t, SoundCount> lastStartMs_;
   std::deque<std::int64_t> recentStartsMs_;  // starts within the last second, oldest first
   QElapsedTimer clock_;
@@ -80,7 +77,6 @@ class SoundBoard : public QObject {
   bool loadFailed_ = false;
   int played_ = 0;
   int dropped_ = 0;
-  int unstuck_ = 0;
 };
 
 }  // namespace carom
