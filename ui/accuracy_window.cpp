@@ -1,5 +1,7 @@
 #include "accuracy_window.h"
 
+#include "call_queue.h"
+
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
@@ -33,7 +35,7 @@ QString caseName(const StudyCase& c) {
 }  // namespace
 
 AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
-    : QDialog(parent), scene_(scene) {
+    : QDialog(parent), scene_(scene), calls_(new CallQueue(this)) {
   setWindowTitle(tr("Speed vs accuracy"));
   metric_ = new QComboBox;
   metric_->addItems({tr("Position error against exact (m)"), tr("Relative energy drift"),
@@ -119,20 +121,18 @@ void AccuracyWindow::start() {
   cancel_ = false;
   running_ = true;
   cancelButton_->setEnabled(true);
-  // The runs happen on their own thread; each result comes back as a queued call.
+  // The runs happen on their own thread; each result comes back as a queued call (calls_, on
+  // the GUI thread).
   thread_ = std::thread([this, scene = scene_, cases = cases_, duration = duration_] {
     const std::vector<Vec3> reference = exactFinalPositions(scene, duration);
-    QMetaObject::invokeMethod(
-        this, [this] { progress_->setValue(1); }, Qt::QueuedConnection);
+    calls_->post([this] { progress_->setValue(1); });
     for (const StudyCase& c : cases) {
       if (cancel_) break;
       const StudyResult result = runStudyCase(scene, c, duration, reference, &cancel_);
       if (cancel_) break;
-      QMetaObject::invokeMethod(
-          this, [this, result] { addResult(result); }, Qt::QueuedConnection);
+      calls_->post([this, result] { addResult(result); });
     }
-    QMetaObject::invokeMethod(
-        this, [this] { finish(); }, Qt::QueuedConnection);
+    calls_->post([this] { finish(); });
   });
 }
 

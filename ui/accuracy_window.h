@@ -22,6 +22,8 @@ class QTableWidget;
 
 namespace carom::ui {
 
+class CallQueue;
+
 class AccuracyWindow : public QDialog {
   Q_OBJECT
  public:
@@ -53,6 +55,7 @@ class AccuracyWindow : public QDialog {
   std::vector<StudyResult> results_;
   std::atomic<bool> cancel_{false};
   std::thread thread_;
+  CallQueue* calls_;  // the study thread's results, run on the GUI thread
   bool running_ = false;
   QComboBox* metric_;
   QChart* chart_;

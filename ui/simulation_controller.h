@@ -1,6 +1,6 @@
 #pragma once
 // The GUI's handle on the simulation: owns the worker thread and forwards every request to the
-// worker as a queued call, so nothing here ever waits on the physics.
+// worker as a queued call (CallQueue), so nothing here ever waits on the physics.
 
 #include "scene.h"
 #include "simulation_snapshot.h"
@@ -8,8 +8,12 @@
 #include <QObject>
 #include <QThread>
 
+#include <functional>
+#include <memory>
+
 namespace carom::ui {
 
+class CallQueue;
 class SimulationWorker;
 
 class SimulationController : public QObject {
@@ -29,7 +33,7 @@ class SimulationController : public QObject {
   void setIntegrator(carom::Integrator integrator);
   void stallNextBatch(double seconds);  // test hook
 
-  // The most recent snapshot, or null before the first; never blocks.
+  // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }
   // The same, marking it shown: the worker announces the next one.
   std::shared_ptr<const SimulationSnapshot> take() { return exchange_.take(); }
@@ -38,12 +42,12 @@ class SimulationController : public QObject {
   void snapshotPublished();
 
  private:
-  template <typename Call>
-  void post(Call&& call);
+  void post(std::function<void()> call);
 
   SnapshotExchange exchange_;
   QThread thread_;
-  SimulationWorker* worker_;
+  SimulationWorker* worker_;  // on thread_, deleted when it finishes
+  CallQueue* calls_;          // the worker's child: runs the posted calls on thread_
 };
 
 }  // namespace carom::ui

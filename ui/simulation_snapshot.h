@@ -5,8 +5,8 @@
 #include "run_stats.h"
 #include "scene.h"
 
-#include <atomic>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace carom::ui {
@@ -28,28 +28,39 @@ struct SimulationSnapshot {
   bool fallingBehind = false;   // the physics could not keep up with the requested speed
 };
 
-// A single-slot mailbox: the writer swaps in a new snapshot, the reader takes the latest. Both
-// sides only ever touch an atomic pointer, so neither waits for the other.
+// A single-slot mailbox: the writer swaps in a new snapshot, the reader takes the latest. The
+// lock is held only to copy or swap a pointer (never while a snapshot is built, read or freed),
+// so neither side waits for the other's work. (libstdc++'s std::atomic<std::shared_ptr> is not
+// lock-free either: it spins on a lock bit, which ThreadSanitizer cannot see as a lock.)
 class SnapshotExchange {
  public:
   // Returns true when the reader has taken the previous snapshot, so it needs telling; while it
   // has not, newer snapshots simply replace the unread one and no notice piles up.
   bool publish(std::shared_ptr<const SimulationSnapshot> snapshot) {
-    latest_.store(std::move(snapshot), std::memory_order_release);
-    return !unread_.exchange(true);
+    bool notify;
+    {
+      std::lock_guard lock(mutex_);
+      latest_.swap(snapshot);
+      notify = !unread_;
+      unread_ = true;
+    }
+    return notify;  // the snapshot replaced goes with `snapshot`, outside the lock
   }
   // The newest snapshot, marking it read.
   std::shared_ptr<const SimulationSnapshot> take() {
-    unread_.store(false);
-    return latest();
+    std::lock_guard lock(mutex_);
+    unread_ = false;
+    return latest_;
   }
   std::shared_ptr<const SimulationSnapshot> latest() const {
-    return latest_.load(std::memory_order_acquire);
+    std::lock_guard lock(mutex_);
+    return latest_;
   }
 
  private:
-  std::atomic<std::shared_ptr<const SimulationSnapshot>> latest_;
-  std::atomic<bool> unread_{false};
+  mutable std::mutex mutex_;
+  std::shared_ptr<const SimulationSnapshot> latest_;  // guarded by mutex_
+  bool unread_ = false;                               // guarded by mutex_
 };
 
 }  // namespace carom::ui
