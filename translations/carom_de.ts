@@ -63,78 +63,78 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="37"/>
+        <location filename="../ui/accuracy_window.cpp" line="39"/>
         <source>Speed vs accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="41"/>
         <source>Position error against exact (m)</source>
         <translation>Positionsfehler gegenüber exact (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="41"/>
         <source>Relative energy drift</source>
         <translation>Relative Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="40"/>
+        <location filename="../ui/accuracy_window.cpp" line="42"/>
         <source>Deepest penetration (m)</source>
         <translation>Maximale Eindringtiefe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="40"/>
+        <location filename="../ui/accuracy_window.cpp" line="42"/>
         <source>Escaped balls</source>
         <translation>Entwichene Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="46"/>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="48"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Computing time (s)</source>
         <translation>Rechenzeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Run</source>
         <translation>Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Position error</source>
         <translation>Positionsfehler</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Energy drift</source>
         <translation>Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Penetration</source>
         <translation>Eindringtiefe</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Escaped</source>
         <translation>Entwichen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="77"/>
+        <location filename="../ui/accuracy_window.cpp" line="79"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="79"/>
+        <location filename="../ui/accuracy_window.cpp" line="81"/>
         <source>Apply Selected Settings</source>
         <translation>Ausgewählte Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="86"/>
+        <location filename="../ui/accuracy_window.cpp" line="88"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
         <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="93"/>
+        <location filename="../ui/accuracy_window.cpp" line="95"/>
         <source>Error:</source>
         <translation>Fehler:</translation>
     </message>
@@ -992,49 +992,54 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="123"/>
+        <location filename="../app/carom_main.cpp" line="23"/>
         <source>Collision physics sandbox</source>
         <translation>Sandbox für Kollisionsphysik</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="126"/>
+        <location filename="../app/carom_main.cpp" line="26"/>
         <source>Scene file to open</source>
         <translation>Zu öffnende Szenendatei</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="129"/>
+        <location filename="../app/carom_main.cpp" line="29"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Ein Bild des Fensters speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="130"/>
+        <location filename="../app/carom_main.cpp" line="30"/>
         <source>file.png</source>
         <translation>datei.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="133"/>
+        <location filename="../app/carom_main.cpp" line="33"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="134"/>
+        <location filename="../app/carom_main.cpp" line="34"/>
         <source>seconds</source>
         <translation>Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="136"/>
+        <location filename="../app/carom_main.cpp" line="36"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Sprache des Programms (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="137"/>
+        <location filename="../app/carom_main.cpp" line="37"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="140"/>
+        <location filename="../app/carom_main.cpp" line="40"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Ein Gas aus N Kugeln 5 s lang mit der Ansicht in 1280x720 laufen lassen, Bildzeiten und die längste Blockade der Oberfläche ausgeben und beenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="46"/>
+        <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
+        <translation>Ein Gas mit etwa 10.000 Stößen pro Sekunde S Sekunden lang mit Explosionen und Ton laufen lassen, alle 10 s Stoßrate, Bildrate, GUI-Blockaden und Speicher ausgeben und beenden.</translation>
     </message>
 </context>
 </TS>

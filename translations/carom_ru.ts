@@ -63,78 +63,78 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="37"/>
+        <location filename="../ui/accuracy_window.cpp" line="39"/>
         <source>Speed vs accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="41"/>
         <source>Position error against exact (m)</source>
         <translation>Ошибка положения относительно exact (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="41"/>
         <source>Relative energy drift</source>
         <translation>Относительный дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="40"/>
+        <location filename="../ui/accuracy_window.cpp" line="42"/>
         <source>Deepest penetration (m)</source>
         <translation>Максимальная глубина проникновения (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="40"/>
+        <location filename="../ui/accuracy_window.cpp" line="42"/>
         <source>Escaped balls</source>
         <translation>Вылетевшие шары</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="46"/>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="48"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Computing time (s)</source>
         <translation>Время вычислений (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Run</source>
         <translation>Прогон</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="69"/>
+        <location filename="../ui/accuracy_window.cpp" line="71"/>
         <source>Position error</source>
         <translation>Ошибка положения</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Energy drift</source>
         <translation>Дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Penetration</source>
         <translation>Проникновение</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="70"/>
+        <location filename="../ui/accuracy_window.cpp" line="72"/>
         <source>Escaped</source>
         <translation>Вылетело</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="77"/>
+        <location filename="../ui/accuracy_window.cpp" line="79"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="79"/>
+        <location filename="../ui/accuracy_window.cpp" line="81"/>
         <source>Apply Selected Settings</source>
         <translation>Применить выбранные настройки</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="86"/>
+        <location filename="../ui/accuracy_window.cpp" line="88"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
         <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="93"/>
+        <location filename="../ui/accuracy_window.cpp" line="95"/>
         <source>Error:</source>
         <translation>Ошибка:</translation>
     </message>
@@ -994,49 +994,54 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="123"/>
+        <location filename="../app/carom_main.cpp" line="23"/>
         <source>Collision physics sandbox</source>
         <translation>Песочница для физики столкновений</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="126"/>
+        <location filename="../app/carom_main.cpp" line="26"/>
         <source>Scene file to open</source>
         <translation>Файл сцены для открытия</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="129"/>
+        <location filename="../app/carom_main.cpp" line="29"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="130"/>
+        <location filename="../app/carom_main.cpp" line="30"/>
         <source>file.png</source>
         <translation>файл.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="133"/>
+        <location filename="../app/carom_main.cpp" line="33"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Сколько секунд выполнять симуляцию перед --screenshot.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="134"/>
+        <location filename="../app/carom_main.cpp" line="34"/>
         <source>seconds</source>
         <translation>секунды</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="136"/>
+        <location filename="../app/carom_main.cpp" line="36"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Язык программы (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="137"/>
+        <location filename="../app/carom_main.cpp" line="37"/>
         <source>code</source>
         <translation>код</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="140"/>
+        <location filename="../app/carom_main.cpp" line="40"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Запустить газ из N шаров на 5 с при виде 1280x720, вывести время кадров и самую долгую задержку интерфейса и выйти.</translation>
+    </message>
+    <message>
+        <location filename="../app/carom_main.cpp" line="46"/>
+        <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
+        <translation>Запустить газ примерно с 10 000 столкновений в секунду со взрывами и звуком на S секунд, каждые 10 с выводить частоту столкновений, частоту кадров, задержки GUI и память, затем выйти.</translation>
     </message>
 </context>
 </TS>
