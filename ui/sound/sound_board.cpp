@@ -31,12 +31,11 @@ const char* const kSources[] = {"qrc:/sounds/ball-ball.wav", "qrc:/sounds/ball-w
 // with no stream, which crashed in pa_stream_writable_size after a few minutes. A fresh,
 // looping QSoundEffect has neither.
 //
-// The sink is fed from this thread's event loop: a voice is stopped on the second tick of a
-// 150 ms timer, after at least 300 ms and two turns of the loop, so that a GUI thread stalled
-// for longer has still fed it the whole sound. A stop later than about a second would let the
-// loop come round again.
-constexpr int kVoiceTickMs = 150;
-constexpr int kVoiceTicks = 2;
+// The sink is fed from this thread's event loop: a voice is stopped after two 150 ms waits in
+// turn, at least 300 ms and two turns of the loop, so that a GUI thread stalled for longer has
+// still fed it the whole sound. A stop later than about a second would let the loop come round
+// again.
+constexpr int kVoiceWaitMs = 150;
 }  // namespace
 
 SoundBoard::SoundBoard(QObject* parent) : SoundBoard(Settings{}, parent) {}
@@ -128,16 +127,14 @@ bool SoundBoard::start(Sound sound, double speed, std::int64_t nowMs) {
   voice->setVolume(static_cast<float>(std::clamp(volume, 0.0, 1.0)));
   voice->play();
   sounding.push_back(voice);
-  auto* ticks = new QTimer(voice);
-  ticks->setInterval(kVoiceTickMs);
-  connect(ticks, &QTimer::timeout, voice, [this, voice, sound, ticks, count = 0]() mutable {
-    if (++count < kVoiceTicks) return;
-    ticks->stop();
-    voice->stop();
-    std::erase(voices_[sound], voice);
-    voice->deleteLater();
+  // Two waits of kVoiceWaitMs in turn: at least 300 ms, and two turns of the event loop.
+  QTimer::singleShot(kVoiceWaitMs, voice, [this, voice, sound] {
+    QTimer::singleShot(kVoiceWaitMs, voice, [this, voice, sound] {
+      voice->stop();
+      std::erase(voices_[sound], voice);
+      voice->deleteLater();
+    });
   });
-  ticks->start();
   lastStartMs_[sound] = nowMs;
   recentStartsMs_.push_back(nowMs);
   return true;
