@@ -1,96 +1,110 @@
 #include "language.h"
 #include "main_window.h"
-#include "scene_file.h"
 #include "scene_view.h"
+#include "window_arguments.h"
 #include "window_benchmarks.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QTimer>
 
 #include <cstdio>
+#include <vector>
+
+namespace {
+
+// The reverse-DNS name of the desktop entry, the icon and the AppStream metainfo.
+constexpr const char* kApplicationId = "io.github.carom_sim.Carom";
+
+void setIdentity() {
+  QCoreApplication::setOrganizationName("Carom");
+  QCoreApplication::setApplicationName("Carom");
+  QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION));
+}
+
+// Help, version or a refusal, as QCommandLineParser::process() printed them.
+int answerWithoutWindow(const carom::app::WindowArguments& arguments) {
+  if (!arguments.error.isEmpty()) {
+    std::fprintf(stderr, "carom: %s\n", qPrintable(arguments.error));
+    return arguments.errorExitCode;
+  }
+  if (arguments.version) {
+    std::printf("%s %s\n", qPrintable(QCoreApplication::applicationName()),
+                qPrintable(QCoreApplication::applicationVersion()));
+  } else {
+    std::fputs(qPrintable(carom::app::windowHelpText()), stdout);
+  }
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  QStringList commandLine;
+  for (int i = 0; i < argc; ++i) commandLine << QString::fromLocal8Bit(argv[i]);
+  const carom::app::WindowArguments early = carom::app::parseWindowArguments(commandLine);
+  // Answered without a window, so without a display (a terminal over ssh, a package build).
+  // A refusal waits for QApplication when Qt's own options are there, which it removes first.
+  if (early.version || early.help ||
+      (!early.error.isEmpty() && !carom::app::mentionsQtOption(commandLine))) {
+    QCoreApplication app(argc, argv);
+    setIdentity();
+    carom::ui::installTranslation(app, carom::ui::chosenLanguage(QCoreApplication::arguments()));
+    return answerWithoutWindow(early);
+  }
+
+  // --help-all lists the options of QApplication too, which only an instance of it adds; the
+  // offscreen platform needs no display for that.
+  std::vector<char*> qtArgv(argv, argv + argc);
+  char platformOption[] = "-platform";
+  char offscreenPlatform[] = "offscreen";
+  if (early.helpAll && !carom::app::mentionsQtOption(commandLine))
+    qtArgv.insert(qtArgv.begin() + 1, {platformOption, offscreenPlatform});
+  int qtArgc = static_cast<int>(qtArgv.size());
+  qtArgv.push_back(nullptr);
+
   carom::render::SceneView::setDefaultFormat();
-  QApplication app(argc, argv);
-  QApplication::setOrganizationName("Carom");
-  QApplication::setApplicationName("Carom");
-  QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION));
+  QApplication app(qtArgc, qtArgv.data());
+  setIdentity();
+  // Lets Wayland compositors and docks match the window to the installed desktop entry.
+  QGuiApplication::setDesktopFileName(kApplicationId);
+  QIcon icon;
+  for (int size : {16, 24, 32, 48, 64, 128, 256})
+    icon.addFile(QString(":/icons/%1x%1/%2.png").arg(size).arg(kApplicationId), QSize(size, size));
+  QApplication::setWindowIcon(icon);
   // Before any text is made: --lang, else View > Language's saved choice, else the system's.
   carom::ui::installTranslation(app, carom::ui::chosenLanguage(QApplication::arguments()));
 
-  QCommandLineParser parser;
-  parser.setApplicationDescription(QApplication::translate("main", "Collision physics sandbox"));
-  parser.addHelpOption();
-  parser.addVersionOption();
-  parser.addPositionalArgument("scene", QApplication::translate("main", "Scene file to open"),
-                               "[scene]");
-  const QCommandLineOption screenshot(
-      "screenshot", QApplication::translate("main", "Save a picture of the window and quit."),
-      QApplication::translate("main", "file.png"));
-  const QCommandLineOption runFor(
-      "run-for",
-      QApplication::translate("main", "Run the simulation this long before --screenshot."),
-      QApplication::translate("main", "seconds"), "0");
-  const QCommandLineOption language(
-      "lang", QApplication::translate("main", "Language of the program (en, ru, de)."),
-      QApplication::translate("main", "code"));
-  const QCommandLineOption benchRender(
-      "bench-render",
-      QApplication::translate("main",
-                              "Run a gas of N balls for 5 s with the view at 1280x720, print frame "
-                              "times and the longest GUI stall, and quit."),
-      "N");
-  const QCommandLineOption benchStress(
-      "bench-stress",
-      QApplication::translate("main",
-                              "Run a gas at about 10,000 collisions a second with explosions and "
-                              "sound for S seconds, print the collision rate, frame rate, GUI "
-                              "stalls and memory every 10 s, and quit."),
-      "S");
-  parser.addOptions({screenshot, runFor, language, benchRender, benchStress});
-  parser.process(app);
+  // Parsed again now that QApplication has taken out its own options.
+  const carom::app::WindowArguments arguments =
+      carom::app::parseWindowArguments(QApplication::arguments());
+  if (arguments.version || arguments.help || !arguments.error.isEmpty())
+    return answerWithoutWindow(arguments);
+  if (arguments.helpAll) {
+    QCommandLineParser parser;
+    carom::app::addWindowOptions(parser);
+    parser.process(app);  // prints the help with Qt's options and exits
+  }
 
-  if (parser.isSet(benchRender)) {
-    bool ok = false;
-    const int balls = parser.value(benchRender).toInt(&ok);
-    if (!ok || balls < 1 || balls > 1000000) {
-      std::fprintf(stderr, "carom: --bench-render takes a number of balls from 1 to 1000000\n");
-      return 2;
-    }
-    return carom::ui::benchmarkRender(balls);
-  }
-  if (parser.isSet(benchStress)) {
-    bool ok = false;
-    const int seconds = parser.value(benchStress).toInt(&ok);
-    if (!ok || seconds < 10 || seconds > 86400) {
-      std::fprintf(stderr, "carom: --bench-stress takes seconds from 10 to 86400\n");
-      return 2;
-    }
-    return carom::ui::benchmarkStress(seconds);
-  }
+  if (arguments.benchRenderBalls) return carom::ui::benchmarkRender(*arguments.benchRenderBalls);
+  if (arguments.benchStressSeconds)
+    return carom::ui::benchmarkStress(*arguments.benchStressSeconds);
 
   carom::ui::MainWindow window;
-  const carom::SceneLoadResult magicRoom = carom::loadSceneFile(":/scenes/magic-room.json");
-  window.openScene(*magicRoom.scene, {}, "magic-room");
+  window.openExample("magic-room", false);
   // A broken file gets a dialog with the loader's message; the magic room stays open.
-  if (!parser.positionalArguments().isEmpty())
-    window.openFile(parser.positionalArguments().first(), false);
+  if (!arguments.scenePath.isEmpty()) window.openFile(arguments.scenePath, false);
   window.show();
-  if (!parser.isSet(screenshot)) window.offerRecovery();
-  if (parser.isSet(screenshot)) {
+  if (!arguments.screenshotPath) window.offerRecovery();
+  if (arguments.screenshotPath) {
     // For the README's pictures: run a while in real time, then save what the window shows.
-    bool ok = false;
-    const double seconds = parser.value(runFor).toDouble(&ok);
-    if (!ok || seconds < 0 || seconds > 600) {
-      std::fprintf(stderr, "carom: --run-for takes seconds from 0 to 600\n");
-      return 2;
-    }
+    const QString path = *arguments.screenshotPath;
+    const double seconds = arguments.runForSeconds;
     window.setRunning(seconds > 0);
-    QTimer::singleShot(static_cast<int>(seconds * 1000) + 500, &window, [&] {
-      const bool saved = window.grab().save(parser.value(screenshot));
-      if (!saved)
-        std::fprintf(stderr, "carom: cannot save %s\n", qPrintable(parser.value(screenshot)));
+    QTimer::singleShot(static_cast<int>(seconds * 1000) + 500, &window, [&window, path] {
+      const bool saved = window.grab().save(path);
+      if (!saved) std::fprintf(stderr, "carom: cannot save %s\n", qPrintable(path));
       QApplication::exit(saved ? 0 : 1);
     });
   }

@@ -100,7 +100,7 @@ void TestEditor::addsEachKindByClicking() {
   QVERIFY(document().scene().cylinders[0].axis.normalized().isApprox(Vec3::UnitY()));
 
   chooseTool("toolAddPlane");
-  click(Vec3(-3, 0, 2));
+  click(Vec3(-3, 0, -2));  // behind the balls: the wall faces the camera, and so them
   QCOMPARE(document().scene().planes.size(), std::size_t{4});
   const carom::Plane& wall = document().scene().planes[3];
   QVERIFY(std::abs(wall.normal.y()) < 1e-9);  // standing up, facing the camera
@@ -364,7 +364,7 @@ void TestEditor::newAsksAboutUnsavedChanges() {
   DialogAnswerer discard(QMessageBox::Discard);
   QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
   QVERIFY(discard.answered());
-  QVERIFY(document().scene() == carom::Scene());
+  QVERIFY(document().scene() == SceneDocument::newScene());
   QVERIFY(!document().isModified());
   QVERIFY(window_->windowTitle().startsWith("untitled"));
 }

@@ -49,6 +49,9 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void toolbarRefusesBadValues_data();
   void toolbarRefusesBadValues();
   void toolbarShowsShortButKeepsExactValues();
+  void fieldsShowSixDigitsAndEditAllOfThem();
+  void fieldsLeftAsTheyWereKeepExactValues();
+  void refusalGoesOnceTheFieldIsValidAgain();
 
  private:
   QTreeView& tree() { return *window_->outlineDock()->tree(); }
@@ -396,7 +399,9 @@ void TestEditorDocks::turnsAPlaneByItsHandle() {
   QCOMPARE(document().scene().planes[1].point, Vec3(-4, 0, 0));  // turned, not moved
   QCOMPARE(document().undoStack()->count(), 1);
   QCOMPARE(document().undoStack()->text(0), QString("Turn Plane"));
-  // The dock shows the new normal.
+  // The dock shows the new normal: six digits to read, all of them once the field is entered.
+  QCOMPARE(field("normal.y")->text(), QString::number(normal.y(), 'g', 6));
+  QTest::mouseClick(field("normal.y"), Qt::LeftButton);
   QCOMPARE(field("normal.y")->text().toDouble(), normal.y());
   document().undoStack()->undo();
   QCOMPARE(document().scene().planes[1].normal, Vec3(1, 0, 0));
@@ -520,6 +525,97 @@ void TestEditorDocks::toolbarShowsShortButKeepsExactValues() {
   QTest::keyClick(step, Qt::Key_Return);
   QCOMPARE(document().scene().world.timeStep, 0.000123456789);
   QCOMPARE(step->text(), QString("0.000123457"));
+}
+
+// As the toolbar does: six significant digits to read; every digit while editing and in the
+// tooltip.
+void TestEditorDocks::fieldsShowSixDigitsAndEditAllOfThem() {
+  carom::Scene edited = document().scene();
+  edited.balls[0].position.x() = 0.1 + 0.2;  // 0.30000000000000004
+  edited.balls[0].mass = 2.0 / 3.0;
+  QVERIFY(document().apply(edited, "set").isEmpty());
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QLineEdit* x = field("position.x");
+  QLineEdit* mass = field("mass");
+  QCOMPARE(x->text(), QString("0.3"));
+  QCOMPARE(mass->text(), QString("0.666667"));
+  QCOMPARE(x->toolTip(), QString("Position x: 0.30000000000000004"));
+  QCOMPARE(mass->toolTip(), QString("Mass: 0.6666666666666666"));
+  QTest::mouseClick(mass, Qt::LeftButton);
+  QCOMPARE(mass->text(), QString("0.6666666666666666"));
+  QCOMPARE(x->text(), QString("0.3"));  // only the field being edited shows everything
+  // Leaving it shows six digits again; a value typed in is shown the same way.
+  QTest::mouseClick(x, Qt::LeftButton);
+  QCOMPARE(mass->text(), QString("0.666667"));
+  QCOMPARE(x->text(), QString("0.30000000000000004"));
+  type("ballRadius", "0.123456789");
+  QCOMPARE(document().scene().balls[0].radius, 0.123456789);
+  QCOMPARE(field("ballRadius")->text(), QString("0.123456789"));  // still being edited
+  QTest::mouseClick(mass, Qt::LeftButton);
+  QCOMPARE(field("ballRadius")->text(), QString("0.123457"));
+  QCOMPARE(field("ballRadius")->toolTip(), QString("Radius: 0.123456789"));
+  // Several objects that differ: empty, "mixed", and a tooltip with the name alone.
+  carom::Scene two = document().scene();
+  two.balls.push_back(two.balls[0]);
+  two.balls[1].position = Vec3(2, 1, 0);
+  QVERIFY(document().apply(two, "add").isEmpty());
+  document().setSelection({{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}});
+  QCOMPARE(x->text(), QString());
+  QCOMPARE(x->placeholderText(), QString("mixed"));
+  QCOMPARE(x->toolTip(), QString("Position x"));
+}
+
+// Entering a field and leaving it, by Enter or by the focus going elsewhere, never rounds the
+// stored value to what was shown.
+void TestEditorDocks::fieldsLeftAsTheyWereKeepExactValues() {
+  carom::Scene edited = document().scene();
+  edited.balls[0].velocity = Vec3(0.1, 1.0 / 3.0, 0);
+  QVERIFY(document().apply(edited, "set").isEmpty());
+  const int commands = document().undoStack()->count();
+  document().setSelection({{ObjectKind::Ball, 0}});
+  for (const char* name : {"velocity.x", "velocity.y"}) {
+    QTest::mouseClick(field(name), Qt::LeftButton);
+    QTest::keyClick(field(name), Qt::Key_Return);
+    QTest::keyClick(field(name), Qt::Key_Tab);
+  }
+  QCOMPARE(document().scene().balls[0].velocity, Vec3(0.1, 1.0 / 3.0, 0));
+  // The world's time step of 1/60, shown as 0.0166667.
+  document().setSelection({});
+  QLineEdit* step = field("timeStep");
+  QCOMPARE(step->text(), QString("0.0166667"));
+  QTest::mouseClick(step, Qt::LeftButton);
+  QCOMPARE(step->text(), QString("0.016666666666666666"));
+  QTest::mouseClick(field("worldRestitution"), Qt::LeftButton);  // left without Enter
+  QCOMPARE(step->text(), QString("0.0166667"));
+  QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
+  QCOMPARE(document().undoStack()->count(), commands);
+  // The full text typed back unchanged is the same value: still no command.
+  type("timeStep", "0.016666666666666666");
+  QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
+  QCOMPARE(document().undoStack()->count(), commands);
+}
+
+void TestEditorDocks::refusalGoesOnceTheFieldIsValidAgain() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  type("mass", "heavy");
+  QVERIFY(properties().message().contains("“heavy” is not a number"));
+  // The value it had, typed again: nothing to change, and nothing wrong any more.
+  type("mass", "1");
+  QVERIFY2(properties().message().isEmpty(), qPrintable(properties().message()));
+  QCOMPARE(document().undoStack()->count(), 0);
+  // A refusal by the validation, then the field left with its (valid) value as it is.
+  type("ballRadius", "-1");
+  QVERIFY(properties().message().contains("balls[0].radius: must be positive"));
+  QCOMPARE(field("ballRadius")->text(), QString("0.5"));
+  QTest::keyClick(field("ballRadius"), Qt::Key_Return);
+  QVERIFY2(properties().message().isEmpty(), qPrintable(properties().message()));
+  // And an undo, which changes the scene, takes a refusal away too.
+  type("ballRadius", "0.4");
+  type("ballRadius", "-1");
+  QVERIFY(!properties().message().isEmpty());
+  document().undoStack()->undo();
+  QVERIFY(properties().message().isEmpty());
+  QCOMPARE(field("ballRadius")->text(), QString("0.5"));
 }
 
 QTEST_MAIN(TestEditorDocks)

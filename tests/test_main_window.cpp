@@ -193,12 +193,12 @@ class TestMainWindow : public QObject {
     QVERIFY(examples);
     QCOMPARE(examples->actions().size(), 5);
     for (QAction* action : examples->actions()) {
-      if (action->text() != "newtons-cradle") continue;
+      if (action->text() != "Newton's cradle") continue;
       action->trigger();
       QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) {
         return s.positions.size() == 5 && s.time == 0;
       }));
-      QVERIFY(window_->windowTitle().contains("newtons-cradle"));
+      QVERIFY(window_->windowTitle().contains("Newton's cradle"));
     }
   }
 

@@ -134,6 +134,7 @@ class TestSceneView : public QObject {
   void cameraZoomAndPan();
   void renderSceneClipsToTheRoom();
   void renderSceneDefaultsColours();
+  void renderSceneHoldsEveryObject();
   void ballsShowTheirColours();
   void movingABallMovesItsColour();
   void nearerBallHidesFartherOne_data();
@@ -279,6 +280,40 @@ void TestSceneView::renderSceneClipsToTheRoom() {
   QVERIFY(carom::render::clipPlaneToBounds(Vec3(0, 50, 0), Vec3(0, 1, 0), b).empty());
   // A diagonal plane through the centre cuts a hexagon.
   QCOMPARE(carom::render::clipPlaneToBounds(b.center(), Vec3(1, 1, 1), b).size(), std::size_t{6});
+}
+
+// Planes and cylinders placed away from the balls, or beyond a wall, are drawn through their own
+// points (the box was the balls' and hid them).
+void TestSceneView::renderSceneHoldsEveryObject() {
+  carom::Scene scene;
+  carom::Plane floor;  // a wall of the box: y >= 0
+  scene.planes.push_back(floor);
+  carom::Ball ball;
+  ball.position = Vec3(0, 0.5, 0);
+  ball.radius = 0.5;
+  scene.balls.push_back(ball);
+  carom::Plane far;  // a wall facing the balls from 40 m behind them
+  far.point = Vec3(0, 0, -40);
+  far.normal = Vec3(0, 0, 1);
+  scene.planes.push_back(far);
+  carom::Plane below;  // a second floor under the first
+  below.point = Vec3(0, -7, 0);
+  scene.planes.push_back(below);
+  carom::Cylinder post;  // a post 25 m to the side
+  post.point = Vec3(-25, 0, 3);
+  post.radius = 0.3;
+  scene.cylinders.push_back(post);
+
+  const RenderScene render = makeRenderScene(scene);
+  const Bounds& b = render.bounds;
+  for (const Vec3& point : {far.point, below.point, post.point})
+    QVERIFY(((point - b.min).array() >= 0.0).all() && ((b.max - point).array() >= 0.0).all());
+  for (const auto& plane : render.planes) QVERIFY(plane.polygon.size() >= 3);
+  QVERIFY((render.cylinders[0].end - render.cylinders[0].start).norm() > 0.0);
+  // The floor still closes the box where nothing stands beyond it: without the second floor the
+  // bottom is the floor itself.
+  scene.planes.pop_back();
+  QCOMPARE(makeRenderScene(scene).bounds.min.y(), 0.0);
 }
 
 void TestSceneView::renderSceneDefaultsColours() {

@@ -2,9 +2,37 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>About</name>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="147"/>
+        <source>About Carom</source>
+        <translation>Über Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="150"/>
+        <source>Carom %1</source>
+        <translation>Carom %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="153"/>
+        <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
+        <translation>Sandbox und Szeneneditor für Stoßphysik: Kugeln, Ebenen und Zylinder unter Schwerkraft, exakt oder in Schritten gelöst.</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="158"/>
+        <source>Qt version %1</source>
+        <translation>Qt-Version %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <source>Released under the MIT licence.</source>
+        <translation>Veröffentlicht unter der MIT-Lizenz.</translation>
+    </message>
+</context>
+<context>
     <name>Language</name>
     <message>
-        <location filename="../ui/language.cpp" line="16"/>
+        <location filename="../ui/language.cpp" line="36"/>
         <source>System Default</source>
         <translation>Systemstandard</translation>
     </message>
@@ -63,78 +91,78 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="109"/>
         <source>Speed vs accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <location filename="../ui/accuracy_window.cpp" line="111"/>
         <source>Position error against exact (m)</source>
         <translation>Positionsfehler gegenüber exact (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <location filename="../ui/accuracy_window.cpp" line="111"/>
         <source>Relative energy drift</source>
         <translation>Relative Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="42"/>
+        <location filename="../ui/accuracy_window.cpp" line="112"/>
         <source>Deepest penetration (m)</source>
         <translation>Maximale Eindringtiefe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="42"/>
+        <location filename="../ui/accuracy_window.cpp" line="112"/>
         <source>Escaped balls</source>
         <translation>Entwichene Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="48"/>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Computing time (s)</source>
         <translation>Rechenzeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Run</source>
         <translation>Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Position error</source>
         <translation>Positionsfehler</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Energy drift</source>
         <translation>Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Penetration</source>
         <translation>Eindringtiefe</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Escaped</source>
         <translation>Entwichen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="79"/>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="81"/>
+        <location filename="../ui/accuracy_window.cpp" line="118"/>
         <source>Apply Selected Settings</source>
         <translation>Ausgewählte Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="88"/>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
         <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="95"/>
+        <location filename="../ui/accuracy_window.cpp" line="110"/>
         <source>Error:</source>
         <translation>Fehler:</translation>
     </message>
@@ -195,507 +223,934 @@
 <context>
     <name>carom::ui::EnergyPlot</name>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="35"/>
+        <location filename="../ui/energy_plot.cpp" line="63"/>
         <source>Kinetic</source>
         <translation>Kinetisch</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="36"/>
+        <location filename="../ui/energy_plot.cpp" line="64"/>
         <source>Potential</source>
         <translation>Potentiell</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="37"/>
+        <location filename="../ui/energy_plot.cpp" line="65"/>
         <source>Total</source>
         <translation>Gesamt</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="38"/>
+        <location filename="../ui/energy_plot.cpp" line="66"/>
         <source>Simulated time (s)</source>
         <translation>Simulierte Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="39"/>
+        <location filename="../ui/energy_plot.cpp" line="67"/>
         <source>Energy (J)</source>
         <translation>Energie (J)</translation>
     </message>
 </context>
 <context>
-    <name>carom::ui::MainWindow</name>
+    <name>carom::ui::HelpWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="80"/>
-        <source>Energy</source>
-        <translation>Energie</translation>
+        <location filename="../ui/help_dialogs.cpp" line="65"/>
+        <source>Keyboard and Mouse</source>
+        <translation>Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="151"/>
-        <location filename="../ui/main_window.cpp" line="157"/>
-        <source>&amp;Run</source>
-        <translation>&amp;Starten</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
-        <source>Run or pause the simulation (Space)</source>
-        <translation>Simulation starten oder anhalten (Leertaste)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="157"/>
-        <source>&amp;Pause</source>
-        <translation>&amp;Pause</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
-        <source>&amp;Step</source>
-        <translation>Sc&amp;hritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="163"/>
-        <source>Advance one time step (S)</source>
-        <translation>Einen Zeitschritt weiter (S)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
-        <source>R&amp;eset</source>
-        <translation>&amp;Zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="171"/>
-        <source>Back to the scene&apos;s initial state (R)</source>
-        <translation>Zurück zum Anfangszustand der Szene (R)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
-        <source>&amp;Full Screen</source>
-        <translation>&amp;Vollbild</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="183"/>
-        <source>&amp;Follow Ball</source>
-        <translation>Kugel &amp;folgen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <source>&amp;Explosions</source>
-        <translation>&amp;Explosionen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="196"/>
-        <source>&amp;Antialiasing</source>
-        <translation>&amp;Kantenglättung</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="208"/>
-        <source>&amp;Mute</source>
-        <translation>Stu&amp;mmschalten</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="213"/>
-        <source>Larger Time Step</source>
-        <translation>Größerer Zeitschritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="216"/>
-        <source>Smaller Time Step</source>
-        <translation>Kleinerer Zeitschritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="223"/>
+        <location filename="../ui/help_dialogs.cpp" line="79"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="230"/>
-        <location filename="../ui/main_window.cpp" line="231"/>
-        <source>Speed</source>
-        <translation>Geschwindigkeit</translation>
+        <location filename="../ui/help_dialogs.cpp" line="80"/>
+        <source>Run or pause the simulation</source>
+        <translation>Simulation starten oder anhalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="232"/>
-        <source>Simulated seconds per real second</source>
-        <translation>Simulierte Sekunden pro echter Sekunde</translation>
+        <location filename="../ui/help_dialogs.cpp" line="81"/>
+        <source>Advance one time step, paused</source>
+        <translation>Einen Zeitschritt weiter, dann angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="240"/>
-        <source>Gravity</source>
-        <translation>Schwerkraft</translation>
+        <location filename="../ui/help_dialogs.cpp" line="82"/>
+        <source>Back to the scene&apos;s initial state, paused</source>
+        <translation>Zurück zum Anfangszustand der Szene, angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
-        <source>Gravity %1</source>
-        <translation>Schwerkraft %1</translation>
+        <location filename="../ui/help_dialogs.cpp" line="83"/>
+        <source>Larger time step (×1.25)</source>
+        <translation>Größerer Zeitschritt (×1,25)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
-        <source>Gravity %1 (m/s²)</source>
-        <translation>Schwerkraft %1 (m/s²)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="84"/>
+        <source>Smaller time step (÷1.25)</source>
+        <translation>Kleinerer Zeitschritt (÷1,25)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="249"/>
-        <source>Change Gravity</source>
-        <translation>Schwerkraft ändern</translation>
+        <location filename="../ui/help_dialogs.cpp" line="85"/>
+        <source>Up, Down, wheel over a toolbar box</source>
+        <translation>Pfeil hoch, Pfeil runter, Mausrad über einem Feld der Werkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
-        <source>Step</source>
-        <translation>Schritt</translation>
+        <location filename="../ui/help_dialogs.cpp" line="85"/>
+        <source>Change its value by a step</source>
+        <translation>Seinen Wert um einen Schritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="256"/>
-        <source>Time step</source>
-        <translation>Zeitschritt</translation>
+        <location filename="../ui/help_dialogs.cpp" line="86"/>
+        <source>Typing in a toolbar box, then Enter</source>
+        <translation>In ein Feld der Werkzeugleiste tippen, dann Eingabe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="257"/>
-        <source>Time step in seconds (+ and - keys)</source>
-        <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="86"/>
+        <source>Set the value exactly</source>
+        <translation>Den Wert genau setzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="261"/>
-        <source>Change Time Step</source>
-        <translation>Zeitschritt ändern</translation>
+        <location filename="../ui/help_dialogs.cpp" line="87"/>
+        <source>Mute or unmute the collision sounds</source>
+        <translation>Stoßgeräusche stumm- oder wieder einschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="267"/>
-        <source>Exact (event-driven), swept, or discrete steps</source>
-        <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="88"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="269"/>
-        <source>Change Method</source>
-        <translation>Methode ändern</translation>
+        <location filename="../ui/help_dialogs.cpp" line="89"/>
+        <source>Left drag on empty space</source>
+        <translation>Ziehen mit der linken Taste auf freier Fläche</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="275"/>
-        <source>Integrator of the swept and discrete methods</source>
-        <translation>Integrator der Methoden swept und discrete</translation>
+        <location filename="../ui/help_dialogs.cpp" line="89"/>
+        <source>Orbit the camera round the scene</source>
+        <translation>Die Kamera um die Szene kreisen lassen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="277"/>
-        <source>Change Integrator</source>
-        <translation>Integrator ändern</translation>
+        <location filename="../ui/help_dialogs.cpp" line="90"/>
+        <source>Middle drag</source>
+        <translation>Ziehen mit der mittleren Taste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="284"/>
-        <source>&amp;File</source>
-        <translation>&amp;Datei</translation>
+        <location filename="../ui/help_dialogs.cpp" line="90"/>
+        <source>Pan the camera</source>
+        <translation>Die Kamera verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="286"/>
-        <source>Open &amp;Recent</source>
-        <translation>&amp;Zuletzt geöffnet</translation>
+        <location filename="../ui/help_dialogs.cpp" line="91"/>
+        <source>Mouse wheel</source>
+        <translation>Mausrad</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
-        <source>&amp;Edit</source>
-        <translation>&amp;Bearbeiten</translation>
+        <location filename="../ui/help_dialogs.cpp" line="91"/>
+        <source>Zoom</source>
+        <translation>Zoomen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="300"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Simulation</translation>
+        <location filename="../ui/help_dialogs.cpp" line="92"/>
+        <source>Arrow keys (in the view)</source>
+        <translation>Pfeiltasten (in der Ansicht)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
-        <source>Speed vs &amp;Accuracy…</source>
-        <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
+        <location filename="../ui/help_dialogs.cpp" line="92"/>
+        <source>Rotate the camera</source>
+        <translation>Die Kamera drehen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="408"/>
-        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
-        <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
+        <location filename="../ui/help_dialogs.cpp" line="93"/>
+        <source>Frame the whole scene</source>
+        <translation>Die ganze Szene ins Bild holen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
-        <source>Select</source>
-        <translation>Auswählen</translation>
+        <location filename="../ui/help_dialogs.cpp" line="94"/>
+        <source>Follow the selected ball, or the first one; again to stop</source>
+        <translation>Der ausgewählten Kugel folgen, sonst der ersten; noch einmal zum Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/help_dialogs.cpp" line="95"/>
+        <source>Full screen on or off</source>
+        <translation>Vollbild ein oder aus</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="96"/>
+        <source>Editing tools</source>
+        <translation>Bearbeitungswerkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="97"/>
+        <source>Select: click to pick, drag to move</source>
+        <translation>Auswählen: klicken zum Wählen, ziehen zum Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="98"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/help_dialogs.cpp" line="99"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/help_dialogs.cpp" line="100"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/help_dialogs.cpp" line="101"/>
+        <source>Click with an Add tool</source>
+        <translation>Klick mit einem Hinzufügen-Werkzeug</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="102"/>
+        <source>Place the object where the cursor points, on a surface or the ground</source>
+        <translation>Das Objekt dort platzieren, wohin der Zeiger weist, auf einer Fläche oder dem Boden</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="103"/>
+        <source>Selecting and moving</source>
+        <translation>Auswählen und Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <source>Click</source>
+        <translation>Klick</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <source>Select the object under the cursor; on nothing, clear the selection</source>
+        <translation>Das Objekt unter dem Zeiger auswählen; ins Leere: die Auswahl aufheben</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <source>Ctrl+click, Shift+click</source>
+        <translation>Strg+Klick, Umschalt+Klick</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <source>Add the object to the selection or take it out</source>
+        <translation>Das Objekt zur Auswahl hinzufügen oder herausnehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <source>Drag a selected object</source>
+        <translation>Ein ausgewähltes Objekt ziehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <source>Move the selection in the plane facing the camera</source>
+        <translation>Die Auswahl in der Ebene verschieben, die der Kamera zugewandt ist</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <source>X, Y or Z held while dragging</source>
+        <translation>X, Y oder Z beim Ziehen gedrückt</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <source>Move along that axis only</source>
+        <translation>Nur entlang dieser Achse verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
+        <source>Drag the tip of the arrow</source>
+        <translation>Die Pfeilspitze ziehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="109"/>
+        <source>Change a ball&apos;s velocity, a plane&apos;s normal or a cylinder&apos;s axis</source>
+        <translation>Die Geschwindigkeit einer Kugel, die Normale einer Ebene oder die Achse eines Zylinders ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <source>Alt+drag from a ball</source>
+        <translation>Alt+Ziehen von einer Kugel aus</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <source>Draw the ball&apos;s velocity, also for a ball at rest</source>
+        <translation>Die Geschwindigkeit der Kugel zeichnen, auch für eine ruhende Kugel</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
+        <source>Edit</source>
+        <translation>Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <source>Copy the selection (as scene text)</source>
+        <translation>Die Auswahl kopieren (als Szenentext)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>Paste objects, moved aside where they would overlap</source>
+        <translation>Objekte einfügen, zur Seite gerückt, wo sie sich überschneiden würden</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <source>Duplicate the selection</source>
+        <translation>Die Auswahl duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <source>Delete the selection</source>
+        <translation>Die Auswahl löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <source>Select every object</source>
+        <translation>Alle Objekte auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <source>Files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <source>New scene</source>
+        <translation>Neue Szene</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <source>Open a scene</source>
+        <translation>Eine Szene öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <source>Save under another name</source>
+        <translation>Unter anderem Namen speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <source>Dropping a file on the window</source>
+        <translation>Eine Datei auf das Fenster ziehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <source>Open it</source>
+        <translation>Sie öffnen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <source>Outline and Properties</source>
+        <translation>Übersicht und Eigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <source>Click, Ctrl+click, Shift+click</source>
+        <translation>Klick, Strg+Klick, Umschalt+Klick</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <source>Select objects, as in the view</source>
+        <translation>Objekte auswählen, wie in der Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <source>Double-click, F2 (in the outline)</source>
+        <translation>Doppelklick, F2 (in der Übersicht)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <source>Rename the object</source>
+        <translation>Das Objekt umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <source>Enter, or leaving a field</source>
+        <translation>Eingabe oder Verlassen eines Feldes</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <source>Apply the typed value</source>
+        <translation>Den eingegebenen Wert übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <source>Speed vs Accuracy</source>
+        <translation>Geschwindigkeit und Genauigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <source>Click a point</source>
+        <translation>Klick auf einen Punkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <source>Select its run in the table</source>
+        <translation>Seinen Lauf in der Tabelle auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <source>Double-click a run</source>
+        <translation>Doppelklick auf einen Lauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <source>Apply its settings to the scene</source>
+        <translation>Seine Einstellungen auf die Szene anwenden</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="70"/>
+        <source>Physics Notes</source>
+        <translation>Physik-Notizen</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="484"/>
+        <source>Energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="437"/>
+        <source>Run or pause the simulation (Space)</source>
+        <translation>Simulation starten oder anhalten (Leertaste)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="438"/>
+        <source>&amp;Step</source>
+        <translation>Sc&amp;hritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="439"/>
+        <source>Advance one time step (S)</source>
+        <translation>Einen Zeitschritt weiter (S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>R&amp;eset</source>
+        <translation>&amp;Zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="441"/>
+        <source>Back to the scene&apos;s initial state (R)</source>
+        <translation>Zurück zum Anfangszustand der Szene (R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="480"/>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Vollbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="479"/>
+        <source>&amp;Follow Ball</source>
+        <translation>Kugel &amp;folgen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="481"/>
+        <source>&amp;Explosions</source>
+        <translation>&amp;Explosionen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="482"/>
+        <source>&amp;Antialiasing</source>
+        <translation>&amp;Kantenglättung</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="483"/>
+        <source>&amp;Mute</source>
+        <translation>Stu&amp;mmschalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="442"/>
+        <source>Larger Time Step</source>
+        <translation>Größerer Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="443"/>
+        <source>Smaller Time Step</source>
+        <translation>Kleinerer Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="451"/>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="454"/>
+        <source>Simulated seconds per real second</source>
+        <translation>Simulierte Sekunden pro echter Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="456"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="459"/>
+        <source>Gravity %1</source>
+        <translation>Schwerkraft %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="460"/>
+        <source>Gravity %1 (m/s²)</source>
+        <translation>Schwerkraft %1 (m/s²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="265"/>
+        <source>Change Gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="462"/>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="463"/>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="464"/>
+        <source>Time step in seconds (+ and - keys)</source>
+        <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="276"/>
+        <source>Change Time Step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="465"/>
+        <source>Exact (event-driven), swept, or discrete steps</source>
+        <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="283"/>
+        <source>Change Method</source>
+        <translation>Methode ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <source>Integrator of the swept and discrete methods</source>
+        <translation>Integrator der Methoden swept und discrete</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="290"/>
+        <source>Change Integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="404"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="407"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="412"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="435"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="444"/>
+        <source>Speed vs &amp;Accuracy…</source>
+        <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="564"/>
+        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
+        <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Ball</source>
+        <translation>Kugel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Plane</source>
+        <translation>Ebene hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Cylinder</source>
+        <translation>Zylinder hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="634"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="660"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="569"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="574"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Carom-Szenen (*.carom *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="585"/>
+        <location filename="../ui/main_window.cpp" line="56"/>
+        <source>Magic room</source>
+        <translation>Magischer Raum</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="57"/>
+        <source>Galton board</source>
+        <translation>Galtonbrett</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="58"/>
+        <source>Gas box</source>
+        <translation>Gaskasten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="59"/>
+        <source>Inelastic pile</source>
+        <translation>Unelastischer Haufen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="60"/>
+        <source>Newton&apos;s cradle</source>
+        <translation>Newtons Wiege</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="393"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="395"/>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <source>World</source>
+        <translation>Welt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="488"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="489"/>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>&amp;Tastatur und Maus</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="490"/>
+        <source>&amp;Physics Notes</source>
+        <translation>&amp;Physik-Notizen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="491"/>
+        <source>&amp;About Carom</source>
+        <translation>Ü&amp;ber Carom</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main_window.cpp" line="701"/>
+        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
+        <translation>
+            <numerusform>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %n Kugel   E = %5 J (Drift %6)</numerusform>
+            <numerusform>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %n Kugeln   E = %5 J (Drift %6)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="748"/>
         <source>Cannot Open Scene</source>
         <translation>Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="771"/>
         <source>an unsaved scene</source>
         <translation>eine ungespeicherte Szene</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="609"/>
+        <location filename="../ui/main_window.cpp" line="773"/>
         <source>Recover Scene</source>
         <translation>Szene wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="610"/>
+        <location filename="../ui/main_window.cpp" line="774"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom wurde nicht richtig beendet, während %1 ungespeicherte Änderungen hatte. Die um %2 gesicherte Kopie kann wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="614"/>
+        <location filename="../ui/main_window.cpp" line="780"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="615"/>
+        <location filename="../ui/main_window.cpp" line="781"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="616"/>
+        <location filename="../ui/main_window.cpp" line="782"/>
         <source>Not &amp;Now</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="789"/>
         <source>Cannot Recover Scene</source>
         <translation>Szene kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="643"/>
-        <source>untitled</source>
-        <translation>unbenannt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="813"/>
         <source>Save Scene</source>
         <translation>Szene speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="647"/>
+        <location filename="../ui/main_window.cpp" line="814"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Carom-Szenen (*.carom);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="658"/>
+        <location filename="../ui/main_window.cpp" line="825"/>
         <source>Cannot Save Scene</source>
         <translation>Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="830"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="671"/>
+        <location filename="../ui/main_window.cpp" line="838"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="839"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="706"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="392"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="729"/>
+        <location filename="../ui/main_window.cpp" line="394"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="733"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="736"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="739"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="742"/>
+        <location filename="../ui/main_window.cpp" line="919"/>
         <source>Duplicate</source>
         <translation>Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="744"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="747"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="757"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="760"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="764"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="773"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="796"/>
+        <location filename="../ui/main_window.cpp" line="969"/>
         <source>clipboard</source>
         <translation>Zwischenablage</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="798"/>
+        <location filename="../ui/main_window.cpp" line="971"/>
         <source>Nothing to paste: %1</source>
         <translation>Nichts einzufügen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="801"/>
+        <location filename="../ui/main_window.cpp" line="974"/>
         <source>Paste</source>
         <translation>Einfügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="825"/>
+        <location filename="../ui/main_window.cpp" line="998"/>
         <source>Cannot place the objects: %1</source>
         <translation>Die Objekte können nicht platziert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="832"/>
+        <location filename="../ui/main_window.cpp" line="1005"/>
         <source>Delete</source>
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="844"/>
+        <location filename="../ui/main_window.cpp" line="1017"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="291"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="319"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="328"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="338"/>
-        <source>The language changes when Carom is next started.</source>
-        <translation>Die Sprache wird beim nächsten Start von Carom gewechselt.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="549"/>
-        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
-        <translation>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %5 Kugeln   E = %6 J (Drift %7)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="711"/>
         <source>   sound unavailable</source>
         <translation>   Ton nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="713"/>
         <source>   muted</source>
         <translation>   stummgeschaltet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="562"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — die Physik kommt nicht hinterher; läuft langsamer</translation>
     </message>
@@ -721,7 +1176,7 @@
 <context>
     <name>carom::ui::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="183"/>
         <source>Outline</source>
         <translation>Übersicht</translation>
     </message>
@@ -729,12 +1184,12 @@
 <context>
     <name>carom::ui::OutlineModel</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="97"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="107"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="131"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="141"/>
         <source>Rename</source>
         <translation>Umbenennen</translation>
     </message>
@@ -742,215 +1197,215 @@
 <context>
     <name>carom::ui::PropertiesDock</name>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="50"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="197"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="71"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="126"/>
         <source>(any length)</source>
         <translation>(beliebige Länge)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Rename</source>
         <translation>Umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="76"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="77"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
         <source>Choose a colour</source>
         <translation>Farbe wählen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Change Colour</source>
         <translation>Farbe ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="85"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="377"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Change Velocity</source>
         <translation>Geschwindigkeit ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
         <source>Radius</source>
         <translation>Radius</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
         <source>Change Radius</source>
         <translation>Radius ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
         <source>Mass</source>
         <translation>Masse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
         <source>Change Mass</source>
         <translation>Masse ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
         <source>Normal</source>
         <translation>Normale</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
         <source>Turn Plane</source>
         <translation>Ebene drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Axis</source>
         <translation>Achse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Turn Cylinder</source>
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
         <source>Change Restitution</source>
         <translation>Stoßzahl ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Integrator</source>
         <translation>Integrator</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="247"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="337"/>
         <source>World (nothing selected)</source>
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="333"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="364"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="61"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="431"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="468"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="255"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="345"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -958,7 +1413,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="258"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="348"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -966,17 +1421,18 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="267"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="357"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="391"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="379"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -984,60 +1440,65 @@
 <context>
     <name>carom::ui::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="55"/>
+        <location filename="../ui/editor/scene_document.cpp" line="56"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="70"/>
+        <source>floor</source>
+        <translation>Boden</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="23"/>
+        <location filename="../app/window_arguments.cpp" line="31"/>
         <source>Collision physics sandbox</source>
         <translation>Sandbox für Kollisionsphysik</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="26"/>
+        <location filename="../app/window_arguments.cpp" line="34"/>
         <source>Scene file to open</source>
         <translation>Zu öffnende Szenendatei</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="29"/>
+        <location filename="../app/window_arguments.cpp" line="37"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Ein Bild des Fensters speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="30"/>
+        <location filename="../app/window_arguments.cpp" line="38"/>
         <source>file.png</source>
         <translation>datei.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="33"/>
+        <location filename="../app/window_arguments.cpp" line="40"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="34"/>
+        <location filename="../app/window_arguments.cpp" line="41"/>
         <source>seconds</source>
         <translation>Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="36"/>
+        <location filename="../app/window_arguments.cpp" line="42"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Sprache des Programms (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="37"/>
+        <location filename="../app/window_arguments.cpp" line="43"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="40"/>
+        <location filename="../app/window_arguments.cpp" line="45"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Ein Gas aus N Kugeln 5 s lang mit der Ansicht in 1280x720 laufen lassen, Bildzeiten und die längste Blockade der Oberfläche ausgeben und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="46"/>
+        <location filename="../app/window_arguments.cpp" line="50"/>
         <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
         <translation>Ein Gas mit etwa 10.000 Stößen pro Sekunde S Sekunden lang mit Explosionen und Ton laufen lassen, alle 10 s Stoßrate, Bildrate, GUI-Blockaden und Speicher ausgeben und beenden.</translation>
     </message>

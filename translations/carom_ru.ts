@@ -2,9 +2,37 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru_RU">
 <context>
+    <name>About</name>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="147"/>
+        <source>About Carom</source>
+        <translation>О программе Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="150"/>
+        <source>Carom %1</source>
+        <translation>Carom %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="153"/>
+        <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
+        <translation>Песочница и редактор сцен для физики столкновений: шары, плоскости и цилиндры под действием гравитации, рассчитанные точно или по шагам.</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="158"/>
+        <source>Qt version %1</source>
+        <translation>Версия Qt %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <source>Released under the MIT licence.</source>
+        <translation>Распространяется по лицензии MIT.</translation>
+    </message>
+</context>
+<context>
     <name>Language</name>
     <message>
-        <location filename="../ui/language.cpp" line="16"/>
+        <location filename="../ui/language.cpp" line="36"/>
         <source>System Default</source>
         <translation>Как в системе</translation>
     </message>
@@ -63,78 +91,78 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="39"/>
+        <location filename="../ui/accuracy_window.cpp" line="109"/>
         <source>Speed vs accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <location filename="../ui/accuracy_window.cpp" line="111"/>
         <source>Position error against exact (m)</source>
         <translation>Ошибка положения относительно exact (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="41"/>
+        <location filename="../ui/accuracy_window.cpp" line="111"/>
         <source>Relative energy drift</source>
         <translation>Относительный дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="42"/>
+        <location filename="../ui/accuracy_window.cpp" line="112"/>
         <source>Deepest penetration (m)</source>
         <translation>Максимальная глубина проникновения (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="42"/>
+        <location filename="../ui/accuracy_window.cpp" line="112"/>
         <source>Escaped balls</source>
         <translation>Вылетевшие шары</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="48"/>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Computing time (s)</source>
         <translation>Время вычислений (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Run</source>
         <translation>Прогон</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="71"/>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
         <source>Position error</source>
         <translation>Ошибка положения</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Energy drift</source>
         <translation>Дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Penetration</source>
         <translation>Проникновение</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="72"/>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
         <source>Escaped</source>
         <translation>Вылетело</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="79"/>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="81"/>
+        <location filename="../ui/accuracy_window.cpp" line="118"/>
         <source>Apply Selected Settings</source>
         <translation>Применить выбранные настройки</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="88"/>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
         <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="95"/>
+        <location filename="../ui/accuracy_window.cpp" line="110"/>
         <source>Error:</source>
         <translation>Ошибка:</translation>
     </message>
@@ -195,507 +223,935 @@
 <context>
     <name>carom::ui::EnergyPlot</name>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="35"/>
+        <location filename="../ui/energy_plot.cpp" line="63"/>
         <source>Kinetic</source>
         <translation>Кинетическая</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="36"/>
+        <location filename="../ui/energy_plot.cpp" line="64"/>
         <source>Potential</source>
         <translation>Потенциальная</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="37"/>
+        <location filename="../ui/energy_plot.cpp" line="65"/>
         <source>Total</source>
         <translation>Полная</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="38"/>
+        <location filename="../ui/energy_plot.cpp" line="66"/>
         <source>Simulated time (s)</source>
         <translation>Модельное время (s)</translation>
     </message>
     <message>
-        <location filename="../ui/energy_plot.cpp" line="39"/>
+        <location filename="../ui/energy_plot.cpp" line="67"/>
         <source>Energy (J)</source>
         <translation>Энергия (J)</translation>
     </message>
 </context>
 <context>
-    <name>carom::ui::MainWindow</name>
+    <name>carom::ui::HelpWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="80"/>
-        <source>Energy</source>
-        <translation>Энергия</translation>
+        <location filename="../ui/help_dialogs.cpp" line="65"/>
+        <source>Keyboard and Mouse</source>
+        <translation>Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="151"/>
-        <location filename="../ui/main_window.cpp" line="157"/>
-        <source>&amp;Run</source>
-        <translation>&amp;Запуск</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="155"/>
-        <source>Run or pause the simulation (Space)</source>
-        <translation>Запустить или приостановить симуляцию (Пробел)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="157"/>
-        <source>&amp;Pause</source>
-        <translation>&amp;Пауза</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="161"/>
-        <source>&amp;Step</source>
-        <translation>&amp;Шаг</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="163"/>
-        <source>Advance one time step (S)</source>
-        <translation>Выполнить один шаг по времени (S)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="169"/>
-        <source>R&amp;eset</source>
-        <translation>&amp;Сброс</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="171"/>
-        <source>Back to the scene&apos;s initial state (R)</source>
-        <translation>Вернуть сцену в начальное состояние (R)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
-        <source>&amp;Full Screen</source>
-        <translation>&amp;Полноэкранный режим</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="183"/>
-        <source>&amp;Follow Ball</source>
-        <translation>&amp;Следить за шаром</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <source>&amp;Explosions</source>
-        <translation>&amp;Взрывы</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="196"/>
-        <source>&amp;Antialiasing</source>
-        <translation>&amp;Сглаживание</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="208"/>
-        <source>&amp;Mute</source>
-        <translation>Без &amp;звука</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="213"/>
-        <source>Larger Time Step</source>
-        <translation>Увеличить шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="216"/>
-        <source>Smaller Time Step</source>
-        <translation>Уменьшить шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="223"/>
+        <location filename="../ui/help_dialogs.cpp" line="79"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="230"/>
-        <location filename="../ui/main_window.cpp" line="231"/>
-        <source>Speed</source>
-        <translation>Скорость</translation>
+        <location filename="../ui/help_dialogs.cpp" line="80"/>
+        <source>Run or pause the simulation</source>
+        <translation>Запустить или приостановить симуляцию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="232"/>
-        <source>Simulated seconds per real second</source>
-        <translation>Секунд модели за секунду реального времени</translation>
+        <location filename="../ui/help_dialogs.cpp" line="81"/>
+        <source>Advance one time step, paused</source>
+        <translation>Выполнить один шаг по времени и остановиться</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="240"/>
-        <source>Gravity</source>
-        <translation>Гравитация</translation>
+        <location filename="../ui/help_dialogs.cpp" line="82"/>
+        <source>Back to the scene&apos;s initial state, paused</source>
+        <translation>Вернуть сцену в начальное состояние и остановиться</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="243"/>
-        <source>Gravity %1</source>
-        <translation>Гравитация %1</translation>
+        <location filename="../ui/help_dialogs.cpp" line="83"/>
+        <source>Larger time step (×1.25)</source>
+        <translation>Увеличить шаг по времени (×1,25)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="245"/>
-        <source>Gravity %1 (m/s²)</source>
-        <translation>Гравитация %1 (m/s²)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="84"/>
+        <source>Smaller time step (÷1.25)</source>
+        <translation>Уменьшить шаг по времени (÷1,25)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="249"/>
-        <source>Change Gravity</source>
-        <translation>Изменить гравитацию</translation>
+        <location filename="../ui/help_dialogs.cpp" line="85"/>
+        <source>Up, Down, wheel over a toolbar box</source>
+        <translation>Стрелки вверх и вниз, колесо мыши над полем панели инструментов</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="254"/>
-        <source>Step</source>
-        <translation>Шаг</translation>
+        <location filename="../ui/help_dialogs.cpp" line="85"/>
+        <source>Change its value by a step</source>
+        <translation>Изменить его значение на один шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="256"/>
-        <source>Time step</source>
-        <translation>Шаг по времени</translation>
+        <location filename="../ui/help_dialogs.cpp" line="86"/>
+        <source>Typing in a toolbar box, then Enter</source>
+        <translation>Ввод в поле панели инструментов, затем Enter</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="257"/>
-        <source>Time step in seconds (+ and - keys)</source>
-        <translation>Шаг по времени в секундах (клавиши + и -)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="86"/>
+        <source>Set the value exactly</source>
+        <translation>Задать значение точно</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="261"/>
-        <source>Change Time Step</source>
-        <translation>Изменить шаг по времени</translation>
+        <location filename="../ui/help_dialogs.cpp" line="87"/>
+        <source>Mute or unmute the collision sounds</source>
+        <translation>Выключить или включить звуки столкновений</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="267"/>
-        <source>Exact (event-driven), swept, or discrete steps</source>
-        <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
+        <location filename="../ui/help_dialogs.cpp" line="88"/>
+        <source>View</source>
+        <translation>Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="269"/>
-        <source>Change Method</source>
-        <translation>Изменить метод</translation>
+        <location filename="../ui/help_dialogs.cpp" line="89"/>
+        <source>Left drag on empty space</source>
+        <translation>Перетаскивание левой кнопкой по пустому месту</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="275"/>
-        <source>Integrator of the swept and discrete methods</source>
-        <translation>Интегратор для методов swept и discrete</translation>
+        <location filename="../ui/help_dialogs.cpp" line="89"/>
+        <source>Orbit the camera round the scene</source>
+        <translation>Вращать камеру вокруг сцены</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="277"/>
-        <source>Change Integrator</source>
-        <translation>Изменить интегратор</translation>
+        <location filename="../ui/help_dialogs.cpp" line="90"/>
+        <source>Middle drag</source>
+        <translation>Перетаскивание средней кнопкой</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="284"/>
-        <source>&amp;File</source>
-        <translation>&amp;Файл</translation>
+        <location filename="../ui/help_dialogs.cpp" line="90"/>
+        <source>Pan the camera</source>
+        <translation>Сдвигать камеру</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="286"/>
-        <source>Open &amp;Recent</source>
-        <translation>&amp;Недавние файлы</translation>
+        <location filename="../ui/help_dialogs.cpp" line="91"/>
+        <source>Mouse wheel</source>
+        <translation>Колесо мыши</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
-        <source>&amp;Edit</source>
-        <translation>&amp;Правка</translation>
+        <location filename="../ui/help_dialogs.cpp" line="91"/>
+        <source>Zoom</source>
+        <translation>Приближать и отдалять</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="300"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Симуляция</translation>
+        <location filename="../ui/help_dialogs.cpp" line="92"/>
+        <source>Arrow keys (in the view)</source>
+        <translation>Клавиши со стрелками (в окне сцены)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
-        <source>Speed vs &amp;Accuracy…</source>
-        <translation>Скорость и &amp;точность…</translation>
+        <location filename="../ui/help_dialogs.cpp" line="92"/>
+        <source>Rotate the camera</source>
+        <translation>Поворачивать камеру</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="408"/>
-        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
-        <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
+        <location filename="../ui/help_dialogs.cpp" line="93"/>
+        <source>Frame the whole scene</source>
+        <translation>Показать всю сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
-        <source>Select</source>
-        <translation>Выбор</translation>
+        <location filename="../ui/help_dialogs.cpp" line="94"/>
+        <source>Follow the selected ball, or the first one; again to stop</source>
+        <translation>Следить за выбранным шаром или за первым; повторное нажатие прекращает</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/help_dialogs.cpp" line="95"/>
+        <source>Full screen on or off</source>
+        <translation>Включить или выключить полноэкранный режим</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="96"/>
+        <source>Editing tools</source>
+        <translation>Инструменты правки</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="97"/>
+        <source>Select: click to pick, drag to move</source>
+        <translation>Выбор: щелчок выбирает, перетаскивание перемещает</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="98"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/help_dialogs.cpp" line="99"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/help_dialogs.cpp" line="100"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/help_dialogs.cpp" line="101"/>
+        <source>Click with an Add tool</source>
+        <translation>Щелчок инструментом добавления</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="102"/>
+        <source>Place the object where the cursor points, on a surface or the ground</source>
+        <translation>Поставить объект туда, куда указывает курсор: на поверхность или на пол</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="103"/>
+        <source>Selecting and moving</source>
+        <translation>Выбор и перемещение</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <source>Click</source>
+        <translation>Щелчок</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <source>Select the object under the cursor; on nothing, clear the selection</source>
+        <translation>Выбрать объект под курсором; щелчок по пустому месту снимает выбор</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <source>Ctrl+click, Shift+click</source>
+        <translation>Ctrl+щелчок, Shift+щелчок</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <source>Add the object to the selection or take it out</source>
+        <translation>Добавить объект к выбранным или исключить его</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <source>Drag a selected object</source>
+        <translation>Перетаскивание выбранного объекта</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <source>Move the selection in the plane facing the camera</source>
+        <translation>Перемещать выбранное в плоскости, обращённой к камере</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <source>X, Y or Z held while dragging</source>
+        <translation>X, Y или Z, удерживаемые при перетаскивании</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <source>Move along that axis only</source>
+        <translation>Перемещать только вдоль этой оси</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
+        <source>Drag the tip of the arrow</source>
+        <translation>Перетаскивание конца стрелки</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="109"/>
+        <source>Change a ball&apos;s velocity, a plane&apos;s normal or a cylinder&apos;s axis</source>
+        <translation>Изменить скорость шара, нормаль плоскости или ось цилиндра</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <source>Alt+drag from a ball</source>
+        <translation>Alt+перетаскивание от шара</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <source>Draw the ball&apos;s velocity, also for a ball at rest</source>
+        <translation>Задать скорость шара, в том числе покоящегося</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
+        <source>Edit</source>
+        <translation>Правка</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <source>Copy the selection (as scene text)</source>
+        <translation>Копировать выбранное (как текст сцены)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>Paste objects, moved aside where they would overlap</source>
+        <translation>Вставить объекты, сдвинув их, если они перекрываются</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <source>Duplicate the selection</source>
+        <translation>Дублировать выбранное</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <source>Delete the selection</source>
+        <translation>Удалить выбранное</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <source>Select every object</source>
+        <translation>Выбрать все объекты</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <source>Files</source>
+        <translation>Файлы</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <source>New scene</source>
+        <translation>Новая сцена</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <source>Open a scene</source>
+        <translation>Открыть сцену</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <source>Save under another name</source>
+        <translation>Сохранить под другим именем</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <source>Quit</source>
+        <translation>Выйти</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <source>Dropping a file on the window</source>
+        <translation>Перетаскивание файла в окно</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <source>Open it</source>
+        <translation>Открыть его</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <source>Outline and Properties</source>
+        <translation>Структура и свойства</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <source>Click, Ctrl+click, Shift+click</source>
+        <translation>Щелчок, Ctrl+щелчок, Shift+щелчок</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <source>Select objects, as in the view</source>
+        <translation>Выбирать объекты, как в окне сцены</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <source>Double-click, F2 (in the outline)</source>
+        <translation>Двойной щелчок, F2 (в структуре)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <source>Rename the object</source>
+        <translation>Переименовать объект</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <source>Enter, or leaving a field</source>
+        <translation>Enter или переход из поля</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <source>Apply the typed value</source>
+        <translation>Применить введённое значение</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <source>Speed vs Accuracy</source>
+        <translation>Скорость и точность</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <source>Click a point</source>
+        <translation>Щелчок по точке</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <source>Select its run in the table</source>
+        <translation>Выбрать её прогон в таблице</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <source>Double-click a run</source>
+        <translation>Двойной щелчок по прогону</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <source>Apply its settings to the scene</source>
+        <translation>Применить его настройки к сцене</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="70"/>
+        <source>Physics Notes</source>
+        <translation>Заметки по физике</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::MainWindow</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="484"/>
+        <source>Energy</source>
+        <translation>Энергия</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Запуск</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="437"/>
+        <source>Run or pause the simulation (Space)</source>
+        <translation>Запустить или приостановить симуляцию (Пробел)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="170"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Пауза</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="438"/>
+        <source>&amp;Step</source>
+        <translation>&amp;Шаг</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="439"/>
+        <source>Advance one time step (S)</source>
+        <translation>Выполнить один шаг по времени (S)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>R&amp;eset</source>
+        <translation>&amp;Сброс</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="441"/>
+        <source>Back to the scene&apos;s initial state (R)</source>
+        <translation>Вернуть сцену в начальное состояние (R)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="480"/>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Полноэкранный режим</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="479"/>
+        <source>&amp;Follow Ball</source>
+        <translation>&amp;Следить за шаром</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="481"/>
+        <source>&amp;Explosions</source>
+        <translation>&amp;Взрывы</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="482"/>
+        <source>&amp;Antialiasing</source>
+        <translation>&amp;Сглаживание</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="483"/>
+        <source>&amp;Mute</source>
+        <translation>Без &amp;звука</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="442"/>
+        <source>Larger Time Step</source>
+        <translation>Увеличить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="443"/>
+        <source>Smaller Time Step</source>
+        <translation>Уменьшить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="451"/>
+        <source>Simulation</source>
+        <translation>Симуляция</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="454"/>
+        <source>Simulated seconds per real second</source>
+        <translation>Секунд модели за секунду реального времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="456"/>
+        <source>Gravity</source>
+        <translation>Гравитация</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="459"/>
+        <source>Gravity %1</source>
+        <translation>Гравитация %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="460"/>
+        <source>Gravity %1 (m/s²)</source>
+        <translation>Гравитация %1 (m/s²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="265"/>
+        <source>Change Gravity</source>
+        <translation>Изменить гравитацию</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="462"/>
+        <source>Step</source>
+        <translation>Шаг</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="463"/>
+        <source>Time step</source>
+        <translation>Шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="464"/>
+        <source>Time step in seconds (+ and - keys)</source>
+        <translation>Шаг по времени в секундах (клавиши + и -)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="276"/>
+        <source>Change Time Step</source>
+        <translation>Изменить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="465"/>
+        <source>Exact (event-driven), swept, or discrete steps</source>
+        <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="283"/>
+        <source>Change Method</source>
+        <translation>Изменить метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <source>Integrator of the swept and discrete methods</source>
+        <translation>Интегратор для методов swept и discrete</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="290"/>
+        <source>Change Integrator</source>
+        <translation>Изменить интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="404"/>
+        <source>&amp;File</source>
+        <translation>&amp;Файл</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="407"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Недавние файлы</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="412"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="435"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Симуляция</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="444"/>
+        <source>Speed vs &amp;Accuracy…</source>
+        <translation>Скорость и &amp;точность…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="564"/>
+        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
+        <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Select</source>
+        <translation>Выбор</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Ball</source>
+        <translation>Добавить шар</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Plane</source>
+        <translation>Добавить плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>Add Cylinder</source>
+        <translation>Добавить цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="634"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="660"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="569"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="574"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="579"/>
+        <location filename="../ui/main_window.cpp" line="731"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="582"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="585"/>
+        <location filename="../ui/main_window.cpp" line="56"/>
+        <source>Magic room</source>
+        <translation>Волшебная комната</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="57"/>
+        <source>Galton board</source>
+        <translation>Доска Гальтона</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="58"/>
+        <source>Gas box</source>
+        <translation>Ящик с газом</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="59"/>
+        <source>Inelastic pile</source>
+        <translation>Неупругая куча</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="60"/>
+        <source>Newton&apos;s cradle</source>
+        <translation>Колыбель Ньютона</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="393"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Отменить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="395"/>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Повторить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="596"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Инструменты</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <source>World</source>
+        <translation>Мир</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="488"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Справка</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="489"/>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>&amp;Клавиатура и мышь</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="490"/>
+        <source>&amp;Physics Notes</source>
+        <translation>&amp;Заметки по физике</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="491"/>
+        <source>&amp;About Carom</source>
+        <translation>&amp;О программе Carom</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/main_window.cpp" line="701"/>
+        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
+        <translation>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шар   E = %5 J (дрейф %6)</numerusform>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шара   E = %5 J (дрейф %6)</numerusform>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шаров   E = %5 J (дрейф %6)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="748"/>
         <source>Cannot Open Scene</source>
         <translation>Не удаётся открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
+        <location filename="../ui/main_window.cpp" line="771"/>
         <source>an unsaved scene</source>
         <translation>несохранённая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="609"/>
+        <location filename="../ui/main_window.cpp" line="773"/>
         <source>Recover Scene</source>
         <translation>Восстановление сцены</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="610"/>
+        <location filename="../ui/main_window.cpp" line="774"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom завершился некорректно, когда в «%1» были несохранённые изменения. Копию, сохранённую %2, можно восстановить.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="614"/>
+        <location filename="../ui/main_window.cpp" line="780"/>
         <source>&amp;Recover</source>
         <translation>&amp;Восстановить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="615"/>
+        <location filename="../ui/main_window.cpp" line="781"/>
         <source>&amp;Discard</source>
         <translation>&amp;Отбросить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="616"/>
+        <location filename="../ui/main_window.cpp" line="782"/>
         <source>Not &amp;Now</source>
         <translation>Не &amp;сейчас</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="789"/>
         <source>Cannot Recover Scene</source>
         <translation>Не удаётся восстановить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="643"/>
-        <source>untitled</source>
-        <translation>без имени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="813"/>
         <source>Save Scene</source>
         <translation>Сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="647"/>
+        <location filename="../ui/main_window.cpp" line="814"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="658"/>
+        <location filename="../ui/main_window.cpp" line="825"/>
         <source>Cannot Save Scene</source>
         <translation>Не удаётся сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="830"/>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="671"/>
+        <location filename="../ui/main_window.cpp" line="838"/>
         <source>Unsaved Changes</source>
         <translation>Несохранённые изменения</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="839"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="706"/>
+        <location filename="../ui/main_window.cpp" line="873"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="392"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="729"/>
+        <location filename="../ui/main_window.cpp" line="394"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="733"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="736"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="739"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="742"/>
+        <location filename="../ui/main_window.cpp" line="919"/>
         <source>Duplicate</source>
         <translation>Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="744"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="747"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="757"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="760"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="764"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="773"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="796"/>
+        <location filename="../ui/main_window.cpp" line="969"/>
         <source>clipboard</source>
         <translation>буфер обмена</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="798"/>
+        <location filename="../ui/main_window.cpp" line="971"/>
         <source>Nothing to paste: %1</source>
         <translation>Нечего вставить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="801"/>
+        <location filename="../ui/main_window.cpp" line="974"/>
         <source>Paste</source>
         <translation>Вставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="825"/>
+        <location filename="../ui/main_window.cpp" line="998"/>
         <source>Cannot place the objects: %1</source>
         <translation>Не удаётся разместить объекты: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="832"/>
+        <location filename="../ui/main_window.cpp" line="1005"/>
         <source>Delete</source>
         <translation>Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="844"/>
+        <location filename="../ui/main_window.cpp" line="1017"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="291"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="307"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="319"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="328"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="338"/>
-        <source>The language changes when Carom is next started.</source>
-        <translation>Язык изменится при следующем запуске Carom.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="549"/>
-        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   E = %6 J (drift %7)</source>
-        <translation>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   шаров: %5   E = %6 J (дрейф %7)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="711"/>
         <source>   sound unavailable</source>
         <translation>   звук недоступен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="713"/>
         <source>   muted</source>
         <translation>   звук выключен</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="562"/>
+        <location filename="../ui/main_window.cpp" line="714"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — физика не успевает; замедленный ход</translation>
     </message>
@@ -721,7 +1177,7 @@
 <context>
     <name>carom::ui::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="183"/>
         <source>Outline</source>
         <translation>Структура</translation>
     </message>
@@ -729,12 +1185,12 @@
 <context>
     <name>carom::ui::OutlineModel</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="97"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="107"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="131"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="141"/>
         <source>Rename</source>
         <translation>Переименовать</translation>
     </message>
@@ -742,215 +1198,215 @@
 <context>
     <name>carom::ui::PropertiesDock</name>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="50"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="197"/>
         <source>Properties</source>
         <translation>Свойства</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="70"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="71"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="126"/>
         <source>(any length)</source>
         <translation>(любой длины)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Name</source>
         <translation>Имя</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="72"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
         <source>Rename</source>
         <translation>Переименовать</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="76"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="77"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
         <source>Choose a colour</source>
         <translation>Выбрать цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Colour</source>
         <translation>Цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="80"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
         <source>Change Colour</source>
         <translation>Изменить цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="85"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="289"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="377"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
         <source>Position</source>
         <translation>Положение</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="88"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Velocity</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="90"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
         <source>Change Velocity</source>
         <translation>Изменить скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
         <source>Radius</source>
         <translation>Радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="92"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="106"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
         <source>Change Radius</source>
         <translation>Изменить радиус</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
         <source>Mass</source>
         <translation>Масса</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="94"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
         <source>Change Mass</source>
         <translation>Изменить массу</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="96"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
         <source>Point</source>
         <translation>Точка</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
         <source>Normal</source>
         <translation>Нормаль</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="101"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
         <source>Turn Plane</source>
         <translation>Повернуть плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Axis</source>
         <translation>Ось</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="103"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
         <source>Turn Cylinder</source>
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="109"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="111"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="113"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
         <source>Change Restitution</source>
         <translation>Изменить коэффициент восстановления</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>От 0 до 1; пусто — коэффициент мира</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Method</source>
         <translation>Метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="115"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Integrator</source>
         <translation>Интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="118"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="247"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="337"/>
         <source>World (nothing selected)</source>
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="333"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="364"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="61"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="431"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="468"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="255"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="345"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -959,7 +1415,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="258"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="348"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -968,17 +1424,18 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="267"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="357"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="391"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="379"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>
@@ -986,60 +1443,65 @@
 <context>
     <name>carom::ui::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="55"/>
+        <location filename="../ui/editor/scene_document.cpp" line="56"/>
         <source>untitled</source>
         <translation>без имени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="70"/>
+        <source>floor</source>
+        <translation>пол</translation>
     </message>
 </context>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/carom_main.cpp" line="23"/>
+        <location filename="../app/window_arguments.cpp" line="31"/>
         <source>Collision physics sandbox</source>
         <translation>Песочница для физики столкновений</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="26"/>
+        <location filename="../app/window_arguments.cpp" line="34"/>
         <source>Scene file to open</source>
         <translation>Файл сцены для открытия</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="29"/>
+        <location filename="../app/window_arguments.cpp" line="37"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="30"/>
+        <location filename="../app/window_arguments.cpp" line="38"/>
         <source>file.png</source>
         <translation>файл.png</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="33"/>
+        <location filename="../app/window_arguments.cpp" line="40"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Сколько секунд выполнять симуляцию перед --screenshot.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="34"/>
+        <location filename="../app/window_arguments.cpp" line="41"/>
         <source>seconds</source>
         <translation>секунды</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="36"/>
+        <location filename="../app/window_arguments.cpp" line="42"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Язык программы (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="37"/>
+        <location filename="../app/window_arguments.cpp" line="43"/>
         <source>code</source>
         <translation>код</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="40"/>
+        <location filename="../app/window_arguments.cpp" line="45"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Запустить газ из N шаров на 5 с при виде 1280x720, вывести время кадров и самую долгую задержку интерфейса и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/carom_main.cpp" line="46"/>
+        <location filename="../app/window_arguments.cpp" line="50"/>
         <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
         <translation>Запустить газ примерно с 10 000 столкновений в секунду со взрывами и звуком на S секунд, каждые 10 с выводить частоту столкновений, частоту кадров, задержки GUI и память, затем выйти.</translation>
     </message>

@@ -36,16 +36,14 @@ QString caseName(const StudyCase& c) {
 
 AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
     : QDialog(parent), scene_(scene), calls_(new CallQueue(this)) {
-  setWindowTitle(tr("Speed vs accuracy"));
+  metricLabel_ = new QLabel;
   metric_ = new QComboBox;
-  metric_->addItems({tr("Position error against exact (m)"), tr("Relative energy drift"),
-                     tr("Deepest penetration (m)"), tr("Escaped balls")});
+  metric_->addItems(QStringList(4));  // named by retranslate()
   connect(metric_, &QComboBox::currentIndexChanged, this, &AccuracyWindow::replot);
 
   chart_ = new QChart;
   chart_->legend()->setAlignment(Qt::AlignBottom);
   timeAxis_ = new QLogValueAxis;
-  timeAxis_->setTitleText(tr("Computing time (s)"));
   timeAxis_->setLabelFormat("%.0e");
   errorAxis_ = new QLogValueAxis;
   errorAxis_->setLabelFormat("%.0e");
@@ -68,31 +66,27 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   chartView->setMinimumSize(520, 360);
 
   table_ = new QTableWidget(0, 6);
-  table_->setHorizontalHeaderLabels({tr("Run"), tr("Computing time (s)"), tr("Position error"),
-                                     tr("Energy drift"), tr("Penetration"), tr("Escaped")});
   table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
 
   progress_ = new QProgressBar;
-  cancelButton_ = new QPushButton(tr("Cancel"));
+  cancelButton_ = new QPushButton;
   connect(cancelButton_, &QPushButton::clicked, this, &AccuracyWindow::cancel);
-  applyButton_ = new QPushButton(tr("Apply Selected Settings"));
+  applyButton_ = new QPushButton;
   applyButton_->setEnabled(false);
   connect(applyButton_, &QPushButton::clicked, this, &AccuracyWindow::applySelected);
   connect(table_, &QTableWidget::itemSelectionChanged, this,
           [this] { applyButton_->setEnabled(!table_->selectedItems().isEmpty()); });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this] { applySelected(); });
-  note_ =
-      new QLabel(tr("Each point is one run of the current scene; lower and further left is "
-                    "better. Choose a run to use its settings."));
+  note_ = new QLabel;
   note_->setWordWrap(true);
-  replot();
+  retranslate();
   resize(900, 760);
 
   auto* top = new QHBoxLayout;
-  top->addWidget(new QLabel(tr("Error:")));
+  top->addWidget(metricLabel_);
   top->addWidget(metric_, 1);
   auto* bottom = new QHBoxLayout;
   bottom->addWidget(progress_, 1);
@@ -104,6 +98,28 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   layout->addWidget(table_, 1);
   layout->addWidget(note_);
   layout->addLayout(bottom);
+}
+
+void AccuracyWindow::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDialog::changeEvent(event);
+}
+
+void AccuracyWindow::retranslate() {
+  setWindowTitle(tr("Speed vs accuracy"));
+  metricLabel_->setText(tr("Error:"));
+  const QStringList metrics{tr("Position error against exact (m)"), tr("Relative energy drift"),
+                            tr("Deepest penetration (m)"), tr("Escaped balls")};
+  for (int i = 0; i < metrics.size(); ++i) metric_->setItemText(i, metrics[i]);
+  timeAxis_->setTitleText(tr("Computing time (s)"));
+  table_->setHorizontalHeaderLabels({tr("Run"), tr("Computing time (s)"), tr("Position error"),
+                                     tr("Energy drift"), tr("Penetration"), tr("Escaped")});
+  cancelButton_->setText(tr("Cancel"));
+  applyButton_->setText(tr("Apply Selected Settings"));
+  note_->setText(
+      tr("Each point is one run of the current scene; lower and further left is better. Choose "
+         "a run to use its settings."));
+  replot();  // the error axis is named after the metric
 }
 
 AccuracyWindow::~AccuracyWindow() {

@@ -41,7 +41,11 @@ class AccuracyWindow : public QDialog {
   void settingsChosen(carom::Method method, carom::Integrator integrator, double timeStep);
   void studyFinished();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslate();
   void addResult(const StudyResult& result);
   void finish();
   void replot();
@@ -57,6 +61,7 @@ class AccuracyWindow : public QDialog {
   std::thread thread_;
   CallQueue* calls_;  // the study thread's results, run on the GUI thread
   bool running_ = false;
+  QLabel* metricLabel_;
   QComboBox* metric_;
   QChart* chart_;
   QLogValueAxis* timeAxis_;

@@ -32,11 +32,7 @@ EnergyPlot::EnergyPlot(QWidget* parent)
       total_(new QLineSeries),
       timeAxis_(new QValueAxis),
       energyAxis_(new QValueAxis) {
-  kinetic_->setName(tr("Kinetic"));
-  potential_->setName(tr("Potential"));
-  total_->setName(tr("Total"));
-  timeAxis_->setTitleText(tr("Simulated time (s)"));
-  energyAxis_->setTitleText(tr("Energy (J)"));
+  retranslate();
   chart_->addAxis(timeAxis_, Qt::AlignBottom);
   chart_->addAxis(energyAxis_, Qt::AlignLeft);
   for (QLineSeries* series : {kinetic_, potential_, total_}) {
@@ -56,6 +52,19 @@ EnergyPlot::EnergyPlot(QWidget* parent)
   redrawTimer_.setInterval(kRedrawMilliseconds);
   connect(&redrawTimer_, &QTimer::timeout, this, &EnergyPlot::drawPending);
   clear();
+}
+
+void EnergyPlot::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+void EnergyPlot::retranslate() {
+  kinetic_->setName(tr("Kinetic"));
+  potential_->setName(tr("Potential"));
+  total_->setName(tr("Total"));
+  timeAxis_->setTitleText(tr("Simulated time (s)"));
+  energyAxis_->setTitleText(tr("Energy (J)"));
 }
 
 void EnergyPlot::clear() {

@@ -25,7 +25,11 @@ class EnergyPlot : public QWidget {
   // Points drawn so far; added ones are drawn within a tenth of a second.
   int pointCount() const;
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslate();
   void drawPending();
 
   QChart* chart_;

@@ -1,6 +1,7 @@
 #include "language.h"
 
 #include <QCoreApplication>
+#include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
 #include <QTranslator>
@@ -9,6 +10,25 @@ namespace carom::ui {
 namespace {
 
 constexpr const char* kSettingsKey = "language";
+// The translators installed last, found again by name to be replaced.
+constexpr const char* kProgramTranslator = "caromTranslator";
+constexpr const char* kQtTranslator = "qtTranslator";
+
+void removeTranslator(QCoreApplication& app, const char* name) {
+  if (auto* old = app.findChild<QTranslator*>(name, Qt::FindDirectChildrenOnly)) {
+    QCoreApplication::removeTranslator(old);
+    delete old;
+  }
+}
+
+QTranslator* loadTranslator(QCoreApplication& app, const char* name, const QLocale& locale,
+                            const QString& file, const QString& folder) {
+  auto* translator = new QTranslator(&app);
+  translator->setObjectName(name);
+  if (translator->load(locale, file, "_", folder)) return translator;
+  delete translator;
+  return nullptr;
+}
 
 }  // namespace
 
@@ -32,14 +52,23 @@ void saveLanguageChoice(const QString& code) {
 }
 
 bool installTranslation(QCoreApplication& app, const QString& code) {
-  auto* translator = new QTranslator(&app);
-  const QLocale locale = code.isEmpty() ? QLocale() : QLocale(code);
-  if (!translator->load(locale, "carom", "_", ":/i18n")) {
-    delete translator;
-    return false;
-  }
-  app.installTranslator(translator);
-  return true;
+  removeTranslator(app, kProgramTranslator);
+  removeTranslator(app, kQtTranslator);
+  const QLocale wanted = code.isEmpty() ? QLocale::system() : QLocale(code);
+  QTranslator* program = loadTranslator(app, kProgramTranslator, wanted, "carom", ":/i18n");
+  // Without a translation the program speaks English, and its dates and Qt's buttons with it;
+  // an English locale keeps its own country's formats.
+  const QLocale spoken =
+      program || wanted.language() == QLocale::English ? wanted : QLocale(QLocale::English);
+  // English has a file too, for its plural forms alone.
+  if (!program)
+    program = loadTranslator(app, kProgramTranslator, QLocale(QLocale::English), "carom", ":/i18n");
+  QLocale::setDefault(spoken);
+  if (QTranslator* qt = loadTranslator(app, kQtTranslator, spoken, "qtbase",
+                                       QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    QCoreApplication::installTranslator(qt);
+  if (program) QCoreApplication::installTranslator(program);
+  return spoken.language() == wanted.language();
 }
 
 }  // namespace carom::ui

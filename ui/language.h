@@ -1,6 +1,7 @@
 #pragma once
 // Which language the program speaks: --lang wins, then the choice saved from View > Language,
-// else the system locale. Translations are built into the program under :/i18n.
+// else the system locale. Translations are built into the program under :/i18n; Qt's own
+// (dialog buttons, file and colour dialogs) come from Qt's translations folder.
 
 #include <QString>
 #include <QStringList>
@@ -21,8 +22,10 @@ QVector<Language> availableLanguages();
 QString chosenLanguage(const QStringList& arguments);
 void saveLanguageChoice(const QString& code);
 
-// Installs the program's translation for `code` (empty: the system locale). Returns false when
-// there is none for it, in which case the program speaks English.
+// Speaks `code` (empty: the system locale) from now on: replaces the program's and Qt's
+// translations installed before, which sends every widget a LanguageChange, and makes the
+// language's locale the default one, so dates and numbers follow it. Returns false when the
+// program has no translation for it, in which case it speaks English with English dates.
 bool installTranslation(QCoreApplication& app, const QString& code);
 
 }  // namespace carom::ui

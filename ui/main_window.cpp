@@ -3,6 +3,7 @@
 #include "accuracy_window.h"
 #include "editor_tools.h"
 #include "energy_plot.h"
+#include "help_dialogs.h"
 #include "language.h"
 #include "number_box.h"
 #include "outline_dock.h"
@@ -38,6 +39,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoStack>
 #include <QUndoView>
 #include <QUrl>
 
@@ -46,6 +48,16 @@ namespace carom::ui {
 using render::SceneView;
 
 namespace {
+
+// The bundled scenes the Examples menu offers, by title, in its order.
+constexpr struct {
+  const char* file;  // in :/scenes, without ".json"
+  const char* title;
+} kExamples[] = {{"magic-room", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Magic room")},
+                 {"galton-board", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Galton board")},
+                 {"gas-box", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Gas box")},
+                 {"inelastic-pile", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Inelastic pile")},
+                 {"newtons-cradle", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Newton's cradle")}};
 
 // For each ball of `edited`, the index of the same ball in `shown` when the edit left it
 // alone. Every edit keeps the order of the balls it does not touch and either changes balls in
@@ -77,14 +89,15 @@ MainWindow::MainWindow(QWidget* parent)
   view_ = new SceneView;
   setCentralWidget(view_);
   energyPlot_ = new EnergyPlot;
-  auto* energyDock = new QDockWidget(tr("Energy"), this);
-  energyDock->setObjectName("energyDock");
-  energyDock->setWidget(energyPlot_);
+  energyDock_ = new QDockWidget(this);
+  energyDock_->setObjectName("energyDock");
+  energyDock_->setWidget(energyPlot_);
   // Below the view, where the plot's time axis has room.
-  addDockWidget(Qt::BottomDockWidgetArea, energyDock);
+  addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
   energyPlot_->setMinimumHeight(190);
   status_ = new QLabel;
-  statusBar()->addWidget(status_, 1);
+  // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
+  statusBar()->addPermanentWidget(status_);
   sound_ = new SoundBoard(this);
   tools_ = new EditorTools(document_, view_, this);
   connect(tools_, &EditorTools::refused, this, &MainWindow::showMessage);
@@ -103,7 +116,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildToolBar();
   buildMenus();
   connect(document_, &SceneDocument::sceneChanged, this, &MainWindow::showDocumentScene);
-  connect(document_, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
+  connect(document_, &SceneDocument::displayNameChanged, this, &MainWindow::updateTitle);
   connect(document_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(document_, &SceneDocument::selectionChanged, this, [this] {
     if (followAction_->isChecked()) view_->setFollowedBall(followTarget());
@@ -124,6 +137,7 @@ MainWindow::MainWindow(QWidget* parent)
   statusTimer_.setSingleShot(true);
   statusTimer_.setInterval(kStatusRefreshMilliseconds);
   connect(&statusTimer_, &QTimer::timeout, this, &MainWindow::showStatus);
+  retranslate();
   resize(1280, 800);
 }
 
@@ -148,52 +162,49 @@ QString MainWindow::statusText() const {
 }
 
 void MainWindow::buildActions() {
-  playAction_ = new QAction(tr("&Run"), this);
+  playAction_ = new QAction(this);
   playAction_->setObjectName("run");
   playAction_->setCheckable(true);
   playAction_->setShortcut(Qt::Key_Space);
-  playAction_->setToolTip(tr("Run or pause the simulation (Space)"));
   connect(playAction_, &QAction::toggled, this, [this](bool on) {
     playAction_->setText(on ? tr("&Pause") : tr("&Run"));
     simulation_->setRunning(on);
   });
 
-  stepAction_ = new QAction(tr("&Step"), this);
+  stepAction_ = new QAction(this);
   stepAction_->setShortcut(Qt::Key_S);
-  stepAction_->setToolTip(tr("Advance one time step (S)"));
   connect(stepAction_, &QAction::triggered, this, [this] {
     playAction_->setChecked(false);
     simulation_->stepOnce();
   });
 
-  resetAction_ = new QAction(tr("R&eset"), this);
+  resetAction_ = new QAction(this);
   resetAction_->setShortcut(Qt::Key_R);
-  resetAction_->setToolTip(tr("Back to the scene's initial state (R)"));
   connect(resetAction_, &QAction::triggered, this, [this] {
     playAction_->setChecked(false);
     simulation_->reset();
   });
 
-  fullScreenAction_ = new QAction(tr("&Full Screen"), this);
+  fullScreenAction_ = new QAction(this);
   fullScreenAction_->setShortcuts({Qt::Key_F11, Qt::Key_F1});
   fullScreenAction_->setCheckable(true);
   connect(fullScreenAction_, &QAction::toggled, this,
           [this](bool on) { on ? showFullScreen() : showNormal(); });
 
-  followAction_ = new QAction(tr("&Follow Ball"), this);
+  followAction_ = new QAction(this);
   followAction_->setShortcut(Qt::Key_F2);
   followAction_->setCheckable(true);
   connect(followAction_, &QAction::toggled, this,
           [this](bool on) { view_->setFollowedBall(on ? followTarget() : -1); });
 
-  explosionsAction_ = new QAction(tr("&Explosions"), this);
+  explosionsAction_ = new QAction(this);
   explosionsAction_->setCheckable(true);
   explosionsAction_->setChecked(true);
   connect(explosionsAction_, &QAction::toggled, this,
           [this](bool on) { view_->setExplosionsEnabled(on); });
 
   // Remembered once chosen; until then the view decides by its renderer.
-  antialiasingAction_ = new QAction(tr("&Antialiasing"), this);
+  antialiasingAction_ = new QAction(this);
   antialiasingAction_->setCheckable(true);
   QSettings settings;
   if (settings.contains(kAntialiasingKey))
@@ -205,146 +216,291 @@ void MainWindow::buildActions() {
   });
   connect(view_, &SceneView::antialiasingChanged, antialiasingAction_, &QAction::setChecked);
 
-  muteAction_ = new QAction(tr("&Mute"), this);
+  muteAction_ = new QAction(this);
   muteAction_->setShortcut(Qt::Key_F3);
   muteAction_->setCheckable(true);
   connect(muteAction_, &QAction::toggled, this, [this](bool on) { sound_->setMuted(on); });
 
-  auto* faster = new QAction(tr("Larger Time Step"), this);
-  faster->setShortcuts({Qt::Key_Plus, Qt::Key_Equal});
-  connect(faster, &QAction::triggered, this, [this] { changeTimeStep(1.25); });
-  auto* slower = new QAction(tr("Smaller Time Step"), this);
-  slower->setShortcut(Qt::Key_Minus);
-  connect(slower, &QAction::triggered, this, [this] { changeTimeStep(1.0 / 1.25); });
-  addActions({faster, slower});
+  largerStepAction_ = new QAction(this);
+  largerStepAction_->setShortcuts({Qt::Key_Plus, Qt::Key_Equal});
+  connect(largerStepAction_, &QAction::triggered, this, [this] { changeTimeStep(1.25); });
+  smallerStepAction_ = new QAction(this);
+  smallerStepAction_->setShortcut(Qt::Key_Minus);
+  connect(smallerStepAction_, &QAction::triggered, this, [this] { changeTimeStep(1.0 / 1.25); });
+  addActions({largerStepAction_, smallerStepAction_});
 }
 
 void MainWindow::buildToolBar() {
-  QToolBar* bar = addToolBar(tr("Simulation"));
-  bar->setObjectName("simulation");
-  bar->addAction(playAction_);
-  bar->addAction(stepAction_);
-  bar->addAction(resetAction_);
-  bar->addSeparator();
+  // Two rows, so that every control stays visible at 1280 pixels in the longer languages: the
+  // tools and the run controls, then the world's settings.
+  simulationBar_ = addToolBar(QString());
+  simulationBar_->setObjectName("simulation");
+  simulationBar_->addAction(playAction_);
+  simulationBar_->addAction(stepAction_);
+  simulationBar_->addAction(resetAction_);
+  simulationBar_->addSeparator();
 
-  bar->addWidget(new QLabel(tr("Speed")));
-  speed_ = new NumberBox(tr("Speed"), 0.01, 100.0, 0.25);
-  speed_->setToolTip(tr("Simulated seconds per real second"));
+  speedLabel_ = new QLabel;
+  simulationBar_->addWidget(speedLabel_);
+  speed_ = new NumberBox(QString(), 0.01, 100.0, 0.25);  // named in retranslate()
   speed_->setObjectName("speed");
   speed_->setValue(1.0);
   connect(speed_, &NumberBox::refused, this, &MainWindow::showMessage);
   connect(speed_, &QDoubleSpinBox::valueChanged, this,
           [this](double value) { simulation_->setSpeed(value); });
-  bar->addWidget(speed_);
+  simulationBar_->addWidget(speed_);
 
-  bar->addWidget(new QLabel(tr("Gravity")));
+  addToolBarBreak();
+  worldBar_ = addToolBar(QString());
+  worldBar_->setObjectName("world");
+  gravityLabel_ = new QLabel;
+  worldBar_->addWidget(gravityLabel_);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    gravity_[a] = new NumberBox(tr("Gravity %1").arg(axes[a]), -tolerance::kMaxMagnitude,
-                                tolerance::kMaxMagnitude, 0.5);
-    gravity_[a]->setToolTip(tr("Gravity %1 (m/s²)").arg(axes[a]));
+    gravity_[a] =
+        new NumberBox(QString(), -tolerance::kMaxMagnitude, tolerance::kMaxMagnitude, 0.5);
     gravity_[a]->setObjectName(QString("gravity") + QChar(axes[a][0]).toUpper());
     connect(gravity_[a], &NumberBox::refused, this, &MainWindow::showMessage);
     connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, [this, a](double value) {
       editWorld(tr("Change Gravity"), [a, value](World& world) { world.gravity[a] = value; });
     });
-    bar->addWidget(gravity_[a]);
+    worldBar_->addWidget(gravity_[a]);
   }
 
-  bar->addWidget(new QLabel(tr("Step")));
-  timeStep_ =
-      new NumberBox(tr("Time step"), tolerance::kMinTimeStep, tolerance::kMaxTimeStep, 0.001);
-  timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
+  timeStepLabel_ = new QLabel;
+  worldBar_->addWidget(timeStepLabel_);
+  timeStep_ = new NumberBox(QString(), tolerance::kMinTimeStep, tolerance::kMaxTimeStep, 0.001);
   timeStep_->setObjectName("timeStep");
   connect(timeStep_, &NumberBox::refused, this, &MainWindow::showMessage);
   connect(timeStep_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
     editWorld(tr("Change Time Step"), [value](World& world) { world.timeStep = value; });
   });
-  bar->addWidget(timeStep_);
+  worldBar_->addWidget(timeStep_);
 
   method_ = new QComboBox;
   for (std::string_view name : methodNames()) method_->addItem(QString::fromUtf8(name));
-  method_->setToolTip(tr("Exact (event-driven), swept, or discrete steps"));
   connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
     editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
   });
-  bar->addWidget(method_);
+  worldBar_->addWidget(method_);
 
   integrator_ = new QComboBox;
   for (std::string_view name : integratorNames()) integrator_->addItem(QString::fromUtf8(name));
-  integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
   connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
     editWorld(tr("Change Integrator"),
               [index](World& world) { world.integrator = Integrator(index); });
   });
-  bar->addWidget(integrator_);
+  worldBar_->addWidget(integrator_);
 }
 
 void MainWindow::buildMenus() {
-  QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-  fileMenu->addActions({newAction_, openAction_});
-  recentMenu_ = fileMenu->addMenu(tr("Open &Recent"));
+  fileMenu_ = menuBar()->addMenu(QString());
+  fileMenu_->addActions({newAction_, openAction_});
+  recentMenu_ = fileMenu_->addMenu(QString());
   recentMenu_->setObjectName("recentMenu");
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
-  fileMenu->addActions({saveAction_, saveAsAction_});
-  fileMenu->addSeparator();
-  fileMenu->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+  fileMenu_->addActions({saveAction_, saveAsAction_});
+  fileMenu_->addSeparator();
+  quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, this, &QWidget::close);
 
-  QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
-  editMenu->addActions({undoAction_, redoAction_});
-  editMenu->addSeparator();
-  editMenu->addActions({copyAction_, pasteAction_, duplicateAction_, deleteAction_});
-  editMenu->addSeparator();
-  editMenu->addActions({selectAllAction_});
+  editMenu_ = menuBar()->addMenu(QString());
+  editMenu_->addActions({undoAction_, redoAction_});
+  editMenu_->addSeparator();
+  editMenu_->addActions({copyAction_, pasteAction_, duplicateAction_, deleteAction_});
+  editMenu_->addSeparator();
+  editMenu_->addActions({selectAllAction_});
 
-  QMenu* simulationMenu = menuBar()->addMenu(tr("&Simulation"));
-  simulationMenu->addActions({playAction_, stepAction_, resetAction_});
-  simulationMenu->addSeparator();
-  simulationMenu->addAction(tr("Speed vs &Accuracy…"), this, [this] { openAccuracyWindow(); });
-  simulationMenu->addSeparator();
-  simulationMenu->addActions({useStateAction_, applyToRunningAction_});
+  // The same actions as the toolbar's.
+  toolsMenu_ = menuBar()->addMenu(QString());
+  toolsMenu_->setObjectName("toolsMenu");
+  for (QAction* action : toolActions_) toolsMenu_->addAction(action);
+  toolsMenu_->addSeparator();
+  toolsMenu_->addAction(snapAction_);
 
-  QMenu* examples = menuBar()->addMenu(tr("&Examples"));
-  const QStringList files = QDir(":/scenes").entryList({"*.json"}, QDir::Files, QDir::Name);
-  for (const QString& file : files) {
-    QString title = file;
-    title.chop(5);
-    examples->addAction(title, this, [this, file, title] {
-      if (!maybeSave()) return;
-      const SceneLoadResult loaded = loadSceneFile(":/scenes/" + file);
-      if (loaded.scene) openScene(*loaded.scene, {}, title);
-    });
+  simulationMenu_ = menuBar()->addMenu(QString());
+  simulationMenu_->addActions({playAction_, stepAction_, resetAction_});
+  simulationMenu_->addSeparator();
+  accuracyAction_ = simulationMenu_->addAction(QString(), this, [this] { openAccuracyWindow(); });
+  simulationMenu_->addSeparator();
+  simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
+
+  examplesMenu_ = menuBar()->addMenu(QString());
+  examplesMenu_->setObjectName("examplesMenu");
+  for (const auto& example : kExamples) {
+    QAction* action = examplesMenu_->addAction(
+        QString(), this, [this, file = QString(example.file)] { openExample(file, true); });
+    action->setObjectName(QString("example:%1").arg(example.file));
   }
 
-  QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-  viewMenu->addActions(
+  viewMenu_ = menuBar()->addMenu(QString());
+  viewMenu_->addActions(
       {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
-  viewMenu->addSeparator();
-  viewMenu->addAction(findChild<QDockWidget*>("energyDock")->toggleViewAction());
-  viewMenu->addAction(outlineDock_->toggleViewAction());
-  viewMenu->addAction(propertiesDock_->toggleViewAction());
-  viewMenu->addAction(historyDock_->toggleViewAction());
-  viewMenu->addSeparator();
-  QMenu* languageMenu = viewMenu->addMenu(tr("&Language"));
+  viewMenu_->addSeparator();
+  viewMenu_->addAction(energyDock_->toggleViewAction());
+  viewMenu_->addAction(outlineDock_->toggleViewAction());
+  viewMenu_->addAction(propertiesDock_->toggleViewAction());
+  viewMenu_->addAction(historyDock_->toggleViewAction());
+  viewMenu_->addSeparator();
+  languageMenu_ = viewMenu_->addMenu(QString());
   auto* languages = new QActionGroup(this);
-  const QString current = chosenLanguage({});
+  const QString current = chosenLanguage(QCoreApplication::arguments());
   for (const Language& language : availableLanguages()) {
-    QAction* action = languageMenu->addAction(language.nativeName);
+    QAction* action = languageMenu_->addAction(language.nativeName);
+    action->setObjectName("language:" + language.code);
     action->setCheckable(true);
     action->setChecked(language.code == current);
     languages->addAction(action);
-    connect(action, &QAction::triggered, this, [this, code = language.code] {
-      saveLanguageChoice(code);
-      showMessage(tr("The language changes when Carom is next started."));
-    });
+    if (language.code.isEmpty()) systemLanguageAction_ = action;
+    connect(action, &QAction::triggered, this,
+            [this, code = language.code] { chooseLanguage(code); });
   }
+
+  buildHelpMenu();
+}
+
+void MainWindow::buildHelpMenu() {
+  helpMenu_ = menuBar()->addMenu(QString());
+  helpMenu_->setObjectName("helpMenu");
+  // One window a page, shown again when asked again.
+  const auto show = [this](HelpWindow::Page page) {
+    HelpWindow* window = nullptr;
+    for (HelpWindow* open : findChildren<HelpWindow*>())
+      if (open->page() == page) window = open;
+    if (!window) window = new HelpWindow(page, this);
+    window->show();
+    window->raise();
+  };
+  keyboardHelpAction_ =
+      helpMenu_->addAction(QString(), this, [show] { show(HelpWindow::Page::KeyboardAndMouse); });
+  keyboardHelpAction_->setObjectName("keyboardHelp");
+  physicsNotesAction_ =
+      helpMenu_->addAction(QString(), this, [show] { show(HelpWindow::Page::PhysicsNotes); });
+  physicsNotesAction_->setObjectName("physicsNotes");
+  helpMenu_->addSeparator();
+  aboutAction_ = helpMenu_->addAction(QString(), this, [this] { showAbout(this); });
+  aboutAction_->setObjectName("about");
+}
+
+void MainWindow::chooseLanguage(const QString& code) {
+  saveLanguageChoice(code);
+  // Every widget hears of it through a LanguageChange event, and retranslates itself.
+  installTranslation(*QCoreApplication::instance(), code);
+}
+
+void MainWindow::showUndoTexts() {
+  const QUndoStack* stack = document_->undoStack();
+  undoAction_->setText(stack->undoText().isEmpty() ? tr("&Undo")
+                                                   : tr("&Undo %1").arg(stack->undoText()));
+  redoAction_->setText(stack->redoText().isEmpty() ? tr("&Redo")
+                                                   : tr("&Redo %1").arg(stack->redoText()));
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QMainWindow::changeEvent(event);
+}
+
+void MainWindow::retranslate() {
+  fileMenu_->setTitle(tr("&File"));
+  newAction_->setText(tr("&New"));
+  openAction_->setText(tr("&Open…"));
+  recentMenu_->setTitle(tr("Open &Recent"));
+  saveAction_->setText(tr("&Save"));
+  saveAsAction_->setText(tr("Save &As…"));
+  quitAction_->setText(tr("&Quit"));
+
+  editMenu_->setTitle(tr("&Edit"));
+  showUndoTexts();
+  copyAction_->setText(tr("&Copy"));
+  pasteAction_->setText(tr("&Paste"));
+  duplicateAction_->setText(tr("&Duplicate"));
+  deleteAction_->setText(tr("De&lete"));
+  selectAllAction_->setText(tr("Select &All"));
+  historyDock_->setWindowTitle(tr("History"));
+  // Qt's undo view names its empty state once, when it is made: a new one speaks the language.
+  delete historyDock_->widget();
+  historyDock_->setWidget(new QUndoView(document_->undoStack()));
+
+  toolsMenu_->setTitle(tr("&Tools"));
+  toolsBar_->setWindowTitle(tr("Tools"));
+  const QString toolTexts[4] = {tr("Select"), tr("Add Ball"), tr("Add Plane"), tr("Add Cylinder")};
+  for (int i = 0; i < 4; ++i) {
+    toolActions_[i]->setText(toolTexts[i]);
+    toolActions_[i]->setToolTip(tr("%1 (%2)").arg(
+        toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
+  }
+  snapAction_->setText(tr("Snap to &Grid"));
+  snapAction_->setToolTip(tr("Moves land on multiples of %1 m").arg(EditorTools::gridStep()));
+
+  simulationMenu_->setTitle(tr("&Simulation"));
+  playAction_->setText(playAction_->isChecked() ? tr("&Pause") : tr("&Run"));
+  playAction_->setToolTip(tr("Run or pause the simulation (Space)"));
+  stepAction_->setText(tr("&Step"));
+  stepAction_->setToolTip(tr("Advance one time step (S)"));
+  resetAction_->setText(tr("R&eset"));
+  resetAction_->setToolTip(tr("Back to the scene's initial state (R)"));
+  largerStepAction_->setText(tr("Larger Time Step"));
+  smallerStepAction_->setText(tr("Smaller Time Step"));
+  accuracyAction_->setText(tr("Speed vs &Accuracy…"));
+  useStateAction_->setText(tr("&Use Current State as Initial"));
+  applyToRunningAction_->setText(tr("Edits Apply to the &Running State"));
+  applyToRunningAction_->setToolTip(
+      tr("Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves "
+         "alone keep their running state."));
+
+  simulationBar_->setWindowTitle(tr("Simulation"));
+  speedLabel_->setText(tr("Speed"));
+  speed_->setName(tr("Speed"));
+  speed_->setToolTip(tr("Simulated seconds per real second"));
+  worldBar_->setWindowTitle(tr("World"));
+  gravityLabel_->setText(tr("Gravity"));
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    gravity_[a]->setName(tr("Gravity %1").arg(axes[a]));
+    gravity_[a]->setToolTip(tr("Gravity %1 (m/s²)").arg(axes[a]));
+  }
+  timeStepLabel_->setText(tr("Step"));
+  timeStep_->setName(tr("Time step"));
+  timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
+  method_->setToolTip(tr("Exact (event-driven), swept, or discrete steps"));
+  integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
+  // The boxes show their values in the language's number format.
+  for (NumberBox* box : {speed_, gravity_[0], gravity_[1], gravity_[2], timeStep_}) {
+    const QSignalBlocker blocker(box);
+    box->setValue(box->value());
+  }
+
+  examplesMenu_->setTitle(tr("&Examples"));
+  const QList<QAction*> examples = examplesMenu_->actions();
+  for (int i = 0; i < int(std::size(kExamples)); ++i) examples[i]->setText(tr(kExamples[i].title));
+  if (openedExample_ >= 0) document_->setTitle(tr(kExamples[openedExample_].title));
+
+  viewMenu_->setTitle(tr("&View"));
+  followAction_->setText(tr("&Follow Ball"));
+  fullScreenAction_->setText(tr("&Full Screen"));
+  explosionsAction_->setText(tr("&Explosions"));
+  antialiasingAction_->setText(tr("&Antialiasing"));
+  muteAction_->setText(tr("&Mute"));
+  energyDock_->setWindowTitle(tr("Energy"));
+  languageMenu_->setTitle(tr("&Language"));
+  systemLanguageAction_->setText(availableLanguages().front().nativeName);
+
+  helpMenu_->setTitle(tr("&Help"));
+  keyboardHelpAction_->setText(tr("&Keyboard and Mouse"));
+  physicsNotesAction_->setText(tr("&Physics Notes"));
+  aboutAction_->setText(tr("&About Carom"));
+
+  updateTitle();
+  showStatus();
 }
 
 void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
-                           const QString& exampleName) {
-  exampleName_ = exampleName;
+                           const QString& title) {
+  openedExample_ = -1;
   playAction_->setChecked(false);
-  document_->reset(scene, fileName);
+  shownScene_.reset();  // a fresh start: no running state carries over to another scene
+  document_->reset(scene, fileName, title);
+  view_->frameScene();
   energyPlot_->clear();
   lastCollisionCount_ = 0;
   lastCollisionTime_ = 0.0;
@@ -448,38 +604,34 @@ void MainWindow::buildToolActions() {
   const struct {
     EditorTools::Tool tool;
     const char* name;
-    QString text;
     Qt::Key key;
-  } tools[] = {{EditorTools::Tool::Select, "toolSelect", tr("Select"), Qt::Key_V},
-               {EditorTools::Tool::AddBall, "toolAddBall", tr("Add Ball"), Qt::Key_B},
-               {EditorTools::Tool::AddPlane, "toolAddPlane", tr("Add Plane"), Qt::Key_P},
-               {EditorTools::Tool::AddCylinder, "toolAddCylinder", tr("Add Cylinder"), Qt::Key_C}};
-  QToolBar* bar = addToolBar(tr("Tools"));
-  bar->setObjectName("tools");
+  } tools[] = {{EditorTools::Tool::Select, "toolSelect", Qt::Key_V},
+               {EditorTools::Tool::AddBall, "toolAddBall", Qt::Key_B},
+               {EditorTools::Tool::AddPlane, "toolAddPlane", Qt::Key_P},
+               {EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C}};
+  toolsBar_ = addToolBar(QString());
+  toolsBar_->setObjectName("tools");
   for (const auto& entry : tools) {
-    QAction* action = group->addAction(entry.text);
+    QAction* action = group->addAction(QString());
     action->setObjectName(entry.name);
     action->setCheckable(true);
     action->setShortcut(entry.key);
-    action->setToolTip(tr("%1 (%2)").arg(entry.text, QKeySequence(entry.key).toString()));
     action->setChecked(entry.tool == tools_->tool());
     connect(action, &QAction::triggered, this,
             [this, tool = entry.tool] { tools_->setTool(tool); });
-    bar->addAction(action);
+    toolsBar_->addAction(action);
+    toolActions_[int(entry.tool)] = action;
   }
-  snapAction_ = new QAction(tr("Snap to &Grid"), this);
+  snapAction_ = new QAction(this);
   snapAction_->setObjectName("snapToGrid");
   snapAction_->setCheckable(true);
-  snapAction_->setToolTip(tr("Moves land on multiples of %1 m").arg(EditorTools::gridStep()));
   connect(snapAction_, &QAction::toggled, this, [this](bool on) { tools_->setSnapToGrid(on); });
-  bar->addAction(snapAction_);
+  toolsBar_->addAction(snapAction_);
   addActions(group->actions());
 }
 
 void MainWindow::updateTitle() {
-  QString name = document_->displayName();
-  if (document_->fileName().isEmpty() && !exampleName_.isEmpty()) name = exampleName_;
-  setWindowTitle(tr("%1[*] — Carom").arg(name));
+  setWindowTitle(tr("%1[*] — Carom").arg(document_->displayName()));
   setWindowModified(document_->isModified());
 }
 
@@ -546,13 +698,13 @@ void MainWindow::showStatus() {
   const double drift = snapshot->initialEnergy != 0.0
                            ? (energy - snapshot->initialEnergy) / std::abs(snapshot->initialEnergy)
                            : 0.0;
-  QString line = tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %5 balls   "
-                    "E = %6 J (drift %7)")
+  QString line = tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   "
+                    "E = %5 J (drift %6)",
+                    nullptr, static_cast<int>(snapshot->positions.size()))
                      .arg(snapshot->time, 0, 'f', 3)
                      .arg(snapshot->realTimeFactor, 0, 'f', 2)
                      .arg(framesPerSecond_, 0, 'f', 0)
                      .arg(collisionsPerSecond_, 0, 'f', 0)
-                     .arg(snapshot->positions.size())
                      .arg(energy, 0, 'g', 6)
                      .arg(drift, 0, 'e', 1);
   if (!sound_->available())
@@ -566,12 +718,12 @@ void MainWindow::showStatus() {
 // ---- Files ---------------------------------------------------------------------------------
 
 void MainWindow::buildFileActions() {
-  newAction_ = new QAction(tr("&New"), this);
+  newAction_ = new QAction(this);
   newAction_->setShortcut(QKeySequence::New);
   connect(newAction_, &QAction::triggered, this, [this] {
-    if (maybeSave()) openScene(Scene(), {});
+    if (maybeSave()) openScene(SceneDocument::newScene(), {});
   });
-  openAction_ = new QAction(tr("&Open…"), this);
+  openAction_ = new QAction(this);
   openAction_->setShortcut(QKeySequence::Open);
   connect(openAction_, &QAction::triggered, this, [this] {
     if (!maybeSave()) return;
@@ -579,10 +731,10 @@ void MainWindow::buildFileActions() {
         this, tr("Open Scene"), lastFolder(), tr("Carom scenes (*.carom *.json);;All files (*)"));
     if (!file.isEmpty()) openFile(file, false);
   });
-  saveAction_ = new QAction(tr("&Save"), this);
+  saveAction_ = new QAction(this);
   saveAction_->setShortcut(QKeySequence::Save);
   connect(saveAction_, &QAction::triggered, this, &MainWindow::save);
-  saveAsAction_ = new QAction(tr("Save &As…"), this);
+  saveAsAction_ = new QAction(this);
   // Spelled out: the standard key is empty on X11 outside GNOME and KDE.
   saveAsAction_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
@@ -601,6 +753,18 @@ bool MainWindow::openFile(const QString& fileName, bool askToSave) {
   return true;
 }
 
+bool MainWindow::openExample(const QString& file, bool askToSave) {
+  const auto* example = std::find_if(std::begin(kExamples), std::end(kExamples),
+                                     [&](const auto& entry) { return file == entry.file; });
+  if (example == std::end(kExamples)) return false;
+  if (askToSave && !maybeSave()) return false;
+  const SceneLoadResult loaded = loadSceneFile(QString(":/scenes/%1.json").arg(file));
+  if (!loaded.scene) return false;  // bundled and tested: cannot happen
+  openScene(*loaded.scene, {}, tr(example->title));
+  openedExample_ = static_cast<int>(example - std::begin(kExamples));
+  return true;
+}
+
 bool MainWindow::offerRecovery() {
   for (const SceneRecovery::Orphan& orphan : SceneRecovery::orphans()) {
     const QString name = orphan.originalFile.isEmpty()
@@ -609,6 +773,8 @@ bool MainWindow::offerRecovery() {
     QMessageBox box(QMessageBox::Question, tr("Recover Scene"),
                     tr("Carom did not close properly while %1 had unsaved changes. The copy "
                        "saved at %2 can be recovered.")
+                        // In the program's language: installTranslation() made its locale
+                        // the default one.
                         .arg(name, QLocale().toString(orphan.saved, QLocale::ShortFormat)),
                     QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, this);
     box.button(QMessageBox::Yes)->setText(tr("&Recover"));
@@ -640,7 +806,8 @@ bool MainWindow::save() {
 bool MainWindow::saveAs() {
   QString suggested = document_->fileName();
   if (suggested.isEmpty()) {
-    const QString base = exampleName_.isEmpty() ? tr("untitled") : exampleName_;
+    const QString base =
+        openedExample_ >= 0 ? kExamples[openedExample_].file : document_->displayName();
     suggested = QDir(lastFolder()).filePath(base + ".carom");
   }
   QString file = QFileDialog::getSaveFileName(this, tr("Save Scene"), suggested,
@@ -724,27 +891,37 @@ void MainWindow::dropEvent(QDropEvent* event) {
 // ---- Editing -------------------------------------------------------------------------------
 
 void MainWindow::buildEditActions() {
-  undoAction_ = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  // Not QUndoStack's own actions, whose texts stay in the language they were made in.
+  QUndoStack* stack = document_->undoStack();
+  undoAction_ = new QAction(this);
   undoAction_->setShortcut(QKeySequence::Undo);
-  redoAction_ = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  undoAction_->setEnabled(stack->canUndo());
+  connect(undoAction_, &QAction::triggered, stack, &QUndoStack::undo);
+  connect(stack, &QUndoStack::canUndoChanged, undoAction_, &QAction::setEnabled);
+  connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::showUndoTexts);
+  redoAction_ = new QAction(this);
   redoAction_->setShortcuts(
       {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  redoAction_->setEnabled(stack->canRedo());
+  connect(redoAction_, &QAction::triggered, stack, &QUndoStack::redo);
+  connect(stack, &QUndoStack::canRedoChanged, redoAction_, &QAction::setEnabled);
+  connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::showUndoTexts);
 
-  copyAction_ = new QAction(tr("&Copy"), this);
+  copyAction_ = new QAction(this);
   copyAction_->setShortcut(QKeySequence::Copy);
   connect(copyAction_, &QAction::triggered, this, &MainWindow::copySelection);
-  pasteAction_ = new QAction(tr("&Paste"), this);
+  pasteAction_ = new QAction(this);
   pasteAction_->setShortcut(QKeySequence::Paste);
   connect(pasteAction_, &QAction::triggered, this, &MainWindow::paste);
-  duplicateAction_ = new QAction(tr("&Duplicate"), this);
+  duplicateAction_ = new QAction(this);
   duplicateAction_->setShortcut(Qt::CTRL | Qt::Key_D);
   connect(duplicateAction_, &QAction::triggered, this, [this] {
     insertObjects(extract(document_->scene(), document_->selection()), tr("Duplicate"));
   });
-  deleteAction_ = new QAction(tr("De&lete"), this);
+  deleteAction_ = new QAction(this);
   deleteAction_->setShortcut(QKeySequence::Delete);
   connect(deleteAction_, &QAction::triggered, this, &MainWindow::deleteSelection);
-  selectAllAction_ = new QAction(tr("Select &All"), this);
+  selectAllAction_ = new QAction(this);
   selectAllAction_->setShortcut(QKeySequence::SelectAll);
   connect(selectAllAction_, &QAction::triggered, this, [this] {
     const Scene& scene = document_->scene();
@@ -754,15 +931,12 @@ void MainWindow::buildEditActions() {
     document_->setSelection(all);
   });
 
-  useStateAction_ = new QAction(tr("&Use Current State as Initial"), this);
+  useStateAction_ = new QAction(this);
   useStateAction_->setObjectName("useCurrentState");
   connect(useStateAction_, &QAction::triggered, this, &MainWindow::useCurrentState);
-  applyToRunningAction_ = new QAction(tr("Edits Apply to the &Running State"), this);
+  applyToRunningAction_ = new QAction(this);
   applyToRunningAction_->setObjectName("applyToRunningState");
   applyToRunningAction_->setCheckable(true);
-  applyToRunningAction_->setToolTip(
-      tr("Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves "
-         "alone keep their running state."));
   applyToRunningAction_->setChecked(QSettings().value(kApplyToRunningKey, false).toBool());
   connect(applyToRunningAction_, &QAction::toggled, this,
           [](bool on) { QSettings().setValue(kApplyToRunningKey, on); });
@@ -770,9 +944,8 @@ void MainWindow::buildEditActions() {
   addActions({undoAction_, redoAction_, copyAction_, pasteAction_, duplicateAction_, deleteAction_,
               selectAllAction_});
 
-  historyDock_ = new QDockWidget(tr("History"), this);
+  historyDock_ = new QDockWidget(this);
   historyDock_->setObjectName("historyDock");
-  historyDock_->setWidget(new QUndoView(document_->undoStack()));
   tabifyDockWidget(outlineDock_, historyDock_);
   outlineDock_->raise();
   historyDock_->hide();

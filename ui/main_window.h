@@ -18,6 +18,7 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QToolBar;
 
 namespace carom::ui {
 
@@ -47,12 +48,15 @@ class MainWindow : public QMainWindow {
   ~MainWindow() override;
 
   // Shows `scene` (valid) from its start, paused, as the document read from `fileName` (empty
-  // for a new scene; `exampleName` then names it in the title). Discards unsaved changes.
-  void openScene(const carom::Scene& scene, const QString& fileName,
-                 const QString& exampleName = {});
+  // for a new scene; `title` then names it in the title bar and in Save As). Discards unsaved
+  // changes.
+  void openScene(const carom::Scene& scene, const QString& fileName, const QString& title = {});
   // Open, asking first about unsaved changes when `askToSave`; a broken file gets a dialog with
   // the loader's message and leaves the open scene as it was.
   bool openFile(const QString& fileName, bool askToSave);
+  // A bundled example by its file's base name ("magic-room"), titled in the program's language
+  // ("Magic room"); false when there is none or the user cancels the question about saving.
+  bool openExample(const QString& file, bool askToSave);
   bool save();
   bool saveAs();
   SceneDocument* document() const { return document_; }
@@ -81,11 +85,16 @@ class MainWindow : public QMainWindow {
   int framesRendered() const { return framesRendered_; }
 
  protected:
+  void changeEvent(QEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
  private:
+  // Every text of the window, its menus, actions and toolbars in the current language.
+  void retranslate();
+  void showUndoTexts();
+  void chooseLanguage(const QString& code);
   void buildActions();
   void buildFileActions();
   void buildEditActions();
@@ -112,6 +121,7 @@ class MainWindow : public QMainWindow {
   void useCurrentState();
   void buildToolBar();
   void buildMenus();
+  void buildHelpMenu();
   void showSnapshot();
   void showStatus();
   void changeTimeStep(double factor);
@@ -124,17 +134,36 @@ class MainWindow : public QMainWindow {
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;
   QAction* antialiasingAction_ = nullptr;
+  QAction* largerStepAction_ = nullptr;
+  QAction* smallerStepAction_ = nullptr;
   static constexpr const char* kAntialiasingKey = "view/antialiasing";
   SceneDocument* document_ = nullptr;
   EditorTools* tools_ = nullptr;
+  QAction* toolActions_[4] = {};  // in EditorTools::Tool order
   QAction* snapAction_ = nullptr;
   std::shared_ptr<const Scene> shownScene_;  // what the view and the simulation started from
-  QString exampleName_;
+  // The bundled example open, as an index of the Examples menu, until another scene opens:
+  // its title follows the language, and Save As suggests its file's name.
+  int openedExample_ = -1;
   QAction* newAction_ = nullptr;
   QAction* openAction_ = nullptr;
   QAction* saveAction_ = nullptr;
   QAction* saveAsAction_ = nullptr;
   QMenu* recentMenu_ = nullptr;
+  QAction* quitAction_ = nullptr;
+  QMenu* fileMenu_ = nullptr;
+  QMenu* editMenu_ = nullptr;
+  QMenu* simulationMenu_ = nullptr;
+  QAction* accuracyAction_ = nullptr;
+  QMenu* examplesMenu_ = nullptr;
+  QMenu* toolsMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QMenu* languageMenu_ = nullptr;
+  QAction* systemLanguageAction_ = nullptr;
+  QMenu* helpMenu_ = nullptr;
+  QAction* keyboardHelpAction_ = nullptr;
+  QAction* physicsNotesAction_ = nullptr;
+  QAction* aboutAction_ = nullptr;
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;
   QAction* copyAction_ = nullptr;
@@ -145,6 +174,7 @@ class MainWindow : public QMainWindow {
   QAction* useStateAction_ = nullptr;
   QAction* applyToRunningAction_ = nullptr;
   QDockWidget* historyDock_ = nullptr;
+  QDockWidget* energyDock_ = nullptr;
   OutlineDock* outlineDock_ = nullptr;
   PropertiesDock* propertiesDock_ = nullptr;
   SceneRecovery* recovery_ = nullptr;
@@ -160,6 +190,12 @@ class MainWindow : public QMainWindow {
   QAction* resetAction_ = nullptr;
   QAction* fullScreenAction_ = nullptr;
   QAction* followAction_ = nullptr;
+  QToolBar* toolsBar_ = nullptr;
+  QToolBar* simulationBar_ = nullptr;
+  QToolBar* worldBar_ = nullptr;
+  QLabel* speedLabel_ = nullptr;
+  QLabel* gravityLabel_ = nullptr;
+  QLabel* timeStepLabel_ = nullptr;
   NumberBox* speed_ = nullptr;
   NumberBox* gravity_[3] = {};
   NumberBox* timeStep_ = nullptr;

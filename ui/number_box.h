@@ -13,6 +13,8 @@ class NumberBox : public QDoubleSpinBox {
  public:
   // `name` starts the messages: "Time step: must be between …".
   NumberBox(const QString& name, double low, double high, double step, QWidget* parent = nullptr);
+  // In another language.
+  void setName(const QString& name) { name_ = name; }
 
   QValidator::State validate(QString& text, int& position) const override;
   void fixup(QString& text) const override;

@@ -140,8 +140,12 @@ void eraseIndices(std::vector<T>& items, const Selection& selection, ObjectKind 
     if (ref.kind == kind && ref.index >= 0 && ref.index < static_cast<int>(items.size()))
       doomed[ref.index] = true;
   std::size_t kept = 0;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    if (!doomed[i]) items[kept++] = std::move(items[i]);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (doomed[i]) continue;
+    // Never onto itself: a self-move leaves the strings (name, colour) empty.
+    if (kept != i) items[kept] = std::move(items[i]);
+    ++kept;
+  }
   items.resize(kept);
 }
 

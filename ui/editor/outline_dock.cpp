@@ -81,6 +81,16 @@ QModelIndex OutlineModel::indexOf(const ObjectRef& ref) const {
   return index(ref.index, 0, groupIndex(ref.kind));
 }
 
+void OutlineModel::retranslate() {
+  // Group names and unnamed objects' labels ("Ball 3") are made in the current language.
+  for (int g = 0; g < 3; ++g) {
+    const QModelIndex group = index(g, 0);
+    emit dataChanged(group, group, {Qt::DisplayRole});
+    if (counts_[g] > 0)
+      emit dataChanged(index(0, 0, group), index(counts_[g] - 1, 0, group), {Qt::DisplayRole});
+  }
+}
+
 std::optional<ObjectRef> OutlineModel::objectAt(const QModelIndex& index) const {
   if (!index.isValid() || index.internalId() == kGroupId) return std::nullopt;
   const ObjectRef ref{kindOfGroup(int(index.internalId() - 1)), index.row()};
@@ -140,7 +150,7 @@ Qt::ItemFlags OutlineModel::flags(const QModelIndex& index) const {
 }
 
 OutlineDock::OutlineDock(SceneDocument* document, QWidget* parent)
-    : QDockWidget(tr("Outline"), parent),
+    : QDockWidget(parent),
       document_(document),
       model_(new OutlineModel(document, this)),
       tree_(new QTreeView) {
@@ -161,6 +171,17 @@ OutlineDock::OutlineDock(SceneDocument* document, QWidget* parent)
   connect(document_, &SceneDocument::sceneChanged, this, &OutlineDock::showSelection);
   connect(document_, &SceneDocument::selectionChanged, this, &OutlineDock::showSelection);
   showSelection();
+  retranslate();
+}
+
+void OutlineDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDockWidget::changeEvent(event);
+}
+
+void OutlineDock::retranslate() {
+  setWindowTitle(tr("Outline"));
+  model_->retranslate();
 }
 
 bool OutlineDock::eventFilter(QObject* watched, QEvent* event) {

@@ -35,6 +35,8 @@ class OutlineModel : public QAbstractItemModel {
   QModelIndex indexOf(const ObjectRef& ref) const;
   // The object an index names; nothing for a group.
   std::optional<ObjectRef> objectAt(const QModelIndex& index) const;
+  // Tells the views that every row's text changed, as after a change of language.
+  void retranslate();
 
  signals:
   // A rename was refused; the text says why.
@@ -59,8 +61,10 @@ class OutlineDock : public QDockWidget {
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
+  void changeEvent(QEvent* event) override;
 
  private:
+  void retranslate();
   void showSelection();
   void selectionEdited();
 

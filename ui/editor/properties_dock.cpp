@@ -5,6 +5,7 @@
 
 #include <QColorDialog>
 #include <QComboBox>
+#include <QFocusEvent>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -19,6 +20,56 @@
 #include <optional>
 
 namespace carom::ui {
+
+// A field for a number: six significant digits to read, as the toolbar's boxes show them, and
+// the shortest text that reads back as the same value while it is edited and in its tooltip. A
+// field left without a change is not modified, so it never rounds what is stored.
+class NumberField : public QLineEdit {
+ public:
+  // What the tooltip calls the field ("Position x"); `hint` is a line added under it.
+  void setName(const QString& name, const QString& hint = {}) {
+    name_ = name;
+    hint_ = hint;
+    showValue();
+  }
+  // Nothing: an empty field (several objects that differ, a restitution left to the world).
+  void setValue(std::optional<double> value) {
+    value_ = value;
+    showValue();
+  }
+
+ protected:
+  void focusInEvent(QFocusEvent* event) override {
+    if (!isModified()) showValue(true);
+    QLineEdit::focusInEvent(event);
+  }
+  void focusOutEvent(QFocusEvent* event) override {
+    QLineEdit::focusOutEvent(event);  // finishes the edit, which may show a new value
+    // A context menu takes the focus for a moment, in the middle of an edit.
+    if (event->reason() != Qt::PopupFocusReason && !isModified()) showValue(false);
+  }
+
+ private:
+  void showValue() { showValue(hasFocus()); }
+  void showValue(bool editing) {
+    const QSignalBlocker blocker(this);
+    QString text;
+    if (value_)
+      text = editing ? formatNumber(*value_) : numberLocale().toString(*value_, 'g', kShownDigits);
+    setText(text);
+    setModified(false);
+    QStringList tip{value_ ? PropertiesDock::tr("%1: %2").arg(name_, formatNumber(*value_))
+                           : name_};
+    if (!hint_.isEmpty()) tip << hint_;
+    setToolTip(tip.join('\n'));
+  }
+
+  static constexpr int kShownDigits = 6;
+  QString name_;
+  QString hint_;
+  std::optional<double> value_;
+};
+
 namespace {
 
 // The dock's kind bits are ObjectKind's values as powers of two.
@@ -47,7 +98,7 @@ std::optional<T> common(const Selection& targets, Read read) {
 }  // namespace
 
 PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
-    : QDockWidget(tr("Properties"), parent), document_(document) {
+    : QDockWidget(parent), document_(document) {
   setObjectName("propertiesDock");
   auto* body = new QWidget;
   auto* layout = new QVBoxLayout(body);
@@ -67,56 +118,57 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
   layout->addWidget(message_);
   layout->addStretch(1);
 
-  const QString m = tr("m"), mPerS = tr("m/s"), kg = tr("kg"), s = tr("s"), mPerS2 = tr("m/s²");
-  const QString direction = tr("(any length)");
-  addText(kObjects, "name", tr("Name"), tr("Rename"),
+  const char* m = QT_TR_NOOP("m");
+  const char* mPerS = QT_TR_NOOP("m/s");
+  const char* kg = QT_TR_NOOP("kg");
+  const char* s = QT_TR_NOOP("s");
+  const char* mPerS2 = QT_TR_NOOP("m/s²");
+  const char* direction = QT_TR_NOOP("(any length)");
+  addText(kObjects, "name", QT_TR_NOOP("Name"), QT_TR_NOOP("Rename"),
           [](const Scene& scene, const ObjectRef& r) { return &objectInfo(scene, r).name; });
   colorButton_ = new QToolButton;
   colorButton_->setObjectName("pickColor");
-  colorButton_->setText(tr("…"));
-  colorButton_->setToolTip(tr("Choose a colour"));
   connect(colorButton_, &QToolButton::clicked, this, &PropertiesDock::pickColor);
   addText(
-      kObjects, "color", tr("Colour"), tr("Change Colour"),
+      kObjects, "color", QT_TR_NOOP("Colour"), QT_TR_NOOP("Change Colour"),
       [](const Scene& scene, const ObjectRef& r) { return &objectInfo(scene, r).color; },
       colorButton_);
   colorRow_ = texts_.back().row;
   color_ = texts_.back().edit;
-  color_->setPlaceholderText(tr("default"));
   addRestitution();
 
-  addVector(kBalls, "position", tr("Position"), tr("Move"), m,
+  addVector(kBalls, "position", QT_TR_NOOP("Position"), QT_TR_NOOP("Move"), m,
             [](const Scene& scene, const ObjectRef& r) { return &scene.balls[r.index].position; });
-  addVector(kBalls, "velocity", tr("Velocity"), tr("Change Velocity"), mPerS,
+  addVector(kBalls, "velocity", QT_TR_NOOP("Velocity"), QT_TR_NOOP("Change Velocity"), mPerS,
             [](const Scene& scene, const ObjectRef& r) { return &scene.balls[r.index].velocity; });
-  addNumber(kBalls, "ballRadius", tr("Radius"), tr("Change Radius"), m,
+  addNumber(kBalls, "ballRadius", QT_TR_NOOP("Radius"), QT_TR_NOOP("Change Radius"), m,
             [](const Scene& scene, const ObjectRef& r) { return &scene.balls[r.index].radius; });
-  addNumber(kBalls, "mass", tr("Mass"), tr("Change Mass"), kg,
+  addNumber(kBalls, "mass", QT_TR_NOOP("Mass"), QT_TR_NOOP("Change Mass"), kg,
             [](const Scene& scene, const ObjectRef& r) { return &scene.balls[r.index].mass; });
-  addVector(kPlanes | kCylinders, "point", tr("Point"), tr("Move"), m,
+  addVector(kPlanes | kCylinders, "point", QT_TR_NOOP("Point"), QT_TR_NOOP("Move"), m,
             [](const Scene& scene, const ObjectRef& r) {
               return r.kind == ObjectKind::Plane ? &scene.planes[r.index].point
                                                  : &scene.cylinders[r.index].point;
             });
-  addVector(kPlanes, "normal", tr("Normal"), tr("Turn Plane"), direction,
+  addVector(kPlanes, "normal", QT_TR_NOOP("Normal"), QT_TR_NOOP("Turn Plane"), direction,
             [](const Scene& scene, const ObjectRef& r) { return &scene.planes[r.index].normal; });
-  addVector(kCylinders, "axis", tr("Axis"), tr("Turn Cylinder"), direction,
+  addVector(kCylinders, "axis", QT_TR_NOOP("Axis"), QT_TR_NOOP("Turn Cylinder"), direction,
             [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].axis; });
   addNumber(
-      kCylinders, "cylinderRadius", tr("Radius"), tr("Change Radius"), m,
+      kCylinders, "cylinderRadius", QT_TR_NOOP("Radius"), QT_TR_NOOP("Change Radius"), m,
       [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].radius; });
 
-  addVector(kWorld, "gravity", tr("Gravity"), tr("Change Gravity"), mPerS2,
+  addVector(kWorld, "gravity", QT_TR_NOOP("Gravity"), QT_TR_NOOP("Change Gravity"), mPerS2,
             [](const Scene& scene, const ObjectRef&) { return &scene.world.gravity; });
-  addNumber(kWorld, "timeStep", tr("Time step"), tr("Change Time Step"), s,
+  addNumber(kWorld, "timeStep", QT_TR_NOOP("Time step"), QT_TR_NOOP("Change Time Step"), s,
             [](const Scene& scene, const ObjectRef&) { return &scene.world.timeStep; });
-  addNumber(kWorld, "worldRestitution", tr("Restitution"), tr("Change Restitution"), {},
-            [](const Scene& scene, const ObjectRef&) { return &scene.world.restitution; });
-  method_ = addChoice("method", tr("Method"), tr("Change Method"), methodNames(),
+  addNumber(kWorld, "worldRestitution", QT_TR_NOOP("Restitution"), QT_TR_NOOP("Change Restitution"),
+            nullptr, [](const Scene& scene, const ObjectRef&) { return &scene.world.restitution; });
+  method_ = addChoice("method", QT_TR_NOOP("Method"), QT_TR_NOOP("Change Method"), methodNames(),
                       [](World& world, int index) { world.method = Method(index); });
-  integrator_ =
-      addChoice("integrator", tr("Integrator"), tr("Change Integrator"), integratorNames(),
-                [](World& world, int index) { world.integrator = Integrator(index); });
+  integrator_ = addChoice("integrator", QT_TR_NOOP("Integrator"), QT_TR_NOOP("Change Integrator"),
+                          integratorNames(),
+                          [](World& world, int index) { world.integrator = Integrator(index); });
 
   auto* scroll = new QScrollArea;
   scroll->setWidget(body);
@@ -124,12 +176,49 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
   scroll->setFrameShape(QFrame::NoFrame);
   setWidget(scroll);
 
-  connect(document_, &SceneDocument::sceneChanged, this, &PropertiesDock::refresh);
+  // Any change of the scene or the selection makes a refusal old news.
+  connect(document_, &SceneDocument::sceneChanged, this, [this] {
+    message_->clear();
+    refresh();
+  });
   connect(document_, &SceneDocument::selectionChanged, this, [this] {
     message_->clear();
     refresh();
   });
+  retranslate();
+}
+
+void PropertiesDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDockWidget::changeEvent(event);
+}
+
+void PropertiesDock::retranslate() {
+  setWindowTitle(tr("Properties"));
+  for (const Row& row : rows_) {
+    row.labelWidget->setText(tr(row.label));
+    if (row.unitWidget) row.unitWidget->setText(tr(row.unit));
+  }
+  const char* axes[3] = {"x", "y", "z"};
+  for (const NumberEditor& editor : numbers_) {
+    if (editor.number)
+      editor.edit->setName(label(editor.row));
+    else
+      editor.edit->setName(QString("%1 %2").arg(label(editor.row), axes[editor.component]));
+  }
+  restitution_->setName(label(restitutionRow_), tr("0 to 1; empty: the world's restitution"));
+  colorButton_->setText(tr("…"));
+  colorButton_->setToolTip(tr("Choose a colour"));
+  if (auto* dialog = findChild<QColorDialog*>()) dialog->setWindowTitle(tr("Object Colour"));
   refresh();
+}
+
+QString PropertiesDock::label(int row) const {
+  return tr(rows_[row].label);
+}
+
+QString PropertiesDock::change(int row) const {
+  return tr(rows_[row].change);
 }
 
 QString PropertiesDock::heading() const {
@@ -140,28 +229,30 @@ QString PropertiesDock::message() const {
   return message_->text();
 }
 
-int PropertiesDock::addRow(int kinds, const QString& label, const QString& change, QWidget* field,
-                           const QString& unit) {
-  auto* labelWidget = new QLabel(label);
+int PropertiesDock::addRow(int kinds, const char* label, const char* change, QWidget* field,
+                           const char* unit) {
+  auto* labelWidget = new QLabel;
   std::vector<QWidget*> widgets = {labelWidget};
   QWidget* shown = field;
-  if (!unit.isEmpty()) {
+  QLabel* unitWidget = nullptr;
+  if (unit) {
     shown = new QWidget;
     auto* line = new QHBoxLayout(shown);
     line->setContentsMargins(0, 0, 0, 0);
     line->addWidget(field, 1);
-    line->addWidget(new QLabel(unit));
+    unitWidget = new QLabel;
+    line->addWidget(unitWidget);
   }
   widgets.push_back(shown);
   labelWidget->setBuddy(field);
   form_->addRow(labelWidget, shown);
-  rows_.push_back({kinds, label, change, widgets});
+  rows_.push_back({kinds, label, change, unit, labelWidget, unitWidget, widgets});
   return static_cast<int>(rows_.size()) - 1;
 }
 
-void PropertiesDock::addNumber(int kinds, const char* name, const QString& label,
-                               const QString& change, const QString& unit, NumberAccess access) {
-  auto* edit = new QLineEdit;
+void PropertiesDock::addNumber(int kinds, const char* name, const char* label, const char* change,
+                               const char* unit, NumberAccess access) {
+  auto* edit = new NumberField;
   edit->setObjectName(name);
   const int row = addRow(kinds, label, change, edit, unit);
   numbers_.push_back({edit, row, access, nullptr, 0});
@@ -169,17 +260,16 @@ void PropertiesDock::addNumber(int kinds, const char* name, const QString& label
           [this, index = numbers_.size() - 1] { numberEdited(numbers_[index]); });
 }
 
-void PropertiesDock::addVector(int kinds, const char* name, const QString& label,
-                               const QString& change, const QString& unit, VectorAccess access) {
+void PropertiesDock::addVector(int kinds, const char* name, const char* label, const char* change,
+                               const char* unit, VectorAccess access) {
   auto* fields = new QWidget;
   auto* line = new QHBoxLayout(fields);
   line->setContentsMargins(0, 0, 0, 0);
   const int row = addRow(kinds, label, change, fields, unit);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
-    auto* edit = new QLineEdit;
+    auto* edit = new NumberField;
     edit->setObjectName(QString("%1.%2").arg(name, axes[a]));
-    edit->setToolTip(QString("%1 %2").arg(label, axes[a]));
     line->addWidget(edit);
     numbers_.push_back({edit, row, nullptr, access, a});
     connect(edit, &QLineEdit::editingFinished, this,
@@ -187,8 +277,8 @@ void PropertiesDock::addVector(int kinds, const char* name, const QString& label
   }
 }
 
-void PropertiesDock::addText(int kinds, const char* name, const QString& label,
-                             const QString& change, TextAccess access, QToolButton* extra) {
+void PropertiesDock::addText(int kinds, const char* name, const char* label, const char* change,
+                             TextAccess access, QToolButton* extra) {
   auto* edit = new QLineEdit;
   edit->setObjectName(name);
   QWidget* field = edit;
@@ -206,24 +296,24 @@ void PropertiesDock::addText(int kinds, const char* name, const QString& label,
 }
 
 void PropertiesDock::addRestitution() {
-  restitution_ = new QLineEdit;
+  restitution_ = new NumberField;
   restitution_->setObjectName("restitution");
-  restitution_->setToolTip(tr("0 to 1; empty: the world's restitution"));
-  restitutionRow_ = addRow(kObjects, tr("Restitution"), tr("Change Restitution"), restitution_);
+  restitutionRow_ =
+      addRow(kObjects, QT_TR_NOOP("Restitution"), QT_TR_NOOP("Change Restitution"), restitution_);
   connect(restitution_, &QLineEdit::editingFinished, this, &PropertiesDock::restitutionEdited);
 }
 
-QComboBox* PropertiesDock::addChoice(const char* name, const QString& label, const QString& change,
+QComboBox* PropertiesDock::addChoice(const char* name, const char* label, const char* change,
                                      const std::vector<std::string_view>& keys,
                                      void (*choose)(World&, int)) {
   auto* box = new QComboBox;
   box->setObjectName(name);
   for (std::string_view key : keys) box->addItem(QString::fromUtf8(key));
-  addRow(kWorld, label, change, box);
-  connect(box, &QComboBox::currentIndexChanged, this, [this, change, choose](int index) {
+  const int row = addRow(kWorld, label, change, box);
+  connect(box, &QComboBox::currentIndexChanged, this, [this, row, choose](int index) {
     Scene edited = document_->scene();
     choose(edited.world, index);
-    if (!(edited.world == document_->scene().world)) commit(edited, change);
+    commit(edited, this->change(row));
   });
   return box;
 }
@@ -265,25 +355,23 @@ void PropertiesDock::refresh() {
 
   const Selection refs = targets();
   const QString mixed = tr("mixed");
-  const auto show = [&](QLineEdit* edit, const std::optional<QString>& value) {
-    const QSignalBlocker blocker(edit);
-    edit->setText(value.value_or(QString()));
-    edit->setPlaceholderText(value ? QString() : mixed);
-    edit->setModified(false);
-  };
   for (const NumberEditor& editor : numbers_) {
     if (!shown[editor.row]) continue;
     const std::optional<double> value = common<double>(refs, [&](const ObjectRef& ref) {
       return editor.number ? *editor.number(scene, ref)
                            : (*editor.vector(scene, ref))[editor.component];
     });
-    show(editor.edit, value ? std::optional(formatNumber(*value)) : std::nullopt);
+    editor.edit->setValue(value);
+    editor.edit->setPlaceholderText(value ? QString() : mixed);
   }
   for (const TextEditor& editor : texts_) {
     if (!shown[editor.row]) continue;
     const std::optional<std::string> value =
         common<std::string>(refs, [&](const ObjectRef& ref) { return *editor.text(scene, ref); });
-    show(editor.edit, value ? std::optional(QString::fromStdString(*value)) : std::nullopt);
+    const QSignalBlocker blocker(editor.edit);
+    editor.edit->setText(value ? QString::fromStdString(*value) : QString());
+    editor.edit->setPlaceholderText(value ? QString() : mixed);
+    editor.edit->setModified(false);
   }
   if (shown[colorRow_]) {
     if (color_->placeholderText() != mixed) color_->setPlaceholderText(tr("default"));
@@ -295,11 +383,14 @@ void PropertiesDock::refresh() {
   if (shown[restitutionRow_]) {
     const auto value = common<std::optional<double>>(
         refs, [&](const ObjectRef& ref) { return objectInfo(scene, ref).restitution; });
-    show(restitution_,
-         value ? std::optional(*value ? formatNumber(**value) : QString()) : std::nullopt);
-    if (value && !*value)
+    restitution_->setValue(value ? *value : std::nullopt);
+    if (!value)
+      restitution_->setPlaceholderText(mixed);
+    else if (!*value)
       restitution_->setPlaceholderText(
           tr("world's (%1)").arg(formatNumber(scene.world.restitution)));
+    else
+      restitution_->setPlaceholderText(QString());
   }
   if (kinds == kWorld) {
     const QSignalBlocker methodBlocker(method_);
@@ -310,6 +401,10 @@ void PropertiesDock::refresh() {
 }
 
 bool PropertiesDock::commit(const Scene& edited, const QString& change) {
+  if (edited == document_->scene()) {
+    message_->clear();
+    return true;
+  }
   const QString error = document_->apply(edited, change);
   if (!error.isEmpty()) {
     refuse(error);
@@ -326,11 +421,14 @@ void PropertiesDock::refuse(const QString& message) {
 }
 
 void PropertiesDock::numberEdited(const NumberEditor& editor) {
-  if (!editor.edit->isModified()) return;
+  if (!editor.edit->isModified()) {
+    message_->clear();  // left holding a valid value: the scene's
+    return;
+  }
   editor.edit->setModified(false);
   const ParsedNumber parsed = parseNumber(editor.edit->text());
   if (!parsed.value) {
-    refuse(tr("%1: %2").arg(rows_[editor.row].label, parsed.problem));
+    refuse(tr("%1: %2").arg(label(editor.row), parsed.problem));
     return;
   }
   const double value = *parsed.value;
@@ -341,34 +439,40 @@ void PropertiesDock::numberEdited(const NumberEditor& editor) {
                       : &const_cast<Vec3*>(editor.vector(edited, ref))->coeffRef(editor.component);
     *field = value;
   }
-  if (!(edited == document_->scene())) commit(edited, rows_[editor.row].change);
+  commit(edited, change(editor.row));
 }
 
 void PropertiesDock::textEdited(const TextEditor& editor) {
-  if (!editor.edit->isModified()) return;
+  if (!editor.edit->isModified()) {
+    message_->clear();
+    return;
+  }
   editor.edit->setModified(false);
   Scene edited = document_->scene();
   const std::string value = editor.edit->text().trimmed().toStdString();
   for (const ObjectRef& ref : targets())
     *const_cast<std::string*>(editor.text(edited, ref)) = value;
-  if (!(edited == document_->scene())) commit(edited, rows_[editor.row].change);
+  commit(edited, change(editor.row));
 }
 
 void PropertiesDock::restitutionEdited() {
-  if (!restitution_->isModified()) return;
+  if (!restitution_->isModified()) {
+    message_->clear();
+    return;
+  }
   restitution_->setModified(false);
   std::optional<double> value;
   if (!restitution_->text().trimmed().isEmpty()) {
     const ParsedNumber parsed = parseNumber(restitution_->text());
     if (!parsed.value) {
-      refuse(tr("%1: %2").arg(rows_[restitutionRow_].label, parsed.problem));
+      refuse(tr("%1: %2").arg(label(restitutionRow_), parsed.problem));
       return;
     }
     value = parsed.value;
   }
   Scene edited = document_->scene();
   for (const ObjectRef& ref : targets()) objectInfo(edited, ref).restitution = value;
-  if (!(edited == document_->scene())) commit(edited, rows_[restitutionRow_].change);
+  commit(edited, change(restitutionRow_));
 }
 
 void PropertiesDock::pickColor() {
@@ -381,7 +485,7 @@ void PropertiesDock::pickColor() {
       Scene edited = document_->scene();
       for (const ObjectRef& ref : document_->selection())
         objectInfo(edited, ref).color = color.name().toStdString();
-      if (!(edited == document_->scene())) commit(edited, rows_[colorRow_].change);
+      commit(edited, change(colorRow_));
     });
   }
   const QColor current(color_->text());

@@ -1,7 +1,8 @@
 #pragma once
 // Edits every field of the selection, or the world settings when nothing is selected. Each
 // field is typed in; a change becomes one document command, checked by the same scene
-// validation the loader uses, and a refused value leaves the scene as it was.
+// validation the loader uses, and a refused value leaves the scene as it was. Numbers show six
+// significant digits, all of them while a field is edited and in its tooltip.
 
 #include "object_ref.h"
 #include "scene.h"
@@ -20,6 +21,7 @@ class QToolButton;
 
 namespace carom::ui {
 
+class NumberField;
 class SceneDocument;
 
 class PropertiesDock : public QDockWidget {
@@ -29,12 +31,16 @@ class PropertiesDock : public QDockWidget {
 
   // What the dock shows at the top: the object's name, a count of the selection, or "World".
   QString heading() const;
-  // The last refusal, shown under the fields until the next successful edit.
+  // The last refusal, shown under the fields until a field is entered or left with a valid
+  // value, or the scene or the selection changes.
   QString message() const;
 
  signals:
   // A typed value was refused; the text says why.
   void refused(const QString& message);
+
+ protected:
+  void changeEvent(QEvent* event) override;
 
  private:
   // Which objects a row applies to; a row shows when every selected object is of its kinds.
@@ -46,14 +52,18 @@ class PropertiesDock : public QDockWidget {
   using VectorAccess = const Vec3* (*)(const Scene&, const ObjectRef&);
   using TextAccess = const std::string* (*)(const Scene&, const ObjectRef&);
 
+  // Texts are kept untranslated and translated when shown, so that they follow the language.
   struct Row {
     int kinds;
-    QString label;
-    QString change;  // the command's text
+    const char* label;
+    const char* change;  // the command's text
+    const char* unit;    // or null
+    QLabel* labelWidget;
+    QLabel* unitWidget;  // or null
     std::vector<QWidget*> widgets;
   };
   struct NumberEditor {
-    QLineEdit* edit;
+    NumberField* edit;
     int row;
     NumberAccess number;  // a number field, or
     VectorAccess vector;  // one component of a vector field
@@ -65,26 +75,31 @@ class PropertiesDock : public QDockWidget {
     TextAccess text;
   };
 
-  int addRow(int kinds, const QString& label, const QString& change, QWidget* field,
-             const QString& unit = {});
-  void addNumber(int kinds, const char* name, const QString& label, const QString& change,
-                 const QString& unit, NumberAccess access);
-  void addVector(int kinds, const char* name, const QString& label, const QString& change,
-                 const QString& unit, VectorAccess access);
-  void addText(int kinds, const char* name, const QString& label, const QString& change,
+  int addRow(int kinds, const char* label, const char* change, QWidget* field,
+             const char* unit = nullptr);
+  void addNumber(int kinds, const char* name, const char* label, const char* change,
+                 const char* unit, NumberAccess access);
+  void addVector(int kinds, const char* name, const char* label, const char* change,
+                 const char* unit, VectorAccess access);
+  void addText(int kinds, const char* name, const char* label, const char* change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
   // A world setting chosen from `keys`; `choose` sets the index chosen.
-  QComboBox* addChoice(const char* name, const QString& label, const QString& change,
+  QComboBox* addChoice(const char* name, const char* label, const char* change,
                        const std::vector<std::string_view>& keys, void (*choose)(World&, int));
 
+  // Every text in the current language.
+  void retranslate();
+  QString label(int row) const;
+  QString change(int row) const;
   // Document to fields.
   void refresh();
   int selectedKinds() const;
   // The objects an edit applies to: the selection, or, for the world, one reference the world
   // rows' accessors ignore.
   Selection targets() const;
-  // Fields to document, as one command; false (and a message) when refused.
+  // Fields to document, as one command; false (and a message) when refused. An edit that
+  // changes nothing is no command, and takes the message away as a successful one does.
   bool commit(const Scene& edited, const QString& change);
   void refuse(const QString& message);
   void numberEdited(const NumberEditor& editor);
@@ -100,7 +115,7 @@ class PropertiesDock : public QDockWidget {
   std::vector<NumberEditor> numbers_;
   std::vector<TextEditor> texts_;
   int restitutionRow_ = -1;
-  QLineEdit* restitution_ = nullptr;
+  NumberField* restitution_ = nullptr;
   int colorRow_ = -1;
   QLineEdit* color_ = nullptr;
   QToolButton* colorButton_ = nullptr;

@@ -52,14 +52,34 @@ SceneDocument::SceneDocument(QObject* parent)
 }
 
 QString SceneDocument::displayName() const {
-  return fileName_.isEmpty() ? tr("untitled") : QFileInfo(fileName_).fileName();
+  if (!fileName_.isEmpty()) return QFileInfo(fileName_).fileName();
+  return title_.isEmpty() ? tr("untitled") : title_;
 }
 
-void SceneDocument::reset(const Scene& scene, const QString& fileName) {
+void SceneDocument::setTitle(const QString& title) {
+  if (title == title_) return;
+  title_ = title;
+  if (fileName_.isEmpty()) emit displayNameChanged();
+}
+
+Scene SceneDocument::newScene() {
+  Scene scene;
+  Plane floor;
+  floor.point = Vec3::Zero();
+  floor.normal = Vec3::UnitY();
+  floor.name = tr("floor").toUtf8().toStdString();
+  scene.planes.push_back(floor);
+  return scene;
+}
+
+void SceneDocument::reset(const Scene& scene, const QString& fileName, const QString& title) {
   undoStack_.clear();
+  // clear() leaves an empty stack's clean state alone, and a recovered scene's was unset.
+  undoStack_.setClean();
   fileName_ = fileName;
+  title_ = title;
   setState(std::make_shared<const Scene>(scene), {});
-  emit fileNameChanged();
+  emit displayNameChanged();
   emit modifiedChanged(false);
 }
 
@@ -67,7 +87,7 @@ void SceneDocument::markSaved(const QString& fileName) {
   const bool renamed = fileName != fileName_;
   fileName_ = fileName;
   undoStack_.setClean();
-  if (renamed) emit fileNameChanged();
+  if (renamed) emit displayNameChanged();
 }
 
 QString SceneDocument::apply(const Scene& edited, const QString& text, const Selection& selection,

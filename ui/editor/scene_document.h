@@ -24,12 +24,18 @@ class SceneDocument : public QObject {
 
   // The file the scene was read from or last saved to; empty for a new scene.
   QString fileName() const { return fileName_; }
-  // For the title: the file's base name, or "untitled".
+  // For the title and the questions about saving: the file's name, else the title it was opened
+  // with (an example's), else "untitled".
   QString displayName() const;
   bool isModified() const { return !undoStack_.isClean(); }
 
-  // New and Open: `scene` (valid) replaces the document's, with an empty history.
-  void reset(const Scene& scene, const QString& fileName);
+  // New and Open: `scene` (valid) replaces the document's, unmodified, with an empty history.
+  // `title` names a scene that has no file yet.
+  void reset(const Scene& scene, const QString& fileName, const QString& title = {});
+  // Renames a scene that has no file yet (an example's title in another language).
+  void setTitle(const QString& title);
+  // What File > New gives: the default world and a floor at y = 0 to build on.
+  static Scene newScene();
   // After a successful save to `fileName`: the current state becomes the unmodified one.
   void markSaved(const QString& fileName);
   // A scene recovered after a crash: unsaved, with no history to undo back to the saved file.
@@ -56,7 +62,8 @@ class SceneDocument : public QObject {
   // After every change of the scene: an edit, undo, redo or reset.
   void sceneChanged();
   void selectionChanged();
-  void fileNameChanged();
+  // The file name or the title changed, and with them displayName().
+  void displayNameChanged();
   void modifiedChanged(bool modified);
 
  private:
@@ -69,6 +76,7 @@ class SceneDocument : public QObject {
   std::shared_ptr<const Scene> scene_;
   Selection selection_;
   QString fileName_;
+  QString title_;
   QUndoStack undoStack_;
   int lastGesture_ = 0;
 };

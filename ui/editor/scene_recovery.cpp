@@ -53,7 +53,8 @@ SceneRecovery::SceneRecovery(SceneDocument* document, QObject* parent)
   lock_->setStaleLockTime(0);
   lock_->tryLock(0);
   connect(document_, &SceneDocument::sceneChanged, this, [this] { changedSinceCopy_ = true; });
-  connect(document_, &SceneDocument::fileNameChanged, this, [this] { changedSinceCopy_ = true; });
+  connect(document_, &SceneDocument::displayNameChanged, this,
+          [this] { changedSinceCopy_ = true; });
   connect(document_, &SceneDocument::modifiedChanged, this, [this](bool modified) {
     changedSinceCopy_ = modified;
     if (!modified) removeCopy();  // saved, or back at the saved state: nothing to recover

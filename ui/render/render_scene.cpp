@@ -24,6 +24,11 @@ QColor colorOr(const std::string& text, const char* fallback) {
 // A plane counts as a wall of the box when its normal lies along a coordinate axis.
 constexpr double kAxisAlignedTolerance = 1e-9;
 
+// The least a scene shows: 10 m without balls, else 20 radii of its largest ball (10 m for the
+// editor's first ball), so that its scale follows the balls'.
+constexpr double kEmptySceneSize = 10.0;
+constexpr double kRoomPerBallRadius = 20.0;
+
 // 1, 2 or 5 times a power of ten, close to `value`: grid spacings people read at a glance.
 double niceStep(double value) {
   const double decade = std::pow(10.0, std::floor(std::log10(value)));
@@ -49,11 +54,17 @@ Bounds sceneBounds(const Scene& scene) {
     include(ball.position, ball.radius);
     maxBallRadius = std::max(maxBallRadius, ball.radius);
   }
-  // Without balls the static objects are all there is to look at.
-  if (scene.balls.empty()) {
-    for (const Cylinder& cylinder : scene.cylinders) include(cylinder.point, cylinder.radius);
-    for (const Plane& plane : scene.planes) include(plane.point, 0.0);
-  }
+  // Every plane and cylinder is drawn through its own point, wherever that lies: a wall placed
+  // away from the balls is seen. A box containing the point always meets the shape.
+  Vec3 anchorMin = Vec3::Constant(kInf);
+  Vec3 anchorMax = Vec3::Constant(-kInf);
+  auto anchor = [&](const Vec3& point) {
+    anchorMin = anchorMin.cwiseMin(point);
+    anchorMax = anchorMax.cwiseMax(point);
+    include(point, 0.0);
+  };
+  for (const Cylinder& cylinder : scene.cylinders) anchor(cylinder.point);
+  for (const Plane& plane : scene.planes) anchor(plane.point);
   if (!(contentMin.array() <= contentMax.array()).all()) {
     contentMin = Vec3::Constant(-5.0);
     contentMax = Vec3::Constant(5.0);
@@ -82,10 +93,17 @@ Bounds sceneBounds(const Scene& scene) {
   }
   for (int axis = 0; axis < 3; ++axis) {
     if (upper[axis] < lower[axis]) std::swap(lower[axis], upper[axis]);
+    // A wall closes its side, but not in front of an object standing beyond it (a second floor
+    // below the first, a cylinder placed outside the room).
+    if (lowerIsWall[axis]) lower[axis] = std::min(lower[axis], anchorMin[axis]);
+    if (upperIsWall[axis]) upper[axis] = std::max(upper[axis], anchorMax[axis]);
   }
 
   double maxExtent = (upper - lower).maxCoeff();
   if (!(maxExtent > 1e-6)) maxExtent = 1.0;
+  // Room to build on: a new scene's floor does not shrink to a strip around its first balls.
+  maxExtent = std::max(maxExtent,
+                       scene.balls.empty() ? kEmptySceneSize : kRoomPerBallRadius * maxBallRadius);
   const double pad = std::max(0.1 * maxExtent, 2.0 * maxBallRadius);
   for (int axis = 0; axis < 3; ++axis) {
     const double extent = upper[axis] - lower[axis];

@@ -272,6 +272,8 @@ PackedColor pack(const QColor& color) {
 }
 
 const QColor kSelectionColor(255, 140, 13);
+// The world's axes through the origin: x red, y green, z blue, as in most 3D tools.
+const QColor kAxisColors[3] = {QColor(214, 69, 65), QColor(90, 180, 90), QColor(70, 120, 220)};
 
 // Selected planes and cylinders take on the selection's colour.
 QColor shown(const QColor& color, bool selected) {
@@ -523,6 +525,7 @@ void SceneView::setExplosionLimit(int limit) {
 
 void SceneView::frameScene() {
   setFollowedBall(-1);
+  autoFrame_ = true;  // and again when the view is resized, until the user moves the camera
   if (scene_) camera_.home(scene_->bounds);
   update();
 }
@@ -766,6 +769,32 @@ void SceneView::setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
 Eigen::AlignedBox3d SceneView::clipBox() const {
   if (!scene_) return Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
   return Eigen::AlignedBox3d(scene_->bounds.min, scene_->bounds.max);
+}
+
+void SceneView::drawAxes(const QMatrix4x4& viewProjection) {
+  if (!scene_) return;
+  std::vector<Float3> lines;
+  std::vector<QColor> colors;
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 start;
+    Vec3 end;
+    if (!clipLineToBounds(Vec3::Zero(), Vec3::Unit(axis), scene_->bounds, &start, &end)) continue;
+    lines.insert(lines.end(), {toFloat3(start), toFloat3(end)});
+    colors.push_back(kAxisColors[axis]);
+  }
+  if (lines.empty()) return;
+  uploadBuffer(this, lineBuffer_, lines, GL_STREAM_DRAW);
+  lineProgram_->bind();
+  lineProgram_->setUniformValue("viewProjection", viewProjection);
+  glBindVertexArray(lineVao_);
+  // The x and z axes lie in a floor at y = 0, which is drawn pushed back a little for them.
+  glDepthFunc(GL_LEQUAL);
+  for (std::size_t i = 0; i < colors.size(); ++i) {
+    lineProgram_->setUniformValue(
+        "lineColor", QVector3D(colors[i].redF(), colors[i].greenF(), colors[i].blueF()));
+    glDrawArrays(GL_LINES, static_cast<GLint>(2 * i), 2);
+  }
+  glDepthFunc(GL_LESS);
 }
 
 void SceneView::drawHandleArrow(const QMatrix4x4& viewProjection, const QVector3D& eye) {
@@ -1096,8 +1125,13 @@ void SceneView::paintGL() {
   if (planeVertexCount_ > 0) {
     use(*planeProgram_);
     glBindVertexArray(planeVao_);
+    // Pushed back by a step of depth, so that lines lying in a plane (the axes) show on it.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
     glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
+    glDisable(GL_POLYGON_OFFSET_FILL);
   }
+  drawAxes(viewProjection);
   drawExplosions(viewProjection, eye);
   drawHandleArrow(viewProjection, eye);
 

@@ -105,6 +105,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
  private:
   void releaseGl();
+  // The world's x, y and z axes through the origin, across the scene's bounds.
+  void drawAxes(const QMatrix4x4& viewProjection);
   void drawHandleArrow(const QMatrix4x4& viewProjection, const QVector3D& eye);
   // Binds the multisampled framebuffer, made or resized to the view; false if it cannot be.
   bool bindMultisampleBuffer();

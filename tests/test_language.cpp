@@ -1,0 +1,427 @@
+// The program in German and Russian as a user meets it: the language changed live from
+// View > Language, Qt's own dialogs in the same language, dates in its format, the toolbar whole
+// at the default width in every language, and the Help menu's windows.
+//
+// With CAROM_SCREENSHOT_DIR set, pictures of the window and of the dialogs are saved there.
+
+#include "editor_fixture.h"
+#include "help_dialogs.h"
+#include "language.h"
+#include "outline_dock.h"
+#include "properties_dock.h"
+#include "scene_file.h"
+#include "scene_recovery.h"
+
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTextBrowser>
+#include <QToolBar>
+#include <QUndoView>
+
+using carom::ui::ObjectKind;
+
+namespace {
+
+// Saves `widget`'s picture as NAME.png in CAROM_SCREENSHOT_DIR, when that is set.
+void keepPicture(QWidget* widget, const QString& name) {
+  const QString folder = qEnvironmentVariable("CAROM_SCREENSHOT_DIR");
+  if (folder.isEmpty()) return;
+  QDir().mkpath(folder);
+  QVERIFY(widget->grab().save(QDir(folder).filePath(name + ".png")));
+}
+
+}  // namespace
+
+class TestLanguage : public carom::testing::EditorFixture {
+  Q_OBJECT
+
+ private slots:
+  void init() { openWindow(); }
+  void cleanup() {
+    window_.reset();
+    carom::ui::installTranslation(*QCoreApplication::instance(), "en");
+  }
+
+  void switchesLanguageLiveFromTheMenu();
+  void qtDialogsSpeakTheLanguage_data();
+  void qtDialogsSpeakTheLanguage();
+  void recoveryDateFollowsTheLanguage_data();
+  void recoveryDateFollowsTheLanguage();
+  void toolbarFitsAtTheDefaultWidth_data();
+  void toolbarFitsAtTheDefaultWidth();
+  void examplesAreListedByTitle();
+  void keyboardAndMouseReference();
+  void aboutBox();
+  void physicsNotes();
+  void countsTakeTheirPluralForms_data();
+  void countsTakeTheirPluralForms();
+  void exampleTitleAndToolbarMessagesFollowTheLanguage();
+
+ private:
+  QMenu* menu(const QString& title) {
+    for (QAction* action : window_->menuBar()->actions())
+      if (action->menu() && action->text().remove('&') == title) return action->menu();
+    qWarning("no menu %s", qPrintable(title));
+    return nullptr;
+  }
+  QStringList menuTitles() {
+    QStringList titles;
+    for (QAction* action : window_->menuBar()->actions()) titles << action->text().remove('&');
+    return titles;
+  }
+  // Chooses a language as a user does, through View > Language.
+  void chooseLanguage(const QString& code) {
+    QAction* action = window_->findChild<QAction*>("language:" + code);
+    QVERIFY(action);
+    action->trigger();
+    QVERIFY(action->isChecked());
+  }
+  // The text of the label standing before the properties dock's field `name` (a vector's three
+  // fields share one).
+  QString labelOf(const QString& name) {
+    auto* field = window_->propertiesDock()->findChild<QLineEdit*>(name);
+    for (QLabel* label : window_->propertiesDock()->findChildren<QLabel*>())
+      if (label->buddy() == field || label->buddy() == field->parentWidget()) return label->text();
+    return {};
+  }
+  // The quit prompt's buttons, read as it is up and then cancelled.
+  QStringList quitPromptButtons(const QString& picture) {
+    QStringList texts;
+    carom::testing::ModalAnswerer<QMessageBox> answer([&](QMessageBox* box) {
+      for (auto button : {QMessageBox::Save, QMessageBox::Discard, QMessageBox::Cancel})
+        texts << box->button(button)->text().remove('&');
+      keepPicture(box, picture);
+      box->button(QMessageBox::Cancel)->click();
+    });
+    window_->close();
+    [&] { QTRY_VERIFY(answer.answered()); }();
+    return texts;
+  }
+  void makeModified() {
+    carom::Scene edited = document().scene();
+    edited.balls[0].mass = 2.0;
+    QVERIFY(document().apply(edited, "heavier").isEmpty());
+  }
+};
+
+void TestLanguage::switchesLanguageLiveFromTheMenu() {
+  document().setSelection({});
+  QCOMPARE(menuTitles().first(), QString("File"));
+  QVERIFY(menuTitles().contains("Help") && menuTitles().contains("Tools"));
+  makeModified();
+  auto* undoView = window_->findChild<QUndoView*>();
+  QVERIFY(undoView);
+
+  chooseLanguage("de");
+  // The events that carry the change are posted: the texts follow on the next turn.
+  QTRY_COMPARE(menuTitles().first(), QString("Datei"));
+  QVERIFY2(menuTitles().contains("Hilfe"), qPrintable(menuTitles().join(", ")));
+  QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Starten"));
+  QCOMPARE(window_->findChild<QAction*>("toolAddBall")->text(), QString("Kugel hinzufügen"));
+  QCOMPARE(window_->findChild<QAction*>("toolAddBall")->toolTip(), QString("Kugel hinzufügen (B)"));
+  QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Eigenschaften"));
+  QCOMPARE(window_->outlineDock()->windowTitle(), QString("Übersicht"));
+  QCOMPARE(window_->propertiesDock()->toggleViewAction()->text(), QString("Eigenschaften"));
+  // The properties dock's labels, heading and numbers, in German and its number format.
+  QCOMPARE(labelOf("timeStep"), QString("Zeitschritt"));
+  QCOMPARE(labelOf("gravity.x"), QString("Schwerkraft"));
+  QCOMPARE(window_->propertiesDock()->heading(), QString("Welt (nichts ausgewählt)"));
+  auto* gravityY = window_->propertiesDock()->findChild<QLineEdit*>("gravity.y");
+  QCOMPARE(gravityY->text(), QString("-9,81"));
+  // The outline's groups, the toolbar's boxes and the status line.
+  QCOMPARE(window_->outlineDock()->model()->groupIndex(ObjectKind::Ball).data().toString(),
+           QString("Kugeln (1)"));
+  QCOMPARE(window_->findChild<QDoubleSpinBox*>("gravityY")->text(), QString("-9,81"));
+  // Edit > Undo names the last command after the language's own word.
+  const QList<QAction*> edit = menu("Bearbeiten")->actions();
+  QVERIFY2(edit.first()->text().startsWith("&Rückgängig"), qPrintable(edit.first()->text()));
+  // Qt's own texts come from Qt's translation: the quit prompt's standard buttons.
+  QCOMPARE(quitPromptButtons("quit-de-live"), (QStringList{"Speichern", "Verwerfen", "Abbrechen"}));
+  QVERIFY(window_->isVisible());
+
+  chooseLanguage("en");
+  QTRY_COMPARE(menuTitles().first(), QString("File"));
+  QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Run"));
+  QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Properties"));
+  QCOMPARE(labelOf("timeStep"), QString("Time step"));
+  QCOMPARE(gravityY->text(), QString("-9.81"));
+  QCOMPARE(window_->outlineDock()->model()->groupIndex(ObjectKind::Ball).data().toString(),
+           QString("Balls (1)"));
+  QCOMPARE(quitPromptButtons("quit-en-live"), (QStringList{"Save", "Discard", "Cancel"}));
+  // The choice is kept for the next start.
+  QCOMPARE(carom::ui::chosenLanguage({}), QString("en"));
+}
+
+void TestLanguage::qtDialogsSpeakTheLanguage_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<QStringList>("buttons");
+  QTest::addColumn<QString>("emptyHistory");
+  QTest::newRow("de") << "de" << QStringList{"Speichern", "Verwerfen", "Abbrechen"} << "<leer>";
+  QTest::newRow("ru") << "ru" << QStringList{"Сохранить", "Отклонить", "Отмена"} << "<пусто>";
+}
+
+// Qt's own texts (standard buttons, the file dialog, the undo view) are Qt's translation's, for
+// a window opened in the language as after a start with --lang.
+void TestLanguage::qtDialogsSpeakTheLanguage() {
+  QFETCH(QString, code);
+  QFETCH(QStringList, buttons);
+  QFETCH(QString, emptyHistory);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  openWindow();
+  keepPicture(window_.get(), "window-" + code);
+  makeModified();
+  QCOMPARE(quitPromptButtons("quit-" + code), buttons);
+  QCOMPARE(window_->findChild<QUndoView*>()->emptyLabel(), emptyHistory);
+  // The file dialog's buttons.
+  QString cancel;
+  carom::testing::ModalAnswerer<QFileDialog> answer([&](QFileDialog* dialog) {
+    for (QPushButton* button : dialog->findChildren<QPushButton*>())
+      if (button->isVisible()) cancel += button->text().remove('&') + ";";
+    keepPicture(dialog, "save-as-" + code);
+    dialog->reject();
+  });
+  QVERIFY(!window_->saveAs());
+  QVERIFY(answer.answered());
+  QVERIFY2(cancel.contains(buttons[2]), qPrintable(cancel));
+}
+
+void TestLanguage::recoveryDateFollowsTheLanguage_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<QString>("recover");
+  QTest::newRow("de") << "de"
+                      << "Wiederherstellen";
+  QTest::newRow("ru") << "ru"
+                      << "Восстановить";
+}
+
+void TestLanguage::recoveryDateFollowsTheLanguage() {
+  QFETCH(QString, code);
+  QFETCH(QString, recover);
+  // What a session that crashed leaves: a scene without a live lock, saved at a known time, and
+  // nothing else to offer.
+  QDir folder(carom::ui::SceneRecovery::folder());
+  for (const QString& old : folder.entryList({"*.carom"}, QDir::Files)) folder.remove(old);
+  const QString scene = QDir(carom::ui::SceneRecovery::folder()).filePath("crashed-1.carom");
+  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), scene, nullptr));
+  const QDateTime saved(QDate(2026, 11, 23), QTime(17, 5));
+  {
+    QFile file(scene);
+    QVERIFY(file.open(QIODevice::ReadWrite));
+    QVERIFY(file.setFileTime(saved, QFileDevice::FileModificationTime));
+  }
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  // As at a start: the language is in place before the question is asked.
+  QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+  QString text;
+  QString button;
+  carom::testing::ModalAnswerer<QMessageBox> answer([&](QMessageBox* box) {
+    text = box->text();
+    button = box->button(QMessageBox::Yes)->text().remove('&');
+    keepPicture(box, "recovery-" + code);
+    box->button(QMessageBox::No)->click();  // discards the copy
+  });
+  QVERIFY(!window_->offerRecovery());
+  QVERIFY(answer.answered());
+  QCOMPARE(button, recover);
+  const QString date = QLocale(code).toString(saved, QLocale::ShortFormat);
+  QVERIFY2(text.contains(date), qPrintable(text + " / " + date));
+  QVERIFY2(!text.contains(QLocale(QLocale::English).toString(saved, QLocale::ShortFormat)),
+           qPrintable(text));
+  QVERIFY(!QFile::exists(scene));
+}
+
+void TestLanguage::toolbarFitsAtTheDefaultWidth_data() {
+  QTest::addColumn<QString>("code");
+  QTest::newRow("en") << "en";
+  QTest::newRow("de") << "de";
+  QTest::newRow("ru") << "ru";
+}
+
+// At 1280 x 800 no toolbar control goes into an overflow menu, and the view keeps most of the
+// window.
+void TestLanguage::toolbarFitsAtTheDefaultWidth() {
+  QFETCH(QString, code);
+  window_.reset();
+  carom::ui::installTranslation(*QCoreApplication::instance(), code);
+  openWindow();
+  window_->resize(1280, 800);
+  QTRY_COMPARE(window_->width(), 1280);
+  const QList<QToolBar*> bars = window_->findChildren<QToolBar*>();
+  QCOMPARE(bars.size(), 3);
+  for (QToolBar* bar : bars) {
+    QVERIFY(bar->isVisible());
+    for (QAction* action : bar->actions()) {
+      if (action->isSeparator()) continue;
+      QWidget* widget = bar->widgetForAction(action);
+      QVERIFY(widget);
+      QVERIFY2(widget->isVisible() && bar->rect().contains(widget->geometry()),
+               qPrintable(bar->objectName() + ": " + action->text()));
+    }
+    // Qt's "»" button, shown only when something does not fit.
+    for (QWidget* child : bar->findChildren<QWidget*>("qt_toolbar_ext_button"))
+      QVERIFY2(!child->isVisible(), qPrintable(bar->objectName()));
+  }
+  QVERIFY2(
+      window_->view()->width() > 900 && window_->view()->height() > 450,
+      qPrintable(QString("%1x%2").arg(window_->view()->width()).arg(window_->view()->height())));
+  keepPicture(window_.get(), "toolbar-" + code);
+}
+
+void TestLanguage::examplesAreListedByTitle() {
+  QMenu* examples = menu("Examples");
+  QVERIFY(examples);
+  QStringList titles;
+  for (QAction* action : examples->actions()) titles << action->text();
+  QCOMPARE(titles, (QStringList{"Magic room", "Galton board", "Gas box", "Inelastic pile",
+                                "Newton's cradle"}));
+  // Every bundled scene is there.
+  QCOMPARE(QDir(":/scenes").entryList({"*.json"}).size(), titles.size());
+  window_->findChild<QAction*>("example:newtons-cradle")->trigger();
+  QCOMPARE(document().scene().balls.size(), std::size_t{5});
+  QVERIFY2(window_->windowTitle().startsWith("Newton's cradle"),
+           qPrintable(window_->windowTitle()));
+  // Save As offers the file's name, not the title.
+  QStringList suggested;
+  carom::testing::ModalAnswerer<QFileDialog> answer([&](QFileDialog* dialog) {
+    suggested = dialog->selectedFiles();
+    dialog->reject();
+  });
+  QVERIFY(!window_->saveAs());
+  QVERIFY(answer.answered());
+  QCOMPARE(suggested.size(), 1);
+  QVERIFY2(suggested.first().endsWith("/newtons-cradle.carom"), qPrintable(suggested.first()));
+
+  chooseLanguage("ru");
+  QTRY_COMPARE(examples->actions().last()->text(), QString("Колыбель Ньютона"));
+  window_->findChild<QAction*>("example:galton-board")->trigger();
+  QVERIFY2(window_->windowTitle().startsWith("Доска Гальтона"), qPrintable(window_->windowTitle()));
+}
+
+void TestLanguage::keyboardAndMouseReference() {
+  window_->findChild<QAction*>("keyboardHelp")->trigger();
+  auto* help = window_->findChild<carom::ui::HelpWindow*>();
+  QVERIFY(help && help->page() == carom::ui::HelpWindow::Page::KeyboardAndMouse);
+  QTRY_VERIFY(help->isVisible());
+  QCOMPARE(help->windowTitle(), QString("Keyboard and Mouse"));
+  const QString text = help->text();
+  // A few of every kind: keys of the window, the tools, the view, the edit menu, the mouse.
+  for (const char* expected :
+       {"Space", "Run or pause the simulation", "F11, F1", "Home", "Add Cylinder", "Ctrl+Z",
+        "Ctrl+Shift+Z, Ctrl+Y", "Ctrl+D", "Middle drag", "Alt+drag from a ball",
+        "Double-click, F2 (in the outline)", "X, Y or Z held while dragging", "F3"})
+    QVERIFY2(text.contains(expected), expected);
+  keepPicture(help, "keyboard-en");
+
+  chooseLanguage("de");
+  QTRY_COMPARE(help->windowTitle(), QString("Tastatur und Maus"));
+  // Key names from Qt's translation, descriptions from Carom's.
+  QVERIFY2(help->text().contains("Strg+Z") && help->text().contains("Leertaste"),
+           qPrintable(help->text()));
+  QVERIFY(help->text().contains("Simulation starten oder anhalten"));
+  keepPicture(help, "keyboard-de");
+}
+
+void TestLanguage::aboutBox() {
+  QString title, text;
+  carom::testing::ModalAnswerer<QMessageBox> answer([&](QMessageBox* box) {
+    title = box->windowTitle();
+    text = box->text();
+    keepPicture(box, "about");
+    box->accept();
+  });
+  window_->findChild<QAction*>("about")->trigger();
+  QVERIFY(answer.answered());
+  QCOMPARE(title, QString("About Carom"));
+  QVERIFY2(text.contains(QString("Carom %1").arg(QCoreApplication::applicationVersion())),
+           qPrintable(text));
+  QVERIFY2(text.contains(QString("Qt version %1").arg(qVersion())), qPrintable(text));
+  QVERIFY(text.contains("MIT"));
+}
+
+void TestLanguage::physicsNotes() {
+  window_->findChild<QAction*>("physicsNotes")->trigger();
+  auto* notes = window_->findChild<carom::ui::HelpWindow*>();
+  QVERIFY(notes && notes->page() == carom::ui::HelpWindow::Page::PhysicsNotes);
+  QTRY_VERIFY(notes->isVisible());
+  QCOMPARE(notes->windowTitle(), QString("Physics Notes"));
+  // docs/physics.md, rendered: headings without their marks.
+  QVERIFY(notes->text().contains("Carom's physics"));
+  QVERIFY(notes->text().contains("Contact times"));
+  QVERIFY(!notes->text().contains("## "));
+  auto* browser = notes->findChild<QTextBrowser*>();
+  QVERIFY(browser && browser->isReadOnly());
+  keepPicture(notes, "physics-notes");
+}
+
+// "1 ball", "2 balls"; in Russian "1 шар", "2 шара", "5 шаров": the status line's count and the
+// properties dock's heading.
+void TestLanguage::countsTakeTheirPluralForms_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<int>("balls");
+  QTest::addColumn<QString>("readout");
+  QTest::addColumn<QString>("heading");
+  QTest::newRow("en 1") << "en" << 1 << " 1 ball "
+                        << "";
+  QTest::newRow("en 2") << "en" << 2 << " 2 balls "
+                        << "3 objects selected";
+  QTest::newRow("ru 1") << "ru" << 1 << QString::fromUtf8(" 1 шар ") << "";
+  QTest::newRow("ru 2") << "ru" << 2 << QString::fromUtf8(" 2 шара ")
+                        << QString::fromUtf8("Выбрано 3 объекта");
+  QTest::newRow("ru 5") << "ru" << 5 << QString::fromUtf8(" 5 шаров ")
+                        << QString::fromUtf8("Выбрано 6 объектов");
+}
+
+void TestLanguage::countsTakeTheirPluralForms() {
+  QFETCH(QString, code);
+  QFETCH(int, balls);
+  QFETCH(QString, readout);
+  QFETCH(QString, heading);
+  chooseLanguage(code);
+  carom::Scene scene = carom::testing::floorScene();
+  while (static_cast<int>(scene.balls.size()) < balls) {
+    carom::Ball ball = scene.balls.back();
+    ball.position.x() += 1.1;
+    scene.balls.push_back(ball);
+  }
+  window_->openScene(scene, {});
+  window_->setRunning(true);
+  QTRY_VERIFY2(window_->statusText().contains(readout), qPrintable(window_->statusText()));
+  window_->setRunning(false);
+  if (heading.isEmpty()) return;
+  carom::ui::Selection all;
+  for (int i = 0; i < balls; ++i) all.push_back({ObjectKind::Ball, i});
+  all.push_back({ObjectKind::Plane, 0});
+  document().setSelection(all);
+  // Balls and a plane: the heading counts objects.
+  const auto* label = window_->propertiesDock()->findChild<QLabel*>("propertiesHeading");
+  QVERIFY(label);
+  QCOMPARE(label->text(), heading);
+}
+
+// An open example's title, and a toolbar box's name in its refusal, follow a live change.
+void TestLanguage::exampleTitleAndToolbarMessagesFollowTheLanguage() {
+  window_->findChild<QAction*>("example:magic-room")->trigger();
+  QVERIFY(window_->windowTitle().startsWith("Magic room"));
+  chooseLanguage("de");
+  QTRY_VERIFY2(window_->windowTitle().startsWith("Magischer Raum"),
+               qPrintable(window_->windowTitle()));
+  auto* timeStep = window_->findChild<QDoubleSpinBox*>("timeStep");
+  QVERIFY(timeStep);
+  QTest::mouseClick(timeStep, Qt::LeftButton);
+  QTest::keyClick(timeStep, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(timeStep, Qt::Key_Backspace);
+  QTest::keyClicks(timeStep, "2e9");
+  QTest::keyClick(timeStep, Qt::Key_Return);
+  QVERIFY2(window_->statusMessage().startsWith("Zeitschritt"),
+           qPrintable(window_->statusMessage()));
+}
+
+QTEST_MAIN(TestLanguage)
+#include "test_language.moc"

@@ -1,0 +1,138 @@
+// The editor's scene surgery: removing, extracting and appending objects must leave every other
+// object exactly as it was, names and colours included, wherever the removed ones stood.
+
+#include "object_ref.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <string>
+
+using carom::Ball;
+using carom::Cylinder;
+using carom::Plane;
+using carom::Scene;
+using carom::Vec3;
+using carom::ui::ObjectKind;
+using carom::ui::ObjectRef;
+using carom::ui::Selection;
+
+namespace {
+
+constexpr int kPerKind = 5;
+
+// Every object named and coloured after its kind and index, so that any mix-up shows.
+Scene namedScene() {
+  Scene scene;
+  for (int i = 0; i < kPerKind; ++i) {
+    const std::string tag = std::to_string(i);
+    Ball ball;
+    ball.position = Vec3(3.0 * i, 1, 0);
+    ball.name = "ball " + tag;
+    ball.color = "#1000" + tag + "0";
+    ball.restitution = 0.1 * i;
+    ball.extra = "{\"tag\":" + tag + "}";
+    scene.balls.push_back(ball);
+    Plane plane;
+    plane.point = Vec3(0, -1.0 - i, 0);
+    plane.name = "plane " + tag;
+    plane.color = "#2000" + tag + "0";
+    scene.planes.push_back(plane);
+    Cylinder cylinder;
+    cylinder.point = Vec3(-10.0 - 3 * i, 0, 0);
+    cylinder.name = "cylinder " + tag;
+    cylinder.color = "#3000" + tag + "0";
+    scene.cylinders.push_back(cylinder);
+  }
+  return scene;
+}
+
+template <typename T>
+std::vector<T> without(const std::vector<T>& items, const std::vector<int>& removed) {
+  std::vector<T> kept;
+  for (int i = 0; i < static_cast<int>(items.size()); ++i)
+    if (std::find(removed.begin(), removed.end(), i) == removed.end()) kept.push_back(items[i]);
+  return kept;
+}
+
+}  // namespace
+
+class TestObjectRef : public QObject {
+  Q_OBJECT
+ private slots:
+  void removeKeepsEveryOtherObject_data();
+  void removeKeepsEveryOtherObject();
+  void removeIgnoresReferencesToNothing();
+  void extractThenAppendCopiesEveryField();
+};
+
+void TestObjectRef::removeKeepsEveryOtherObject_data() {
+  QTest::addColumn<int>("kind");
+  QTest::addColumn<std::vector<int>>("removed");
+  const char* kinds[] = {"ball", "plane", "cylinder"};
+  for (int kind = 0; kind < 3; ++kind) {
+    const auto row = [&](const char* where, std::vector<int> removed) {
+      QTest::addRow("%s %s", kinds[kind], where) << kind << removed;
+    };
+    row("first", {0});
+    row("middle", {2});
+    row("last", {kPerKind - 1});
+    row("first and last", {0, kPerKind - 1});
+    row("two in the middle", {1, 3});
+    row("all", {0, 1, 2, 3, 4});
+  }
+}
+
+void TestObjectRef::removeKeepsEveryOtherObject() {
+  QFETCH(int, kind);
+  QFETCH(std::vector<int>, removed);
+  const Scene before = namedScene();
+  Selection selection;
+  for (int index : removed) selection.push_back({ObjectKind(kind), index});
+  Scene after = before;
+  carom::ui::remove(after, selection);
+
+  // The kind removed from lost exactly those; the other kinds are untouched, field by field.
+  const auto expect = [&](ObjectKind k, const auto& items) {
+    return ObjectKind(kind) == k ? without(items, removed) : items;
+  };
+  QCOMPARE(after.balls.size(), expect(ObjectKind::Ball, before.balls).size());
+  QVERIFY(after.balls == expect(ObjectKind::Ball, before.balls));
+  QVERIFY(after.planes == expect(ObjectKind::Plane, before.planes));
+  QVERIFY(after.cylinders == expect(ObjectKind::Cylinder, before.cylinders));
+  // Spelled out for the fields the old bug emptied, so a failure names them.
+  for (const Ball& ball : after.balls) {
+    QVERIFY(!ball.name.empty());
+    QVERIFY(!ball.color.empty());
+    QVERIFY(!ball.extra.empty());
+  }
+  for (const Plane& plane : after.planes) QVERIFY(!plane.name.empty() && !plane.color.empty());
+  for (const Cylinder& c : after.cylinders) QVERIFY(!c.name.empty() && !c.color.empty());
+}
+
+void TestObjectRef::removeIgnoresReferencesToNothing() {
+  Scene scene = namedScene();
+  carom::ui::remove(scene, {{ObjectKind::Ball, -1}, {ObjectKind::Plane, kPerKind}});
+  QVERIFY(scene == namedScene());
+}
+
+void TestObjectRef::extractThenAppendCopiesEveryField() {
+  const Scene source = namedScene();
+  const Selection picked = {
+      {ObjectKind::Ball, 4}, {ObjectKind::Plane, 0}, {ObjectKind::Cylinder, 2}};
+  const Scene part = carom::ui::extract(source, picked);
+  Scene target = namedScene();
+  const Selection added = carom::ui::append(target, part);
+  QCOMPARE(added, (Selection{{ObjectKind::Ball, kPerKind},
+                             {ObjectKind::Plane, kPerKind},
+                             {ObjectKind::Cylinder, kPerKind}}));
+  QVERIFY(target.balls.back() == source.balls[4]);
+  QVERIFY(target.planes.back() == source.planes[0]);
+  QVERIFY(target.cylinders.back() == source.cylinders[2]);
+  // Then removing the copies gives back the original, as Duplicate followed by Delete does.
+  carom::ui::remove(target, added);
+  QVERIFY(target == namedScene());
+}
+
+QTEST_APPLESS_MAIN(TestObjectRef)
+#include "test_object_ref.moc"

@@ -1,0 +1,454 @@
+// Whole sessions as a user has them, through the real window: menus, clicks and keys under a real
+// X server (Xvfb) with Mesa's OpenGL. Each bug found by using the window is reproduced here.
+
+#include "editor_fixture.h"
+#include "render_scene.h"
+#include "scene_file.h"
+#include "scene_recovery.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+
+using carom::Ball;
+using carom::Scene;
+using carom::Vec3;
+using carom::testing::DialogAnswerer;
+using carom::testing::ModalAnswerer;
+using carom::ui::ObjectKind;
+using carom::ui::SceneRecovery;
+
+namespace {
+
+// The menu bar's menu whose title, without its '&', is `title`.
+QMenu* menuNamed(QMainWindow& window, const QString& title) {
+  for (QAction* action : window.menuBar()->actions())
+    if (action->menu() && action->text().remove('&') == title) return action->menu();
+  return nullptr;
+}
+
+// The bundled magic room as the loader reads it.
+Scene magicRoom() {
+  return *carom::loadSceneFile(":/scenes/magic-room.json").scene;
+}
+
+// Every field of every object, compared one by one so that a failure names the object.
+void compareObjects(const Scene& actual, const Scene& expected) {
+  QCOMPARE(actual.balls.size(), expected.balls.size());
+  QCOMPARE(actual.planes.size(), expected.planes.size());
+  QCOMPARE(actual.cylinders.size(), expected.cylinders.size());
+  for (std::size_t i = 0; i < expected.balls.size(); ++i) {
+    QCOMPARE(actual.balls[i].name, expected.balls[i].name);
+    QCOMPARE(actual.balls[i].color, expected.balls[i].color);
+    QVERIFY2(actual.balls[i] == expected.balls[i], expected.balls[i].name.c_str());
+  }
+  for (std::size_t i = 0; i < expected.planes.size(); ++i) {
+    QCOMPARE(actual.planes[i].name, expected.planes[i].name);
+    QCOMPARE(actual.planes[i].color, expected.planes[i].color);
+    QVERIFY2(actual.planes[i] == expected.planes[i], expected.planes[i].name.c_str());
+  }
+  for (std::size_t i = 0; i < expected.cylinders.size(); ++i) {
+    QCOMPARE(actual.cylinders[i].name, expected.cylinders[i].name);
+    QCOMPARE(actual.cylinders[i].color, expected.cylinders[i].color);
+    QVERIFY2(actual.cylinders[i] == expected.cylinders[i], expected.cylinders[i].name.c_str());
+  }
+  QVERIFY(actual.world == expected.world);
+}
+
+}  // namespace
+
+class TestUserSession : public carom::testing::EditorFixture {
+  Q_OBJECT
+
+ private slots:
+  void init();
+  void cleanup() { window_.reset(); }
+
+  void deletingABallKeepsEveryOtherName();
+  void deletingADuplicateKeepsTheOriginals();
+  void objectsAddedAwayFromTheBallsAreDrawn();
+  void backgroundClicksSelectNothing();
+  void exampleAfterDiscardedRecoveryOpensUnmodified();
+  void promptNamesTheSceneOfTheTitle();
+  void openingAScenesFramesIt();
+  void newGivesAFloorToBuildOn();
+  void statusMessagesLeaveTheReadout();
+  void openEditDeleteSaveReopen();
+
+ private:
+  void openExample(const QString& title);
+  // Clicks every point of a grid over the view where the picture shows only background.
+  void clickTheBackground();
+  void saveAsThroughTheDialog(const QString& file);
+  void openThroughTheDialog(const QString& file);
+  QTemporaryDir folder_;
+};
+
+void TestUserSession::init() {
+  QDir(SceneRecovery::folder()).removeRecursively();
+  openWindow();
+}
+
+// Examples > `title`, as a click on the menu entry does.
+void TestUserSession::openExample(const QString& title) {
+  QMenu* examples = menuNamed(*window_, "Examples");
+  QVERIFY(examples);
+  // The file's name or its title, whichever the menu shows ("newtons-cradle", "Newton's cradle").
+  const auto letters = [](QString text) {
+    text.remove(QRegularExpression("[^A-Za-z0-9]"));
+    return text.toLower();
+  };
+  for (QAction* action : examples->actions()) {
+    if (letters(action->text()) == letters(title)) {
+      action->trigger();
+      return;
+    }
+  }
+  QFAIL(qPrintable("no example " + title));
+}
+
+void TestUserSession::saveAsThroughTheDialog(const QString& file) {
+  ModalAnswerer<QFileDialog> answer([&](QFileDialog* dialog) {
+    dialog->selectFile(file);
+    QMetaObject::invokeMethod(dialog, "accept");
+  });
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+  QVERIFY(answer.answered());
+}
+
+void TestUserSession::openThroughTheDialog(const QString& file) {
+  ModalAnswerer<QFileDialog> answer([&](QFileDialog* dialog) {
+    dialog->selectFile(file);
+    QMetaObject::invokeMethod(dialog, "accept");
+  });
+  QTest::keyClick(window_.get(), Qt::Key_O, Qt::ControlModifier);
+  QVERIFY(answer.answered());
+}
+
+// Examples > magic-room, click the red ball, Delete, Save As: every other object keeps its name
+// and colour in the saved file (they were wiped).
+void TestUserSession::deletingABallKeepsEveryOtherName() {
+  openExample("magic-room");
+  const Scene room = magicRoom();
+  QVERIFY(document().scene() == room);
+  QCOMPARE(room.balls[0].color, std::string("#e63946"));  // the red one
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  click(room.balls[0].position);
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 0}}));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+
+  const QString file = folder_.filePath("room.carom");
+  saveAsThroughTheDialog(file);
+  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  QVERIFY2(saved.scene, qPrintable(saved.error));
+  Scene expected = room;
+  expected.balls.erase(expected.balls.begin());
+  compareObjects(*saved.scene, expected);
+}
+
+// Duplicating ball 9 and deleting the copy gave ten balls named "Ball 0…9" in default colours.
+void TestUserSession::deletingADuplicateKeepsTheOriginals() {
+  openExample("magic-room");
+  const Scene room = magicRoom();
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  click(room.balls[9].position);
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 9}}));
+  QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls.size(), room.balls.size() + 1);
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 10}}));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  compareObjects(document().scene(), room);
+  // Undo twice is back at the start, redo twice at the same place again.
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QCOMPARE(document().scene().balls.size(), room.balls.size() + 1);
+  QCOMPARE(document().scene().balls[10].name, room.balls[9].name);
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  compareObjects(document().scene(), room);
+}
+
+// File > New, three balls, then a plane clicked behind them and a cylinder lower left: both are
+// drawn where they were placed (only their arrows were).
+void TestUserSession::objectsAddedAwayFromTheBallsAreDrawn() {
+  QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+  QVERIFY(document().scene().balls.empty());
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  const QSize size = view().size();
+  QTest::keyClick(window_.get(), Qt::Key_B);
+  for (double x : {0.45, 0.5, 0.55})
+    QTest::mouseClick(&view(), Qt::LeftButton, {},
+                      QPoint(int(x * size.width()), size.height() / 2));
+  QCOMPARE(document().scene().balls.size(), std::size_t{3});
+
+  const QImage before = view().grabFramebuffer();
+  const QPoint behind(size.width() / 2, size.height() / 6);
+  const QPoint lowerLeft(size.width() / 8, size.height() * 7 / 8);
+  QTest::keyClick(window_.get(), Qt::Key_P);
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, behind);
+  QTest::keyClick(window_.get(), Qt::Key_C);
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, lowerLeft);
+  const Scene& scene = document().scene();
+  QVERIFY(!scene.planes.empty());
+  QCOMPARE(scene.cylinders.size(), std::size_t{1});
+  const carom::Plane& wall = scene.planes.back();
+
+  // The render data holds both, each through its own point.
+  const std::shared_ptr<const carom::render::RenderScene> shown = view().scene();
+  QVERIFY(shown);
+  QCOMPARE(shown->planes.size(), scene.planes.size());
+  QVERIFY(shown->planes.back().polygon.size() >= 3);
+  const carom::render::Bounds& bounds = shown->bounds;
+  for (const Vec3& point : {wall.point, scene.cylinders[0].point})
+    QVERIFY((point.array() >= bounds.min.array()).all() &&
+            (point.array() <= bounds.max.array()).all());
+  QVERIFY(shown->cylinders[0].start != shown->cylinders[0].end);
+
+  // And the picture shows them there: the clicked pixels changed from what was behind them.
+  view().setHighlighted({}, {}, {});  // the selection's colour aside
+  view().setHandleArrow(std::nullopt);
+  const auto changed = [&](const QPoint& at) {
+    const QImage after = view().grabFramebuffer();
+    const QColor was = before.pixelColor(at * before.devicePixelRatio());
+    const QColor now = after.pixelColor(at * after.devicePixelRatio());
+    return std::abs(was.red() - now.red()) + std::abs(was.green() - now.green()) +
+               std::abs(was.blue() - now.blue()) >
+           30;
+  };
+  QTRY_VERIFY(changed(behind));
+  QVERIFY(changed(lowerLeft));
+}
+
+// A click where the view shows only background selects nothing, whatever infinite wall lies
+// beyond the drawn part: in the magic room, and in a new scene with a wall and a post placed away
+// from its balls.
+void TestUserSession::backgroundClicksSelectNothing() {
+  for (const char* example :
+       {"magic-room", "galton-board", "gas-box", "inelastic-pile", "newtons-cradle"}) {
+    openExample(example);
+    // From the default direction, and from below and behind.
+    for (const double turn : {0.0, 2.5}) {
+      view().camera().orbit(turn, -0.4 * turn);
+      view().update();
+      QTRY_VERIFY(window_->framesRendered() > 2);
+      clickTheBackground();
+    }
+  }
+  QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+  const std::size_t staticObjects = document().scene().planes.size();
+  const QSize size = view().size();
+  QTest::keyClick(window_.get(), Qt::Key_B);
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, QPoint(size.width() / 2, size.height() / 2));
+  QTest::keyClick(window_.get(), Qt::Key_P);
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, QPoint(size.width() / 2, size.height() / 6));
+  QTest::keyClick(window_.get(), Qt::Key_C);
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, QPoint(size.width() / 8, size.height() * 7 / 8));
+  QCOMPARE(document().scene().planes.size() + document().scene().cylinders.size(),
+           staticObjects + 2);
+  QTest::keyClick(window_.get(), Qt::Key_V);
+  clickTheBackground();
+}
+
+void TestUserSession::clickTheBackground() {
+  document().setSelection({});
+  view().setHandleArrow(std::nullopt);
+  QTest::qWait(50);  // a frame without the selection's highlight
+  const QImage picture = view().grabFramebuffer();
+  const QColor background = picture.pixelColor(2, 2);
+  const QSize size = view().size();
+  int backgroundClicks = 0;
+  for (int gy = 1; gy < 12; ++gy) {
+    for (int gx = 1; gx < 16; ++gx) {
+      const QPoint at(size.width() * gx / 16, size.height() * gy / 12);
+      // Background all around: an edge's pixel is drawn by its centre, a click's ray passes
+      // through its corner.
+      bool onlyBackground = true;
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx)
+          if (picture.pixelColor((at + QPoint(dx, dy)) * picture.devicePixelRatio()) != background)
+            onlyBackground = false;
+      if (!onlyBackground) continue;
+      ++backgroundClicks;
+      document().setSelection({{ObjectKind::Ball, 0}});
+      QTest::mouseClick(&view(), Qt::LeftButton, {}, at);
+      if (!document().selection().empty()) {
+        QFAIL(qPrintable(
+            QString("click at %1,%2 selected %3")
+                .arg(at.x())
+                .arg(at.y())
+                .arg(carom::ui::objectLabel(document().scene(), document().selection().front()))));
+      }
+    }
+  }
+  QVERIFY(backgroundClicks > 10);  // the probe did probe
+}
+
+// Recover a crash copy, then open an example and discard the recovered scene: the example opens
+// unmodified (it opened as "magic-room*" with Undo greyed out, and Quit asked to save it).
+void TestUserSession::exampleAfterDiscardedRecoveryOpensUnmodified() {
+  // A recovered scene is unsaved, with nothing to undo.
+  Scene recovered = carom::testing::floorScene();
+  recovered.balls[0].name = "recovered";
+  window_->openScene(recovered, {});
+  document().markUnsaved();
+  QVERIFY(document().isModified());
+  {
+    DialogAnswerer discard(QMessageBox::Discard);
+    openExample("magic-room");
+    QVERIFY(discard.answered());
+  }
+  QVERIFY(document().scene() == magicRoom());
+  QVERIFY(!document().isModified());
+  QVERIFY(!window_->isWindowModified());
+  QVERIFY(!document().undoStack()->canUndo());
+  // Quit closes without a question.
+  QVERIFY(window_->close());
+}
+
+// An edited example is asked about by the name its title shows, not as "untitled".
+void TestUserSession::promptNamesTheSceneOfTheTitle() {
+  openExample("magic-room");
+  const QString name = document().displayName();
+  QVERIFY2(!name.isEmpty() && name != "untitled", qPrintable(name));
+  QVERIFY2(window_->windowTitle().startsWith(name), qPrintable(window_->windowTitle()));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(window_->isWindowModified());
+  DialogAnswerer cancel(QMessageBox::Cancel);
+  QVERIFY(!window_->close());
+  QVERIFY(cancel.answered());
+  QVERIFY2(cancel.text().contains(name), qPrintable(cancel.text()));
+  QVERIFY(!cancel.text().contains("untitled"));
+}
+
+// Opening a scene frames it as Home does, whatever the camera did before.
+void TestUserSession::openingAScenesFramesIt() {
+  // Move the camera away first, as a user does.
+  view().camera().zoom(6);
+  view().camera().orbit(1.0, 0.3);
+  openExample("gas-box");
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  carom::render::Camera home;
+  home.setAspectRatio(view().camera().aspectRatio());
+  home.home(view().scene()->bounds);
+  const auto sameCamera = [&] {
+    const carom::render::Camera& camera = view().camera();
+    return std::abs(camera.distance() - home.distance()) < 1e-6 * home.distance() &&
+           (camera.target() - home.target()).length() < 1e-4 &&
+           std::abs(camera.yaw() - home.yaw()) < 1e-9 &&
+           std::abs(camera.pitch() - home.pitch()) < 1e-9;
+  };
+  QVERIFY(sameCamera());
+  // Every way of opening does it: New, and a file.
+  view().camera().zoom(-4);
+  QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+  home.home(view().scene()->bounds);
+  QVERIFY(sameCamera());
+  const QString file = folder_.filePath("cradle.carom");
+  QVERIFY(carom::saveSceneFile(*carom::loadSceneFile(":/scenes/newtons-cradle.json").scene, file,
+                               nullptr));
+  view().camera().zoom(3);
+  openThroughTheDialog(file);
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  home.home(view().scene()->bounds);
+  QVERIFY(sameCamera());
+}
+
+// File > New has a floor at y = 0, an object like any other: balls added rest on it, and it can
+// be deleted.
+void TestUserSession::newGivesAFloorToBuildOn() {
+  QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
+  const Scene& fresh = document().scene();
+  QCOMPARE(fresh.planes.size(), std::size_t{1});
+  QVERIFY(fresh.planes[0].point.isZero());
+  QVERIFY(fresh.planes[0].normal == Vec3::UnitY());
+  QVERIFY(!document().isModified());
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTest::keyClick(window_.get(), Qt::Key_B);
+  const QSize size = view().size();
+  QTest::mouseClick(&view(), Qt::LeftButton, {}, QPoint(size.width() / 2, size.height() / 2));
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+  const Ball& ball = document().scene().balls[0];
+  QVERIFY(std::abs(ball.position.y() - ball.radius) < 1e-9);  // resting on the floor
+  // The floor is picked and deleted like anything else.
+  QTest::keyClick(window_.get(), Qt::Key_V);
+  click(Vec3(3, 0, 3));
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Plane, 0}}));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(document().scene().planes.empty());
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+}
+
+// A passing message (a refusal, a save) shows beside the time/fps/energy readout, not over it.
+void TestUserSession::statusMessagesLeaveTheReadout() {
+  window_->setRunning(true);
+  QTRY_VERIFY(window_->statusText().contains("fps"));
+  window_->setRunning(false);
+  const QStringList labels = [&] {
+    QStringList texts;
+    for (QLabel* label : window_->statusBar()->findChildren<QLabel*>())
+      if (label->isVisible()) texts << label->text();
+    return texts;
+  }();
+  QVERIFY(labels.join(' ').contains("fps"));
+  window_->showMessage("Something was refused");
+  QCOMPARE(window_->statusMessage(), QString("Something was refused"));
+  bool readoutVisible = false;
+  for (QLabel* label : window_->statusBar()->findChildren<QLabel*>())
+    if (label->isVisible() && label->text().contains("fps")) readoutVisible = true;
+  QVERIFY(readoutVisible);
+}
+
+// Open a file, edit each kind of object, delete from the start, middle and end, save, open it
+// again in a new window, and compare every field of every object with what was meant.
+void TestUserSession::openEditDeleteSaveReopen() {
+  Scene start = magicRoom();
+  const QString file = folder_.filePath("session.carom");
+  QVERIFY(carom::saveSceneFile(start, file, nullptr));
+  openThroughTheDialog(file);
+  QVERIFY(document().scene() == start);
+  QTRY_VERIFY(window_->framesRendered() > 2);
+
+  Scene expected = start;
+  // Delete the first plane (the floor), a middle cylinder, and the last ball, each by a click
+  // in the view or a selection from the document as the outline makes it, then Delete.
+  click(start.balls.back().position);
+  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 9}}));
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  expected.balls.pop_back();
+  document().setSelection({{ObjectKind::Cylinder, 1}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  expected.cylinders.erase(expected.cylinders.begin() + 1);
+  document().setSelection({{ObjectKind::Plane, 0}, {ObjectKind::Ball, 0}, {ObjectKind::Ball, 4}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  expected.planes.erase(expected.planes.begin());
+  expected.balls.erase(expected.balls.begin() + 4);
+  expected.balls.erase(expected.balls.begin());
+  compareObjects(document().scene(), expected);
+
+  // Duplicate a cylinder: the copy keeps the name and colour.
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
+  QCOMPARE(document().scene().cylinders.size(), expected.cylinders.size() + 1);
+  expected.cylinders.push_back(document().scene().cylinders.back());
+  QCOMPARE(expected.cylinders.back().name, start.cylinders[0].name);
+
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+  QVERIFY(!document().isModified());
+
+  window_.reset();
+  openWindow();
+  openThroughTheDialog(file);
+  compareObjects(document().scene(), expected);
+  QVERIFY(!document().isModified());
+}
+
+QTEST_MAIN(TestUserSession)
+#include "test_user_session.moc"
