@@ -1,8 +1,8 @@
-#include "language.h"
-#include "main_window.h"
-#include "scene_view.h"
-#include "window_arguments.h"
-#include "window_benchmarks.h"
+#include "app/window_arguments.h"
+#include "app/window_benchmarks.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/render/scene_view.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -1,4 +1,4 @@
-#include "window_arguments.h"
+#include "app/window_arguments.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

@@ -1,7 +1,7 @@
-#include "accuracy_study.h"
+#include "sim/accuracy_study.h"
 
-#include "measures.h"
-#include "simulation.h"
+#include "sim/measures.h"
+#include "sim/simulation.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // integrator and a range of time steps, each run's error set against its computing time. The
 // reference is the `exact` method.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <atomic>
 #include <vector>

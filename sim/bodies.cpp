@@ -1,4 +1,4 @@
-#include "bodies.h"
+#include "sim/bodies.h"
 
 #include <algorithm>
 

@@ -2,7 +2,7 @@
 // What stays fixed during a run: the static shapes and each ball's size, mass and restitution,
 // resolved once against the world so the steppers need not look at the scene again.
 
-#include "shapes.h"
+#include "sim/shapes.h"
 
 #include <vector>
 

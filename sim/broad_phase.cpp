@@ -1,4 +1,4 @@
-#include "broad_phase.h"
+#include "sim/broad_phase.h"
 
 #include <algorithm>
 #include <cmath>

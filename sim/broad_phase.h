@@ -2,7 +2,7 @@
 // Finding pairs of balls that may touch, when all of them are looked at at once (discrete steps,
 // measurements, validation): a grid rebuilt from scratch by counting sort, O(N).
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "cell_grid.h"
+#include "sim/cell_grid.h"
 
 #include <algorithm>
 #include <cmath>

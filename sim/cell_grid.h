@@ -4,7 +4,7 @@
 // The outermost layer of cells reaches to infinity, so balls that leave the region are still
 // filed (in border cells) and nothing is ever lost.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <array>
 #include <cstdint>

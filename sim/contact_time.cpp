@@ -1,6 +1,6 @@
-#include "contact_time.h"
+#include "sim/contact_time.h"
 
-#include "polynomial.h"
+#include "sim/polynomial.h"
 
 #include <limits>
 

@@ -6,7 +6,7 @@
 // already touch (or overlap) and approach give 0: such a contact fires at once. A contact that
 // only grazes (touches and turns away) is not a collision. Times are never negative.
 
-#include "shapes.h"
+#include "sim/shapes.h"
 
 #include <limits>
 

@@ -3,10 +3,10 @@
 // cross another ball or a cylinder within a step is never seen touching it. The run report's
 // penetration and escape figures show what it got wrong.
 
-#include "broad_phase.h"
-#include "integrator.h"
-#include "response.h"
-#include "stepper.h"
+#include "sim/broad_phase.h"
+#include "sim/integrator.h"
+#include "sim/response.h"
+#include "sim/stepper.h"
 
 #include <algorithm>
 

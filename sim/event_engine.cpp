@@ -1,9 +1,9 @@
-#include "event_engine.h"
+#include "sim/event_engine.h"
 
-#include "contact_time.h"
-#include "response.h"
-#include "rest_policy.h"
-#include "tolerances.h"
+#include "sim/contact_time.h"
+#include "sim/response.h"
+#include "sim/rest_policy.h"
+#include "sim/tolerances.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,12 +7,12 @@
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
 
-#include "bodies.h"
-#include "cell_grid.h"
-#include "contact_time.h"
-#include "event_queue.h"
-#include "motion.h"
-#include "run_stats.h"
+#include "sim/bodies.h"
+#include "sim/cell_grid.h"
+#include "sim/contact_time.h"
+#include "sim/event_queue.h"
+#include "sim/motion.h"
+#include "sim/run_stats.h"
 
 #include <cstdint>
 #include <limits>

@@ -1,8 +1,8 @@
 // `exact`: event-driven. Balls follow their true paths (parabolas under gravity) from event to
 // event; every contact time is solved for.
 
-#include "event_engine.h"
-#include "stepper.h"
+#include "sim/event_engine.h"
+#include "sim/stepper.h"
 
 namespace carom {
 namespace {

@@ -5,7 +5,7 @@
 //   symplectic Euler:  v += g h;          x += v h       (the tutorial's)
 //   velocity Verlet:   v += g h/2;  x += v h;  v += g h/2
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom {
 

@@ -1,6 +1,6 @@
-#include "measures.h"
+#include "sim/measures.h"
 
-#include "broad_phase.h"
+#include "sim/broad_phase.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Checks of a state against the scene, independent of how the state was computed.
 
-#include "bodies.h"
+#include "sim/bodies.h"
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 // gravity and a straight line without it. Positions are evaluated lazily at any later time. The
 // acceleration is not stored: every free ball shares gravity and a resting one has none.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom {
 

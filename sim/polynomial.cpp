@@ -1,4 +1,4 @@
-#include "polynomial.h"
+#include "sim/polynomial.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,6 +1,6 @@
-#include "ray_cast.h"
+#include "sim/ray_cast.h"
 
-#include "shapes.h"
+#include "sim/shapes.h"
 
 #include <cmath>
 #include <cstddef>

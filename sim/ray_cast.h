@@ -2,7 +2,7 @@
 // Rays against the scene's true shapes (not the view's triangles): what an editor needs to pick
 // the object under the mouse and to place or drag objects on a plane.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <Eigen/Geometry>
 

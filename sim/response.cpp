@@ -1,4 +1,4 @@
-#include "response.h"
+#include "sim/response.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Collision response: new velocities for a contact, for any masses, with restitution.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom {
 

@@ -1,6 +1,6 @@
-#include "rest_policy.h"
+#include "sim/rest_policy.h"
 
-#include "tolerances.h"
+#include "sim/tolerances.h"
 
 #include <Eigen/Dense>
 

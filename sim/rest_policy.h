@@ -14,7 +14,7 @@
 //  4. Without gravity, collisions separate at no less than kCollapseSpeedFraction of the scene's
 //     initial RMS speed, which stops inelastic collapse in a free gas.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <vector>
 

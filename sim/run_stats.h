@@ -1,7 +1,7 @@
 #pragma once
 // What a run did: counts, and what it got wrong.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <cstdint>
 

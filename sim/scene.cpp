@@ -1,4 +1,4 @@
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <array>
 #include <utility>

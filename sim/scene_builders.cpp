@@ -1,4 +1,4 @@
-#include "scene_builders.h"
+#include "sim/scene_builders.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes made in code: the benchmark gases and the random scenes of the tests.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <cstdint>
 #include <initializer_list>

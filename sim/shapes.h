@@ -1,7 +1,7 @@
 #pragma once
 // Static geometry in the form the contact math wants: unit directions and precomputed offsets.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom {
 

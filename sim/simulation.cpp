@@ -1,8 +1,8 @@
-#include "simulation.h"
+#include "sim/simulation.h"
 
-#include "measures.h"
-#include "rest_policy.h"
-#include "stepper.h"
+#include "sim/measures.h"
+#include "sim/rest_policy.h"
+#include "sim/stepper.h"
 
 #include <cmath>
 

@@ -2,9 +2,9 @@
 // The simulation of a scene under one of the three methods. This is the physics' public face:
 // the CLI, the benchmarks and the GUI worker drive it.
 
-#include "bodies.h"
-#include "run_stats.h"
-#include "scene.h"
+#include "sim/bodies.h"
+#include "sim/run_stats.h"
+#include "sim/scene.h"
 
 #include <memory>
 #include <string>

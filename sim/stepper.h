@@ -2,8 +2,8 @@
 // One stepping loop per method, behind one interface so the simulation can switch between them
 // live: exact_stepper.cpp, swept_stepper.cpp, discrete_stepper.cpp.
 
-#include "bodies.h"
-#include "run_stats.h"
+#include "sim/bodies.h"
+#include "sim/run_stats.h"
 
 #include <memory>
 #include <string>

@@ -2,9 +2,9 @@
 // then balls sweep along straight lines through the step with the same earliest-contact-first
 // loop as `exact`, so nothing passes through anything at any speed or step.
 
-#include "event_engine.h"
-#include "integrator.h"
-#include "stepper.h"
+#include "sim/event_engine.h"
+#include "sim/integrator.h"
+#include "sim/stepper.h"
 
 namespace carom {
 namespace {

@@ -1,7 +1,7 @@
-#include "validation.h"
+#include "sim/validation.h"
 
-#include "shapes.h"
-#include "tolerances.h"
+#include "sim/shapes.h"
+#include "sim/tolerances.h"
 
 #include <algorithm>
 #include <charconv>

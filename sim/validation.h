@@ -1,7 +1,7 @@
 #pragma once
 // The one validation of scenes: the loader, the CLI and the editor all call this.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <string>
 #include <vector>

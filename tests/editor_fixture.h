@@ -2,9 +2,9 @@
 // What the editor's GUI tests share: a small scene, a window showing it, clicks at world
 // points, and an answerer for modal dialogs that never lets one hang the run.
 
-#include "main_window.h"
-#include "scene_document.h"
-#include "scene_view.h"
+#include "ui/editor/scene_document.h"
+#include "ui/main_window.h"
+#include "ui/render/scene_view.h"
 
 #include <QAction>
 #include <QApplication>

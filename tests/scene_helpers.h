@@ -1,7 +1,7 @@
 #pragma once
 // Small builders for the scenes of the physics tests.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom::testing {
 

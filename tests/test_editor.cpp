@@ -1,10 +1,10 @@
 // The scene editor as a new user meets it: tools, picking, dragging, undo, files and prompts,
 // driven with real mouse and key events under a real X server (Xvfb) with Mesa's OpenGL.
 
-#include "editor_fixture.h"
-#include "editor_tools.h"
-#include "scene_file.h"
-#include "simulation_controller.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "ui/editor/editor_tools.h"
+#include "ui/simulation_controller.h"
 
 #include <QAction>
 #include <QApplication>
@@ -226,7 +226,7 @@ void TestEditor::saveAndReopenGiveTheSameScene() {
   {
     QFile out(file);
     QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write(carom::serializeScene(floorScene()));
+    out.write(carom::io::serializeScene(floorScene()));
   }
   QVERIFY(window_->openFile(file, false));
   chooseTool("toolAddBall");
@@ -246,7 +246,7 @@ void TestEditor::brokenFileLeavesTheSceneAlone() {
   {
     QFile out(file);
     QVERIFY(out.open(QIODevice::WriteOnly));
-    QByteArray json = carom::serializeScene(floorScene());
+    QByteArray json = carom::io::serializeScene(floorScene());
     const qsizetype radius = json.indexOf("\"radius\"");
     QVERIFY(radius > 0);
     json.insert(json.indexOf(':', radius) + 1, " -2, \"unused\":");  // radius: -2
@@ -278,7 +278,7 @@ void TestEditor::unsavedChangesPrompt() {
   {
     QFile out(file);
     QVERIFY(out.open(QIODevice::WriteOnly));
-    out.write(carom::serializeScene(floorScene()));
+    out.write(carom::io::serializeScene(floorScene()));
   }
   QVERIFY(window_->openFile(file, false));
   document().setSelection({{ObjectKind::Ball, 0}});
@@ -290,7 +290,7 @@ void TestEditor::unsavedChangesPrompt() {
   QVERIFY(answerer.answered());
   QVERIFY(answerer.text().contains("prompt.carom"));
   QCOMPARE(closed, closes);
-  const carom::SceneLoadResult onDisk = carom::loadSceneFile(file);
+  const carom::io::SceneLoadResult onDisk = carom::io::loadSceneFile(file);
   QVERIFY(onDisk.scene);
   QCOMPARE(onDisk.scene->balls.empty(), written);
   if (!closes) QCOMPARE(document().scene().balls.size(), std::size_t{0});  // still the edit
@@ -371,7 +371,7 @@ void TestEditor::newAsksAboutUnsavedChanges() {
 
 void TestEditor::openRecentReopensAFile() {
   const QString file = folder_.filePath("recent.carom");
-  QVERIFY(carom::saveSceneFile(floorScene(), file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(floorScene(), file, nullptr));
   QVERIFY(window_->openFile(file, false));
   window_->openScene(carom::Scene(), {});
   auto* menu = window_->findChild<QMenu*>("recentMenu");
@@ -389,7 +389,7 @@ void TestEditor::dropOpensAFile() {
   const QString file = folder_.filePath("dropped.carom");
   carom::Scene scene = floorScene();
   scene.balls[0].name = "dropped";
-  QVERIFY(carom::saveSceneFile(scene, file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(scene, file, nullptr));
   QMimeData mime;
   mime.setUrls({QUrl::fromLocalFile(file)});
   QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
@@ -417,7 +417,7 @@ void TestEditor::saveAsAsksForAName() {
   QCOMPARE(suggested.size(), 1);
   QVERIFY2(suggested.first().endsWith("floor.carom"), qPrintable(suggested.first()));
   const QString file = typed + ".carom";
-  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  const carom::io::SceneLoadResult saved = carom::io::loadSceneFile(file);
   QVERIFY2(saved.scene, qPrintable(saved.error));
   QVERIFY(*saved.scene == document().scene());
   QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
@@ -426,7 +426,7 @@ void TestEditor::saveAsAsksForAName() {
   // Ctrl+S now saves there without asking.
   QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
   QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
-  QCOMPARE(carom::loadSceneFile(file).scene->balls.size(), std::size_t{1});
+  QCOMPARE(carom::io::loadSceneFile(file).scene->balls.size(), std::size_t{1});
 }
 
 void TestEditor::saveAsCancelledWritesNothing() {
@@ -444,7 +444,7 @@ void TestEditor::saveAsCancelledWritesNothing() {
 void TestEditor::aFailedSaveSaysWhyAndKeepsTheEdits() {
   // A scene file that cannot be replaced: its name has become a folder with a file in it.
   const QString file = folder_.filePath("blocked.carom");
-  QVERIFY(carom::saveSceneFile(floorScene(), file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(floorScene(), file, nullptr));
   QVERIFY(window_->openFile(file, false));
   QVERIFY(QFile::remove(file));
   QVERIFY(QDir(folder_.path()).mkpath("blocked.carom"));

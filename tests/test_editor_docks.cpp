@@ -3,11 +3,11 @@
 // validation refusing bad values, multi-selection, the world settings, the colour picker), and
 // the handles that turn a plane's normal and a cylinder's axis.
 
-#include "editor_fixture.h"
-#include "editor_tools.h"
-#include "outline_dock.h"
-#include "properties_dock.h"
-#include "scene_file.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "ui/editor/editor_tools.h"
+#include "ui/editor/outline_dock.h"
+#include "ui/editor/properties_dock.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -436,7 +436,7 @@ void TestEditorDocks::typesANormal() {
 void TestEditorDocks::saveTakesTheValueBeingTyped() {
   QTemporaryDir folder;
   const QString file = folder.filePath("typed.carom");
-  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), file, nullptr));
   QVERIFY(window_->openFile(file, false));
   document().setSelection({{ObjectKind::Ball, 0}});
   QLineEdit* mass = field("mass");
@@ -444,7 +444,7 @@ void TestEditorDocks::saveTakesTheValueBeingTyped() {
   QTest::keyClick(mass, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClicks(mass, "3");
   QTest::keyClick(mass, Qt::Key_S, Qt::ControlModifier);  // no Enter first
-  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  const carom::io::SceneLoadResult saved = carom::io::loadSceneFile(file);
   QVERIFY(saved.scene);
   QCOMPARE(saved.scene->balls[0].mass, 3.0);
   QVERIFY(!document().isModified());

@@ -1,10 +1,10 @@
 // The `exact` method against analytic answers: bounces, projectiles, collisions of any masses,
 // Newton's cradle, cylinders.
 
-#include "scene_helpers.h"
-#include "simulation.h"
-#include "tolerances.h"
-#include "validation.h"
+#include "sim/simulation.h"
+#include "sim/tolerances.h"
+#include "sim/validation.h"
+#include "tests/scene_helpers.h"
 
 #include <QTest>
 

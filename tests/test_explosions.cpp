@@ -1,7 +1,7 @@
 // The explosion pool on made-up times: its limit, its fade and growth, and that only elapsed
 // time matters, not how often it is updated.
 
-#include "explosion_pool.h"
+#include "ui/render/explosion_pool.h"
 
 #include <QtTest>
 

@@ -4,13 +4,13 @@
 //
 // With CAROM_SCREENSHOT_DIR set, pictures of the window and of the dialogs are saved there.
 
-#include "editor_fixture.h"
-#include "help_dialogs.h"
-#include "language.h"
-#include "outline_dock.h"
-#include "properties_dock.h"
-#include "scene_file.h"
-#include "scene_recovery.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "ui/editor/outline_dock.h"
+#include "ui/editor/properties_dock.h"
+#include "ui/editor/scene_recovery.h"
+#include "ui/help_dialogs.h"
+#include "ui/language.h"
 
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -209,7 +209,7 @@ void TestLanguage::recoveryDateFollowsTheLanguage() {
   QDir folder(carom::ui::SceneRecovery::folder());
   for (const QString& old : folder.entryList({"*.carom"}, QDir::Files)) folder.remove(old);
   const QString scene = QDir(carom::ui::SceneRecovery::folder()).filePath("crashed-1.carom");
-  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), scene, nullptr));
+  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), scene, nullptr));
   const QDateTime saved(QDate(2026, 11, 23), QTime(17, 5));
   {
     QFile file(scene);

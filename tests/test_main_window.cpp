@@ -1,13 +1,13 @@
 // The sandbox window as a user meets it, under a real X server (Xvfb) with Mesa's OpenGL.
 
-#include "accuracy_window.h"
-#include "energy_plot.h"
-#include "main_window.h"
-#include "scene_builders.h"
-#include "scene_file.h"
-#include "scene_view.h"
-#include "simulation_controller.h"
-#include "sound_board.h"
+#include "sim/io/scene_file.h"
+#include "sim/scene_builders.h"
+#include "ui/accuracy_window.h"
+#include "ui/energy_plot.h"
+#include "ui/main_window.h"
+#include "ui/render/scene_view.h"
+#include "ui/simulation_controller.h"
+#include "ui/sound/sound_board.h"
 
 #include <QAction>
 #include <QApplication>
@@ -26,7 +26,7 @@ using carom::ui::SimulationSnapshot;
 namespace {
 
 carom::Scene magicRoom() {
-  return *carom::loadSceneFile(":/scenes/magic-room.json").scene;
+  return *carom::io::loadSceneFile(":/scenes/magic-room.json").scene;
 }
 
 // Waits until the latest snapshot satisfies `ready`; null when it does not within ten seconds.

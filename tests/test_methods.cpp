@@ -1,11 +1,11 @@
 // Invariants on random scenes, the extremes (time steps, speeds, radius ratios) and determinism,
 // for every method.
 
-#include "measures.h"
-#include "scene_builders.h"
-#include "scene_helpers.h"
-#include "simulation.h"
-#include "validation.h"
+#include "sim/measures.h"
+#include "sim/scene_builders.h"
+#include "sim/simulation.h"
+#include "sim/validation.h"
+#include "tests/scene_helpers.h"
 
 #include <QTest>
 

@@ -1,7 +1,7 @@
 // The editor's scene surgery: removing, extracting and appending objects must leave every other
 // object exactly as it was, names and colours included, wherever the removed ones stood.
 
-#include "object_ref.h"
+#include "ui/editor/object_ref.h"
 
 #include <QTest>
 

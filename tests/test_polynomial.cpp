@@ -4,7 +4,7 @@
 
 #include <QTest>
 
-#include "polynomial.h"
+#include "sim/polynomial.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

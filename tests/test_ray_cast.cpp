@@ -1,7 +1,7 @@
 // Ray casting against balls, planes and cylinders: closed forms, the rules of what counts as a
 // hit, numerically hard rays, and random rays against brute-force marching.
 
-#include "ray_cast.h"
+#include "sim/ray_cast.h"
 
 #include <QTest>
 

@@ -1,9 +1,9 @@
 // No lost work: the editor keeps a copy of unsaved changes, and after the process is killed the
 // next start offers it back. The test runs itself as a child editor and kills it.
 
-#include "editor_fixture.h"
-#include "scene_file.h"
-#include "scene_recovery.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "ui/editor/scene_recovery.h"
 
 #include <QDir>
 #include <QProcess>
@@ -65,7 +65,7 @@ void TestRecovery::init() {
 }
 
 void TestRecovery::crashAChild(const QString& file) {
-  QVERIFY(carom::saveSceneFile(carom::testing::floorScene(), file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), file, nullptr));
   QProcess child;
   child.start(QCoreApplication::applicationFilePath(), {"--child", file});
   QVERIFY(child.waitForStarted());
@@ -90,13 +90,13 @@ void TestRecovery::killedEditorsWorkIsOfferedBack() {
   QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
   QVERIFY(document().isModified());
   QVERIFY(window_->isWindowModified());
-  QVERIFY(carom::loadSceneFile(file).scene == carom::testing::floorScene());
+  QVERIFY(carom::io::loadSceneFile(file).scene == carom::testing::floorScene());
   // Offered once only.
   QVERIFY(SceneRecovery::orphans().isEmpty());
   QVERIFY(!window_->offerRecovery());
   // Saving puts it in the file.
   QVERIFY(window_->save());
-  QCOMPARE(carom::loadSceneFile(file).scene->balls[0].name, std::string("unsaved work"));
+  QCOMPARE(carom::io::loadSceneFile(file).scene->balls[0].name, std::string("unsaved work"));
 }
 
 void TestRecovery::declinedRecoveryIsGone() {
@@ -149,7 +149,7 @@ void TestRecovery::copiesFollowTheUnsavedState() {
   QSignalSpy written(recovery, &SceneRecovery::autosaved);
   QVERIFY(recovery->autosave());
   QCOMPARE(written.size(), 1);
-  QCOMPARE(carom::loadSceneFile(recovery->copyFile()).scene->balls.size(), std::size_t{0});
+  QCOMPARE(carom::io::loadSceneFile(recovery->copyFile()).scene->balls.size(), std::size_t{0});
   QVERIFY(recovery->autosave());  // unchanged since: not written again
   QCOMPARE(written.size(), 1);
   // Undone back to the saved state: nothing to recover.

@@ -1,11 +1,11 @@
 // The rest policy: inelastic bouncing ends in finite computing time, piles settle, resting balls
 // wake when hit, and sliding stays frictionless.
 
-#include "measures.h"
-#include "scene_builders.h"
-#include "scene_helpers.h"
-#include "simulation.h"
-#include "tolerances.h"
+#include "sim/measures.h"
+#include "sim/scene_builders.h"
+#include "sim/simulation.h"
+#include "sim/tolerances.h"
+#include "tests/scene_helpers.h"
 
 #include <QTest>
 

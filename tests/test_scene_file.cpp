@@ -1,9 +1,9 @@
 // Scene files: every refusal with its exact message, defaults, unknown keys, exact round trips
 // of numbers and of the bundled scenes, and saving that never damages an existing file.
 
-#include "scene_file.h"
-#include "tolerances.h"
-#include "validation.h"
+#include "sim/io/scene_file.h"
+#include "sim/tolerances.h"
+#include "sim/validation.h"
 
 #include <QDir>
 #include <QFile>
@@ -25,8 +25,8 @@
 
 using carom::Ball;
 using carom::Scene;
-using carom::SceneLoadResult;
 using carom::Vec3;
+using carom::io::SceneLoadResult;
 
 namespace {
 
@@ -39,8 +39,8 @@ QByteArray document(const QByteArray& body) {
   return text + "}";
 }
 
-SceneLoadResult parse(const QByteArray& json) {
-  return carom::parseScene(json, kSource);
+carom::io::SceneLoadResult parse(const QByteArray& json) {
+  return carom::io::parseScene(json, kSource);
 }
 
 QString sceneDir() {
@@ -308,13 +308,13 @@ class SceneFileTest : public QObject {
   void badInput() {
     QFETCH(QByteArray, json);
     QFETCH(QString, error);
-    const SceneLoadResult result = parse(json);
+    const carom::io::SceneLoadResult result = parse(json);
     QVERIFY(!result.scene);
     QCOMPARE(result.error, error);
   }
 
   void touchingIsAccepted() {
-    const SceneLoadResult result =
+    const carom::io::SceneLoadResult result =
         parse(document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0]}],)"
                        R"( "cylinders": [{"point": [0,0,0], "axis": [0,1,0], "radius": 1}],)"
                        R"( "balls": [{"position": [1.5,0.5,0], "radius": 0.5},)"
@@ -326,17 +326,17 @@ class SceneFileTest : public QObject {
   void tooManyEntriesAreRefusedBeforeBuilding() {
     QByteArray planes = "\"planes\": [";
     for (std::size_t i = 0; i <= carom::tolerance::kMaxPlanes; ++i) planes += i == 0 ? "{}" : ",{}";
-    const SceneLoadResult result = parse(document(planes + "]"));
+    const carom::io::SceneLoadResult result = parse(document(planes + "]"));
     QVERIFY(!result.scene);
     QCOMPARE(result.error, kSource + ": planes: must have at most 10000 entries (got 10001)");
   }
 
   void defaultsAreApplied() {
-    const SceneLoadResult empty = parse(document(""));
+    const carom::io::SceneLoadResult empty = parse(document(""));
     QVERIFY2(empty.scene, qPrintable(empty.error));
     QCOMPARE(difference(*empty.scene, Scene()), QString());
 
-    const SceneLoadResult result =
+    const carom::io::SceneLoadResult result =
         parse(document(R"("world": {"timeStep": 0.01},)"
                        R"( "planes": [{"point": [0,-1,0], "normal": [0,1,0]}],)"
                        R"( "cylinders": [{"point": [5,0,0], "axis": [0,1,0], "radius": 0.5}],)"
@@ -363,7 +363,7 @@ class SceneFileTest : public QObject {
 
   // Colours are in plain string literals: moc misreads a '#' inside a raw string literal.
   void everyFieldIsRead() {
-    const SceneLoadResult result = parse(document(
+    const carom::io::SceneLoadResult result = parse(document(
         R"("world": {"gravity": [1,2,3], "timeStep": 0.5, "restitution": 0.25,)"
         R"( "method": "swept", "integrator": "velocity-verlet"},)"
         R"( "planes": [{"point": [0,-1,0], "normal": [0,3,0], "restitution": 0.5,)"
@@ -393,7 +393,8 @@ class SceneFileTest : public QObject {
     QCOMPARE(ball.name, std::string("b\u00e4ll one"));
 
     // And all of it survives a save.
-    const SceneLoadResult again = carom::parseScene(carom::serializeScene(scene), kSource);
+    const carom::io::SceneLoadResult again =
+        carom::io::parseScene(carom::io::serializeScene(scene), kSource);
     QVERIFY2(again.scene, qPrintable(again.error));
     QCOMPARE(difference(*again.scene, scene), QString());
   }
@@ -407,7 +408,7 @@ class SceneFileTest : public QObject {
         R"( "balls": [{"position": [0,0,0], "radius": 0.25, "spin": [0, 1e300, 2],)"
         R"( "tags": {"b": 1, "a": "x"}},)"
         R"( {"position": [1,0,0], "radius": 0.25}])");
-    const SceneLoadResult result = parse(json);
+    const carom::io::SceneLoadResult result = parse(json);
     QVERIFY2(result.scene, qPrintable(result.error));
     const Scene& scene = *result.scene;
     QCOMPARE(scene.extra,
@@ -419,12 +420,12 @@ class SceneFileTest : public QObject {
              std::string(R"({"spin":[0,1e+300,2],"tags":{"a":"x","b":1}})"));
     QCOMPARE(scene.balls.at(1).extra, std::string());
 
-    const QByteArray saved = carom::serializeScene(scene);
+    const QByteArray saved = carom::io::serializeScene(scene);
     QVERIFY(saved.contains(R"("units": {"length":"cm","mass":"g","time":"s"})"));
-    const SceneLoadResult reloaded = parse(saved);
+    const carom::io::SceneLoadResult reloaded = parse(saved);
     QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
     QCOMPARE(difference(*reloaded.scene, scene), QString());
-    QCOMPARE(carom::serializeScene(*reloaded.scene), saved);
+    QCOMPARE(carom::io::serializeScene(*reloaded.scene), saved);
   }
 
   // Keys a program put into `extra` that a field also writes must not appear twice.
@@ -433,9 +434,9 @@ class SceneFileTest : public QObject {
     Ball ball;
     ball.extra = R"({"radius": 5, "glow": true})";
     scene.balls.push_back(ball);
-    const QByteArray saved = carom::serializeScene(scene);
+    const QByteArray saved = carom::io::serializeScene(scene);
     QCOMPARE(saved.count("\"radius\""), qsizetype{1});
-    const SceneLoadResult reloaded = parse(saved);
+    const carom::io::SceneLoadResult reloaded = parse(saved);
     QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
     QVERIFY(same(reloaded.scene->balls.at(0).radius, 1.0));
     QCOMPARE(reloaded.scene->balls[0].extra, std::string(R"({"glow":true})"));
@@ -446,7 +447,7 @@ class SceneFileTest : public QObject {
     Ball ball;
     ball.name = "quote \" backslash \\ tab \t newline \n \u00e9\u4e2d\U0001f3b1";
     scene.balls.push_back(ball);
-    const SceneLoadResult result = parse(carom::serializeScene(scene));
+    const carom::io::SceneLoadResult result = parse(carom::io::serializeScene(scene));
     QVERIFY2(result.scene, qPrintable(result.error));
     QCOMPARE(result.scene->balls.at(0).name, ball.name);
   }
@@ -454,7 +455,7 @@ class SceneFileTest : public QObject {
   void savedTextIsIndentedVersionOne() {
     Scene scene;
     scene.balls.push_back(Ball());
-    const QByteArray saved = carom::serializeScene(scene);
+    const QByteArray saved = carom::io::serializeScene(scene);
     QVERIFY(saved.startsWith("{\n  \"format\": \"carom-scene\",\n  \"version\": 1,\n"));
     QVERIFY(saved.contains("\n  \"world\": {\n    \"gravity\": [0, -9.81, 0],\n"));
     QVERIFY(
@@ -492,13 +493,13 @@ class SceneFileTest : public QObject {
       ball.velocity = Vec3(values[i], values[i + 1], values[i + 2]);
       scene.balls.push_back(ball);
     }
-    const SceneLoadResult result = parse(carom::serializeScene(scene));
+    const carom::io::SceneLoadResult result = parse(carom::io::serializeScene(scene));
     QVERIFY2(result.scene, qPrintable(result.error));
     QCOMPARE(difference(*result.scene, scene), QString());
 
     Scene negativeZero;
     negativeZero.world.gravity = Vec3(-0.0, 0, 0);
-    const SceneLoadResult zero = parse(carom::serializeScene(negativeZero));
+    const carom::io::SceneLoadResult zero = parse(carom::io::serializeScene(negativeZero));
     QVERIFY2(zero.scene, qPrintable(zero.error));
     QVERIFY(zero.scene->world.gravity.x() == 0.0);
   }
@@ -519,7 +520,7 @@ class SceneFileTest : public QObject {
 
   void bundledSceneRoundTrip() {
     QFETCH(QString, fileName);
-    const SceneLoadResult loaded = carom::loadSceneFile(fileName);
+    const carom::io::SceneLoadResult loaded = carom::io::loadSceneFile(fileName);
     QVERIFY2(loaded.scene, qPrintable(loaded.error));
     QVERIFY(loaded.error.isEmpty());
     QVERIFY(carom::validateScene(*loaded.scene).empty());
@@ -530,17 +531,18 @@ class SceneFileTest : public QObject {
     const QString first = dir.filePath("first.json");
     const QString second = dir.filePath("second.json");
     QString error = "not cleared";
-    QVERIFY(carom::saveSceneFile(*loaded.scene, first, &error));
+    QVERIFY(carom::io::saveSceneFile(*loaded.scene, first, &error));
     QVERIFY(error.isEmpty());
-    const SceneLoadResult reloaded = carom::loadSceneFile(first);
+    const carom::io::SceneLoadResult reloaded = carom::io::loadSceneFile(first);
     QVERIFY2(reloaded.scene, qPrintable(reloaded.error));
     QCOMPARE(difference(*reloaded.scene, *loaded.scene), QString());
-    QVERIFY(carom::saveSceneFile(*reloaded.scene, second, &error));
+    QVERIFY(carom::io::saveSceneFile(*reloaded.scene, second, &error));
     QCOMPARE(readAll(second), readAll(first));
   }
 
   void magicRoomIsAsSpecified() {
-    const SceneLoadResult loaded = carom::loadSceneFile(sceneDir() + "/magic-room.json");
+    const carom::io::SceneLoadResult loaded =
+        carom::io::loadSceneFile(sceneDir() + "/magic-room.json");
     QVERIFY2(loaded.scene, qPrintable(loaded.error));
     const Scene& scene = *loaded.scene;
     QCOMPARE(scene.planes.size(), std::size_t{5});
@@ -563,14 +565,14 @@ class SceneFileTest : public QObject {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString missing = dir.filePath("missing.json");
-    QCOMPARE(carom::loadSceneFile(missing).error,
+    QCOMPARE(carom::io::loadSceneFile(missing).error,
              missing + ": cannot open the file: No such file or directory");
-    QCOMPARE(carom::loadSceneFile(dir.path()).error,
+    QCOMPARE(carom::io::loadSceneFile(dir.path()).error,
              dir.path() + ": cannot open the file: file to open is a directory");
 
     const QString broken = dir.filePath("broken.json");
     QVERIFY(writeAll(broken, "{\"format\": \"carom-scene\",\n\"version\": 1,\n\"balls\": [}"));
-    QCOMPARE(carom::loadSceneFile(broken).error,
+    QCOMPARE(carom::io::loadSceneFile(broken).error,
              broken + ": invalid JSON at line 3, column 12: object is missing after a comma");
   }
 
@@ -581,7 +583,7 @@ class SceneFileTest : public QObject {
     QVERIFY(writeAll(locked, document("")));
     QVERIFY(QFile::setPermissions(locked, QFile::WriteOwner));
     const QByteArray report = runUnprivileged(
-        {dir.path(), locked}, [&] { return carom::loadSceneFile(locked).error.toUtf8(); });
+        {dir.path(), locked}, [&] { return carom::io::loadSceneFile(locked).error.toUtf8(); });
     QCOMPARE(QString::fromUtf8(report), locked + ": cannot open the file: Permission denied");
   }
 
@@ -592,9 +594,9 @@ class SceneFileTest : public QObject {
     const QString huge = dir.filePath("huge.json");
     QFile file(huge);
     QVERIFY(file.open(QIODevice::WriteOnly));
-    QVERIFY(file.resize(carom::kMaxSceneFileBytes + 1));
+    QVERIFY(file.resize(carom::io::kMaxSceneFileBytes + 1));
     file.close();
-    QCOMPARE(carom::loadSceneFile(huge).error,
+    QCOMPARE(carom::io::loadSceneFile(huge).error,
              huge + ": the file is larger than the limit of 256 MiB for scene files");
   }
 
@@ -617,11 +619,11 @@ class SceneFileTest : public QObject {
     QVERIFY(writeAll(keep, "old"));
     const QString fileName = dir.filePath(target);
     QString error;
-    QVERIFY(!carom::saveSceneFile(Scene(), fileName, &error));
+    QVERIFY(!carom::io::saveSceneFile(Scene(), fileName, &error));
     QCOMPARE(error, fileName + ": cannot save: " + reason);
     QCOMPARE(readAll(keep), QByteArray("old"));
     QVERIFY(QFileInfo(dir.filePath("folder")).isDir());
-    QVERIFY(!carom::saveSceneFile(Scene(), fileName, nullptr));
+    QVERIFY(!carom::io::saveSceneFile(Scene(), fileName, nullptr));
   }
 
   // The fuzzers' seeds of bad input and every finding they were fixed for: each gives a scene
@@ -641,24 +643,24 @@ class SceneFileTest : public QObject {
   }
   void fuzzFilesGiveASceneOrAMessage() {
     QFETCH(QString, file);
-    const SceneLoadResult result = carom::loadSceneFile(file);
+    const carom::io::SceneLoadResult result = carom::io::loadSceneFile(file);
     if (!result.scene) {
       QVERIFY(result.error.startsWith(file + ": "));
       return;
     }
-    const SceneLoadResult again = parse(carom::serializeScene(*result.scene));
+    const carom::io::SceneLoadResult again = parse(carom::io::serializeScene(*result.scene));
     QVERIFY2(again.scene, qPrintable(again.error));
     QVERIFY(*again.scene == *result.scene);
   }
   void deepNestingIsRefused() {
     const QByteArray deep = document("\"x\": " + QByteArray(100000, '[') + QByteArray(100000, ']'));
-    const SceneLoadResult result = parse(deep);
+    const carom::io::SceneLoadResult result = parse(deep);
     QVERIFY(!result.scene);
     QVERIFY2(result.error.endsWith("too deeply nested document"), qPrintable(result.error));
   }
   void tooManyValuesAreRefusedBeforeParsing() {
     const QByteArray many = document("\"x\": [0" + QByteArray(",0").repeated(40'000'000) + "]");
-    const SceneLoadResult result = parse(many);
+    const carom::io::SceneLoadResult result = parse(many);
     QVERIFY(!result.scene);
     QCOMPARE(result.error,
              kSource + ": the document holds more than 30000000 values, the limit for scene files");
@@ -669,7 +671,7 @@ class SceneFileTest : public QObject {
   void absurdCountsAreRefused() {
     QByteArray balls = "\"balls\": [{}";
     for (int i = 1; i < 10'000'000; ++i) balls += ",{}";
-    const SceneLoadResult result = parse(document(balls + "]"));
+    const carom::io::SceneLoadResult result = parse(document(balls + "]"));
     QVERIFY(!result.scene);
     QCOMPARE(result.error, kSource + ": balls: must have at most 1000000 entries (got 10000000)");
   }
@@ -685,7 +687,7 @@ class SceneFileTest : public QObject {
       const bool readOnly =
           ::access(folder.constData(), R_OK | X_OK) == 0 && ::access(folder.constData(), W_OK) != 0;
       QString error;
-      const bool saved = carom::saveSceneFile(Scene(), fileName, &error);
+      const bool saved = carom::io::saveSceneFile(Scene(), fileName, &error);
       return QByteArray(readOnly ? "r" : "w") + (saved ? "saved" : error.toUtf8());
     });
     QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
@@ -702,9 +704,9 @@ class SceneFileTest : public QObject {
     Scene scene;
     scene.world.timeStep = 0.125;
     QString error = "stale";
-    QVERIFY(carom::saveSceneFile(scene, fileName, &error));
+    QVERIFY(carom::io::saveSceneFile(scene, fileName, &error));
     QCOMPARE(error, QString());
-    QCOMPARE(readAll(fileName), carom::serializeScene(scene));
+    QCOMPARE(readAll(fileName), carom::io::serializeScene(scene));
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"scene.json"});
   }
 };

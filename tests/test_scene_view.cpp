@@ -1,8 +1,8 @@
 // The 3D view: camera math, the static render data, and what actually lands in the framebuffer.
 
-#include "camera.h"
-#include "render_scene.h"
-#include "scene_view.h"
+#include "ui/render/camera.h"
+#include "ui/render/render_scene.h"
+#include "ui/render/scene_view.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -1,6 +1,6 @@
 // SoundBoard against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
 
-#include "sound_board.h"
+#include "ui/sound/sound_board.h"
 
 #include <QProcess>
 #include <QSignalSpy>
@@ -13,7 +13,7 @@
 
 using carom::CollisionRecord;
 using carom::ContactKind;
-using carom::SoundBoard;
+using carom::sound::SoundBoard;
 
 namespace {
 
@@ -104,19 +104,19 @@ class TestSound : public QObject {
 
   void volumeRisesWithImpactSpeed() {
     const double ref = 2.0;
-    QCOMPARE(carom::volumeForSpeed(0.0, ref), 0.0);
-    QCOMPARE(carom::volumeForSpeed(-1.0, ref), 0.0);
-    QCOMPARE(carom::volumeForSpeed(std::nan(""), ref), 0.0);
-    QCOMPARE(carom::volumeForSpeed(ref, ref), 0.5);
+    QCOMPARE(carom::sound::volumeForSpeed(0.0, ref), 0.0);
+    QCOMPARE(carom::sound::volumeForSpeed(-1.0, ref), 0.0);
+    QCOMPARE(carom::sound::volumeForSpeed(std::nan(""), ref), 0.0);
+    QCOMPARE(carom::sound::volumeForSpeed(ref, ref), 0.5);
     double previous = 0.0;
     for (double speed : {0.01, 0.1, 0.5, 1.0, 2.0, 5.0, 20.0, 1e6}) {
-      const double v = carom::volumeForSpeed(speed, ref);
+      const double v = carom::sound::volumeForSpeed(speed, ref);
       QVERIFY2(v > previous, qPrintable(QString("not louder at %1 m/s").arg(speed)));
       QVERIFY(v <= 1.0);
       previous = v;
     }
     // A larger reference makes the same impact quieter.
-    QVERIFY(carom::volumeForSpeed(1.0, 4.0) < carom::volumeForSpeed(1.0, 1.0));
+    QVERIFY(carom::sound::volumeForSpeed(1.0, 4.0) < carom::sound::volumeForSpeed(1.0, 1.0));
   }
 
   void availableWithServer() {
@@ -165,7 +165,7 @@ class TestSound : public QObject {
     SoundBoard board;
     const double speed = board.settings().referenceSpeed;
     const double expected = filePeak * board.settings().masterVolume *
-                            carom::volumeForSpeed(speed, board.settings().referenceSpeed);
+                            carom::sound::volumeForSpeed(speed, board.settings().referenceSpeed);
     Recorder recorder;
     QVERIFY(recorder.start());
     board.play({hit(ContactKind::BallBall, speed)});

@@ -1,10 +1,10 @@
 // Whole sessions as a user has them, through the real window: menus, clicks and keys under a real
 // X server (Xvfb) with Mesa's OpenGL. Each bug found by using the window is reproduced here.
 
-#include "editor_fixture.h"
-#include "render_scene.h"
-#include "scene_file.h"
-#include "scene_recovery.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "ui/editor/scene_recovery.h"
+#include "ui/render/render_scene.h"
 
 #include <QAction>
 #include <QFileDialog>
@@ -38,7 +38,7 @@ QMenu* menuNamed(QMainWindow& window, const QString& title) {
 
 // The bundled magic room as the loader reads it.
 Scene magicRoom() {
-  return *carom::loadSceneFile(":/scenes/magic-room.json").scene;
+  return *carom::io::loadSceneFile(":/scenes/magic-room.json").scene;
 }
 
 // Every field of every object, compared one by one so that a failure names the object.
@@ -148,7 +148,7 @@ void TestUserSession::deletingABallKeepsEveryOtherName() {
 
   const QString file = folder_.filePath("room.carom");
   saveAsThroughTheDialog(file);
-  const carom::SceneLoadResult saved = carom::loadSceneFile(file);
+  const carom::io::SceneLoadResult saved = carom::io::loadSceneFile(file);
   QVERIFY2(saved.scene, qPrintable(saved.error));
   Scene expected = room;
   expected.balls.erase(expected.balls.begin());
@@ -352,8 +352,8 @@ void TestUserSession::openingAScenesFramesIt() {
   home.home(view().scene()->bounds);
   QVERIFY(sameCamera());
   const QString file = folder_.filePath("cradle.carom");
-  QVERIFY(carom::saveSceneFile(*carom::loadSceneFile(":/scenes/newtons-cradle.json").scene, file,
-                               nullptr));
+  QVERIFY(carom::io::saveSceneFile(*carom::io::loadSceneFile(":/scenes/newtons-cradle.json").scene,
+                                   file, nullptr));
   view().camera().zoom(3);
   openThroughTheDialog(file);
   QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
@@ -411,7 +411,7 @@ void TestUserSession::statusMessagesLeaveTheReadout() {
 void TestUserSession::openEditDeleteSaveReopen() {
   Scene start = magicRoom();
   const QString file = folder_.filePath("session.carom");
-  QVERIFY(carom::saveSceneFile(start, file, nullptr));
+  QVERIFY(carom::io::saveSceneFile(start, file, nullptr));
   openThroughTheDialog(file);
   QVERIFY(document().scene() == start);
   QTRY_VERIFY(window_->framesRendered() > 2);

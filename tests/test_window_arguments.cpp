@@ -1,7 +1,7 @@
 // The window program's command line: the parser on its own, then the real `carom` answering
 // --help, --version and bad arguments with no display to connect to.
 
-#include "window_arguments.h"
+#include "app/window_arguments.h"
 
 #include <QProcess>
 #include <QTemporaryDir>

@@ -1,6 +1,6 @@
-#include "accuracy_window.h"
+#include "ui/accuracy_window.h"
 
-#include "call_queue.h"
+#include "ui/call_queue.h"
 
 #include <QChart>
 #include <QChartView>

@@ -3,7 +3,7 @@
 // of time steps on a background thread, and plots each run's error against its computing time.
 // Choosing a run applies its settings to the sandbox.
 
-#include "accuracy_study.h"
+#include "sim/accuracy_study.h"
 
 #include <QDialog>
 

@@ -1,4 +1,4 @@
-#include "call_queue.h"
+#include "ui/call_queue.h"
 
 namespace carom::ui {
 

@@ -1,6 +1,6 @@
-#include "energy_plot.h"
+#include "ui/energy_plot.h"
 
-#include "simulation_snapshot.h"
+#include "ui/simulation_snapshot.h"
 
 #include <QChart>
 #include <QChartView>

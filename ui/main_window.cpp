@@ -1,23 +1,23 @@
-#include "main_window.h"
+#include "ui/main_window.h"
 
-#include "accuracy_window.h"
-#include "editor_tools.h"
-#include "energy_plot.h"
-#include "help_dialogs.h"
-#include "language.h"
-#include "number_box.h"
-#include "outline_dock.h"
-#include "properties_dock.h"
+#include "ui/accuracy_window.h"
+#include "ui/editor/editor_tools.h"
+#include "ui/editor/outline_dock.h"
+#include "ui/editor/properties_dock.h"
+#include "ui/energy_plot.h"
+#include "ui/help_dialogs.h"
+#include "ui/language.h"
+#include "ui/number_box.h"
 
-#include "render_scene.h"
-#include "scene_document.h"
-#include "scene_file.h"
-#include "scene_recovery.h"
-#include "scene_view.h"
-#include "simulation_controller.h"
-#include "sound_board.h"
-#include "tolerances.h"
-#include "validation.h"
+#include "sim/io/scene_file.h"
+#include "sim/tolerances.h"
+#include "sim/validation.h"
+#include "ui/editor/scene_document.h"
+#include "ui/editor/scene_recovery.h"
+#include "ui/render/render_scene.h"
+#include "ui/render/scene_view.h"
+#include "ui/simulation_controller.h"
+#include "ui/sound/sound_board.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -98,7 +98,7 @@ MainWindow::MainWindow(QWidget* parent)
   status_ = new QLabel;
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
   statusBar()->addPermanentWidget(status_);
-  sound_ = new SoundBoard(this);
+  sound_ = new sound::SoundBoard(this);
   tools_ = new EditorTools(document_, view_, this);
   connect(tools_, &EditorTools::refused, this, &MainWindow::showMessage);
   outlineDock_ = new OutlineDock(document_, this);
@@ -143,8 +143,10 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() {
   // Closing the window moves the focus, which commits a value being typed in a dock: the
-  // document takes it, but this half-destroyed window must no longer hear of it.
+  // document takes it, but this half-destroyed window must no longer hear of it. Nor of the
+  // undo stack, which announces its texts as it clears itself on the way out.
   document_->disconnect(this);
+  document_->undoStack()->disconnect(this);
 }
 
 void MainWindow::commitTypedValue() {
@@ -742,7 +744,7 @@ void MainWindow::buildFileActions() {
 
 bool MainWindow::openFile(const QString& fileName, bool askToSave) {
   if (askToSave && !maybeSave()) return false;
-  const SceneLoadResult loaded = loadSceneFile(fileName);
+  const io::SceneLoadResult loaded = io::loadSceneFile(fileName);
   if (!loaded.scene) {
     // The open scene stays as it was.
     QMessageBox::warning(this, tr("Cannot Open Scene"), loaded.error);
@@ -758,7 +760,7 @@ bool MainWindow::openExample(const QString& file, bool askToSave) {
                                      [&](const auto& entry) { return file == entry.file; });
   if (example == std::end(kExamples)) return false;
   if (askToSave && !maybeSave()) return false;
-  const SceneLoadResult loaded = loadSceneFile(QString(":/scenes/%1.json").arg(file));
+  const io::SceneLoadResult loaded = io::loadSceneFile(QString(":/scenes/%1.json").arg(file));
   if (!loaded.scene) return false;  // bundled and tested: cannot happen
   openScene(*loaded.scene, {}, tr(example->title));
   openedExample_ = static_cast<int>(example - std::begin(kExamples));
@@ -784,7 +786,8 @@ bool MainWindow::offerRecovery() {
     const int answer = box.exec();
     if (answer == QMessageBox::Cancel) continue;
     const bool recover = answer == QMessageBox::Yes;
-    const SceneLoadResult loaded = recover ? loadSceneFile(orphan.sceneFile) : SceneLoadResult{};
+    const io::SceneLoadResult loaded =
+        recover ? io::loadSceneFile(orphan.sceneFile) : io::SceneLoadResult{};
     if (recover && !loaded.scene) {
       QMessageBox::warning(this, tr("Cannot Recover Scene"), loaded.error);
       continue;  // kept, for a later try
@@ -820,7 +823,7 @@ bool MainWindow::saveAs() {
 bool MainWindow::saveTo(const QString& fileName) {
   commitTypedValue();
   QString error;
-  if (!saveSceneFile(document_->scene(), fileName, &error)) {
+  if (!io::saveSceneFile(document_->scene(), fileName, &error)) {
     // The old file, if any, is untouched: the save writes a new one and renames it over.
     QMessageBox::warning(this, tr("Cannot Save Scene"), error);
     return false;
@@ -954,7 +957,7 @@ void MainWindow::buildEditActions() {
 void MainWindow::copySelection() {
   const Selection& selection = document_->selection();
   if (selection.empty()) return;
-  const QByteArray json = serializeScene(extract(document_->scene(), selection));
+  const QByteArray json = io::serializeScene(extract(document_->scene(), selection));
   auto* mime = new QMimeData;
   mime->setData(kSceneMimeType, json);
   mime->setText(QString::fromUtf8(json));
@@ -966,7 +969,7 @@ void MainWindow::paste() {
   if (!mime) return;
   const QByteArray json =
       mime->hasFormat(kSceneMimeType) ? mime->data(kSceneMimeType) : mime->text().toUtf8();
-  const SceneLoadResult parsed = parseScene(json, tr("clipboard"));
+  const io::SceneLoadResult parsed = io::parseScene(json, tr("clipboard"));
   if (!parsed.scene) {
     showMessage(tr("Nothing to paste: %1").arg(parsed.error));
     return;

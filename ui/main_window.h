@@ -2,8 +2,8 @@
 // The sandbox window: the 3D view in the centre, the simulation controls on a toolbar, the
 // numbers in the status bar. It observes the simulation through snapshots and never waits on it.
 
-#include "object_ref.h"
-#include "scene.h"
+#include "sim/scene.h"
+#include "ui/editor/object_ref.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -33,7 +33,7 @@ struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
 }  // namespace carom::ui
-namespace carom {
+namespace carom::sound {
 class SoundBoard;
 }
 namespace carom::render {
@@ -77,7 +77,7 @@ class MainWindow : public QMainWindow {
   void setRunning(bool running);
   QWidget* view() const;
   EnergyPlot* energyPlot() const { return energyPlot_; }
-  SoundBoard& sound() { return *sound_; }
+  sound::SoundBoard& sound() { return *sound_; }
   QString statusText() const;
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
   AccuracyWindow* openAccuracyWindow(double duration = 5.0);
@@ -130,7 +130,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
-  SoundBoard* sound_ = nullptr;
+  sound::SoundBoard* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;
   QAction* antialiasingAction_ = nullptr;

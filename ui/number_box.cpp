@@ -1,6 +1,6 @@
-#include "number_box.h"
+#include "ui/number_box.h"
 
-#include "number_text.h"
+#include "ui/editor/number_text.h"
 
 #include <QFontMetrics>
 

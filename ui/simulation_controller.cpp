@@ -1,7 +1,7 @@
-#include "simulation_controller.h"
+#include "ui/simulation_controller.h"
 
-#include "call_queue.h"
-#include "simulation_worker.h"
+#include "ui/call_queue.h"
+#include "ui/simulation_worker.h"
 
 #if defined(__SANITIZE_THREAD__)
 #include <sanitizer/tsan_interface.h>

@@ -2,8 +2,8 @@
 // The GUI's handle on the simulation: owns the worker thread and forwards every request to the
 // worker as a queued call (CallQueue), so nothing here ever waits on the physics.
 
-#include "scene.h"
-#include "simulation_snapshot.h"
+#include "sim/scene.h"
+#include "ui/simulation_snapshot.h"
 
 #include <QObject>
 #include <QThread>

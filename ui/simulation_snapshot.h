@@ -2,8 +2,8 @@
 // What the simulation worker hands to the GUI: an immutable picture of one moment. The worker
 // publishes a new one after each batch of steps; the GUI reads the latest without waiting.
 
-#include "run_stats.h"
-#include "scene.h"
+#include "sim/run_stats.h"
+#include "sim/scene.h"
 
 #include <memory>
 #include <mutex>

@@ -1,7 +1,7 @@
-#include "simulation_worker.h"
+#include "ui/simulation_worker.h"
 
-#include "measures.h"
-#include "simulation.h"
+#include "sim/measures.h"
+#include "sim/simulation.h"
 
 #include <QThread>
 #include <QTimer>

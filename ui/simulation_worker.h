@@ -3,8 +3,8 @@
 // through queued calls (SimulationController) and reads its results from the SnapshotExchange,
 // so the GUI never waits on the physics and the worker never touches a widget.
 
-#include "scene.h"
-#include "simulation_snapshot.h"
+#include "sim/scene.h"
+#include "ui/simulation_snapshot.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,7 +1,7 @@
 // libFuzzer target: carom-cli's argument parsing, with the input cut into arguments at NUL
 // bytes. Every command line parses into a command or a message. Built by scripts/fuzz.sh.
 
-#include "cli_arguments.h"
+#include "app/cli/cli_arguments.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,8 +1,8 @@
-#include "editor_tools.h"
+#include "ui/editor/editor_tools.h"
 
-#include "ray_cast.h"
-#include "scene_document.h"
-#include "scene_view.h"
+#include "sim/ray_cast.h"
+#include "ui/editor/scene_document.h"
+#include "ui/render/scene_view.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>

@@ -3,8 +3,8 @@
 // Plane and Add Cylinder (click to place). They watch the view's mouse and keys and change the
 // scene only through the document, one command per click or drag.
 
-#include "object_ref.h"
-#include "scene.h"
+#include "sim/scene.h"
+#include "ui/editor/object_ref.h"
 
 #include <QObject>
 #include <QPointF>

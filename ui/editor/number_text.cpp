@@ -1,4 +1,4 @@
-#include "number_text.h"
+#include "ui/editor/number_text.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

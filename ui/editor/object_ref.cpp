@@ -1,4 +1,4 @@
-#include "object_ref.h"
+#include "ui/editor/object_ref.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
-#include "outline_dock.h"
+#include "ui/editor/outline_dock.h"
 
-#include "scene_document.h"
+#include "ui/editor/scene_document.h"
 
 #include <QColor>
 #include <QHeaderView>

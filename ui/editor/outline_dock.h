@@ -3,7 +3,7 @@
 // Objects dock. Its selection and the document's are one: selecting in either shows in both.
 // Names are edited in place (double-click or F2), as one command each.
 
-#include "object_ref.h"
+#include "ui/editor/object_ref.h"
 
 #include <QAbstractItemModel>
 #include <QDockWidget>

@@ -1,7 +1,7 @@
-#include "properties_dock.h"
+#include "ui/editor/properties_dock.h"
 
-#include "number_text.h"
-#include "scene_document.h"
+#include "ui/editor/number_text.h"
+#include "ui/editor/scene_document.h"
 
 #include <QColorDialog>
 #include <QComboBox>

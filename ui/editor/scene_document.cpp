@@ -1,6 +1,6 @@
-#include "scene_document.h"
+#include "ui/editor/scene_document.h"
 
-#include "validation.h"
+#include "sim/validation.h"
 
 #include <QFileInfo>
 #include <QUndoCommand>

@@ -2,8 +2,8 @@
 // The open scene, as Tiled's MapDocument: it owns the scene's initial state, the selection and
 // the undo stack. Every change is a command on the stack; views and docks observe the signals.
 
-#include "object_ref.h"
-#include "scene.h"
+#include "sim/scene.h"
+#include "ui/editor/object_ref.h"
 
 #include <QObject>
 #include <QString>

@@ -1,7 +1,7 @@
-#include "scene_recovery.h"
+#include "ui/editor/scene_recovery.h"
 
-#include "scene_document.h"
-#include "scene_file.h"
+#include "sim/io/scene_file.h"
+#include "ui/editor/scene_document.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -75,7 +75,7 @@ QString SceneRecovery::copyFile() const {
 
 bool SceneRecovery::autosave() {
   if (!document_->isModified() || !changedSinceCopy_) return true;
-  if (!saveSceneFile(document_->scene(), copyFile(), nullptr)) return false;
+  if (!io::saveSceneFile(document_->scene(), copyFile(), nullptr)) return false;
   QSaveFile note(pathOf(id_, kNoteSuffix));
   if (!note.open(QIODevice::WriteOnly)) return false;
   note.write(QJsonDocument(QJsonObject{{"original", document_->fileName()}}).toJson());

@@ -2,7 +2,7 @@
 // An axis-aligned box: the region the renderer clips infinite planes and cylinders to, and the
 // region the camera frames.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 namespace carom::render {
 

@@ -1,4 +1,4 @@
-#include "camera.h"
+#include "ui/render/camera.h"
 
 #include <QVector4D>
 

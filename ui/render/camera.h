@@ -1,8 +1,8 @@
 #pragma once
 // An orbit camera: it circles a target point at some distance, looking at it. Pure math, no GL.
 
-#include "bounds.h"
-#include "scene.h"
+#include "sim/scene.h"
+#include "ui/render/bounds.h"
 
 #include <QMatrix4x4>
 #include <QPointF>

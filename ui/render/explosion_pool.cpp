@@ -1,4 +1,4 @@
-#include "explosion_pool.h"
+#include "ui/render/explosion_pool.h"
 
 #include <algorithm>
 

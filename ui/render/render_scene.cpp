@@ -1,4 +1,4 @@
-#include "render_scene.h"
+#include "ui/render/render_scene.h"
 
 #include <algorithm>
 #include <array>

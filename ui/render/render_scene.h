@@ -2,8 +2,8 @@
 // The part of a scene the renderer needs that does not move while it runs: geometry of the
 // static objects already clipped to a finite box, ball sizes and colours. Built once per scene.
 
-#include "bounds.h"
-#include "scene.h"
+#include "sim/scene.h"
+#include "ui/render/bounds.h"
 
 #include <Eigen/Geometry>  // cross products, for the planes and cylinders
 #include <QColor>

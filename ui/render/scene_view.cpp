@@ -1,4 +1,4 @@
-#include "scene_view.h"
+#include "ui/render/scene_view.h"
 
 #include <QElapsedTimer>
 #include <QImage>

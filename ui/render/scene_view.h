@@ -2,10 +2,10 @@
 // The 3D view of a running scene: OpenGL 3.3 core, all balls in one instanced draw call of
 // ray-cast spheres, and additive sparks where they collide.
 
-#include "camera.h"
-#include "explosion_pool.h"
-#include "render_scene.h"
-#include "run_stats.h"
+#include "sim/run_stats.h"
+#include "ui/render/camera.h"
+#include "ui/render/explosion_pool.h"
+#include "ui/render/render_scene.h"
 
 #include <Eigen/Geometry>
 #include <QElapsedTimer>

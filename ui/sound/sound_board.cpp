@@ -1,4 +1,4 @@
-#include "sound_board.h"
+#include "ui/sound/sound_board.h"
 
 #include <QAudioDevice>
 #include <QMediaDevices>
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-namespace carom {
+namespace carom::sound {
 
 double volumeForSpeed(double speed, double referenceSpeed) {
   // !(x > 0) also catches NaN, which must not reach the audio backend.
@@ -140,4 +140,4 @@ bool SoundBoard::start(Sound sound, double speed, std::int64_t nowMs) {
   return true;
 }
 
-}  // namespace carom
+}  // namespace carom::sound

@@ -1,7 +1,7 @@
 #pragma once
 // Collision sounds: turns the collisions of a frame into a few short, rate-limited clicks.
 
-#include "run_stats.h"
+#include "sim/run_stats.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -14,7 +14,7 @@
 class QMediaDevices;
 class QSoundEffect;
 
-namespace carom {
+namespace carom::sound {
 
 // Loudness for an impact: rises smoothly from 0 and approaches 1 for speeds well above the
 // reference, so hard hits are loud without ever clipping. Pure, for tests.
@@ -79,4 +79,4 @@ class SoundBoard : public QObject {
   int dropped_ = 0;
 };
 
-}  // namespace carom
+}  // namespace carom::sound

@@ -1,8 +1,8 @@
-#include "bench.h"
+#include "app/cli/bench.h"
 
-#include "cli.h"
-#include "scene_builders.h"
-#include "simulation.h"
+#include "app/cli/cli.h"
+#include "sim/scene_builders.h"
+#include "sim/simulation.h"
 
 #include <QElapsedTimer>
 

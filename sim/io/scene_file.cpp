@@ -1,7 +1,7 @@
-#include "scene_file.h"
+#include "sim/io/scene_file.h"
 
-#include "tolerances.h"
-#include "validation.h"
+#include "sim/tolerances.h"
+#include "sim/validation.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -18,7 +18,7 @@
 #include <string_view>
 #include <utility>
 
-namespace carom {
+namespace carom::io {
 namespace {
 
 constexpr int kFormatVersion = 1;
@@ -496,4 +496,4 @@ bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) 
   return true;
 }
 
-}  // namespace carom
+}  // namespace carom::io

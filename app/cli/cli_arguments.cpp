@@ -1,4 +1,4 @@
-#include "cli_arguments.h"
+#include "app/cli/cli_arguments.h"
 
 #include <cmath>
 

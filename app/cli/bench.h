@@ -1,7 +1,7 @@
 #pragma once
 // `carom-cli bench`: the benchmark scenes of the README, as a table.
 
-#include "cli_arguments.h"
+#include "app/cli/cli_arguments.h"
 
 #include <QTextStream>
 

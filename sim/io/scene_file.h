@@ -1,14 +1,14 @@
 #pragma once
 // Scene files: the JSON format of docs/scene-format.md, read and written with QtCore.
 
-#include "scene.h"
+#include "sim/scene.h"
 
 #include <QByteArray>
 #include <QString>
 
 #include <optional>
 
-namespace carom {
+namespace carom::io {
 
 struct SceneLoadResult {
   std::optional<Scene> scene;  // set on success
@@ -33,4 +33,4 @@ inline constexpr qint64 kMaxSceneFileBytes = qint64{256} * 1024 * 1024;
 // tree takes tens of bytes a value. A million balls with every field set hold about 14 million.
 inline constexpr qint64 kMaxSceneValues = 30'000'000;
 
-}  // namespace carom
+}  // namespace carom::io

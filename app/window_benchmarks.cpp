@@ -1,11 +1,11 @@
-#include "window_benchmarks.h"
+#include "app/window_benchmarks.h"
 
-#include "main_window.h"
-#include "scene_builders.h"
-#include "scene_view.h"
-#include "simulation_controller.h"
-#include "simulation_snapshot.h"
-#include "sound_board.h"
+#include "sim/scene_builders.h"
+#include "ui/main_window.h"
+#include "ui/render/scene_view.h"
+#include "ui/simulation_controller.h"
+#include "ui/simulation_snapshot.h"
+#include "ui/sound/sound_board.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

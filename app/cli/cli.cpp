@@ -1,10 +1,10 @@
-#include "cli.h"
+#include "app/cli/cli.h"
 
-#include "bench.h"
-#include "cli_arguments.h"
-#include "run_report.h"
-#include "scene_file.h"
-#include "validation.h"
+#include "app/cli/bench.h"
+#include "app/cli/cli_arguments.h"
+#include "app/cli/run_report.h"
+#include "sim/io/scene_file.h"
+#include "sim/validation.h"
 
 #include <QCoreApplication>
 
@@ -21,7 +21,7 @@ QString joined(const std::vector<std::string_view>& names) {
 
 // Loads the scene and applies the command line's overrides, checked by the one scene validation.
 std::optional<Scene> prepareScene(const RunOptions& options, QTextStream& err) {
-  SceneLoadResult loaded = loadSceneFile(options.scenePath);
+  io::SceneLoadResult loaded = io::loadSceneFile(options.scenePath);
   if (!loaded.scene) {
     err << loaded.error << "\n";
     return std::nullopt;

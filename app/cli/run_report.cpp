@@ -1,8 +1,8 @@
-#include "run_report.h"
+#include "app/cli/run_report.h"
 
-#include "cli.h"
-#include "measures.h"
-#include "simulation.h"
+#include "app/cli/cli.h"
+#include "sim/measures.h"
+#include "sim/simulation.h"
 
 #include <QElapsedTimer>
 #include <QFile>

@@ -1,8 +1,8 @@
 #pragma once
 // `carom-cli run`: runs a scene and reports what happened, as text or as one JSON object.
 
-#include "cli_arguments.h"
-#include "scene.h"
+#include "app/cli/cli_arguments.h"
+#include "sim/scene.h"
 
 #include <QTextStream>
 
