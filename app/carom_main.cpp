@@ -87,9 +87,9 @@ int main(int argc, char** argv) {
     parser.process(app);  // prints the help with Qt's options and exits
   }
 
-  if (arguments.benchRenderBalls) return carom::ui::benchmarkRender(*arguments.benchRenderBalls);
+  if (arguments.benchRenderBalls) return carom::app::benchmarkRender(*arguments.benchRenderBalls);
   if (arguments.benchStressSeconds)
-    return carom::ui::benchmarkStress(*arguments.benchStressSeconds);
+    return carom::app::benchmarkStress(*arguments.benchStressSeconds);
 
   carom::ui::MainWindow window;
   window.openExample("magic-room", false);

@@ -17,8 +17,10 @@
 #include <numeric>
 #include <vector>
 
-namespace carom::ui {
+namespace carom::app {
 namespace {
+
+using ui::MainWindow;
 
 constexpr QSize kBenchViewSize(1280, 720);
 constexpr int kBenchWarmUpMs = 1000;  // scene upload, first frames, the worker's first batches
@@ -106,27 +108,31 @@ void printView(const render::SceneView& view) {
               view.softwareRenderer() ? "software" : "hardware");
 }
 
-}  // namespace
+// Frame figures of one scene, measured over kRenderRunMs after a warm-up.
+struct FrameFigures {
+  std::size_t frames = 0;
+  double seconds = 0.0;
+  std::vector<double> intervals;  // between consecutive frames, ms, sorted
+  double meanPaintMs = 0.0;       // paintGL with glFinish
+  double longestStallMs = 0.0;
 
-int benchmarkRender(int ballCount) {
-  MainWindow window;
-  window.openScene(makeGasInBox(ballCount, 0.25, Vec3::Zero(), 2007), {},
-                   QStringLiteral("gas of %1 balls").arg(ballCount));
-  render::SceneView* view = showWithBenchViewSize(window);
-  if (!view) return 1;
+  double fps() const { return seconds > 0.0 ? frames / seconds : 0.0; }
+  double meanIntervalMs() const { return mean(intervals); }
+};
 
-  std::vector<double> intervals;  // between consecutive frames, ms
+FrameFigures measureFrames(MainWindow& window, render::SceneView& view) {
+  FrameFigures figures;
   std::vector<double> paintTimes;
   QElapsedTimer frameClock;
   bool measuring = false;
-  QObject::connect(view, &render::SceneView::frameRendered, &window, [&](double paintMs) {
-    if (!measuring) return;
-    if (frameClock.isValid()) intervals.push_back(frameClock.nsecsElapsed() * 1e-6);
-    paintTimes.push_back(paintMs);
-    frameClock.start();
-  });
+  const QMetaObject::Connection counting =
+      QObject::connect(&view, &render::SceneView::frameRendered, &window, [&](double paintMs) {
+        if (!measuring) return;
+        if (frameClock.isValid()) figures.intervals.push_back(frameClock.nsecsElapsed() * 1e-6);
+        paintTimes.push_back(paintMs);
+        frameClock.start();
+      });
   StallProbe probe(&window);
-
   window.setRunning(true);
   processEventsFor(kBenchWarmUpMs);
   probe.takeGaps();
@@ -134,22 +140,53 @@ int benchmarkRender(int ballCount) {
   QElapsedTimer run;
   run.start();
   processEventsFor(kRenderRunMs);
-  const double seconds = run.nsecsElapsed() * 1e-9;
+  figures.seconds = run.nsecsElapsed() * 1e-9;
   measuring = false;
   window.setRunning(false);
+  QObject::disconnect(counting);
   const std::vector<double> gaps = probe.takeGaps();
+  std::sort(figures.intervals.begin(), figures.intervals.end());
+  figures.frames = paintTimes.size();
+  figures.meanPaintMs = mean(paintTimes);
+  figures.longestStallMs = gaps.empty() ? 0.0 : gaps.back();
+  return figures;
+}
 
-  std::sort(intervals.begin(), intervals.end());
+void printFigures(const char* name, const FrameFigures& figures, const FrameFigures* floor) {
+  const auto ratio = [](double value, double base) { return base > 0.0 ? value / base : 0.0; };
+  std::printf("%s: %zu frames in %.2f s, %.1f fps\n", name, figures.frames, figures.seconds,
+              figures.fps());
+  std::printf("  frame interval ms: mean %.2f  median %.2f  p95 %.2f  max %.2f\n",
+              figures.meanIntervalMs(), percentile(figures.intervals, 0.5),
+              percentile(figures.intervals, 0.95),
+              figures.intervals.empty() ? 0.0 : figures.intervals.back());
+  std::printf("  paintGL ms (incl. glFinish): mean %.2f\n", figures.meanPaintMs);
+  std::printf("  longest GUI stall ms: %.2f\n", figures.longestStallMs);
+  if (floor)
+    std::printf("  to the floor: frame interval x%.2f (median x%.2f), paintGL x%.2f\n",
+                ratio(figures.meanIntervalMs(), floor->meanIntervalMs()),
+                ratio(percentile(figures.intervals, 0.5), percentile(floor->intervals, 0.5)),
+                ratio(figures.meanPaintMs, floor->meanPaintMs));
+}
+
+}  // namespace
+
+int benchmarkRender(int ballCount) {
+  const Scene gas = makeGasInBox(ballCount, 0.25, Vec3::Zero(), 2007);
+  Scene box = gas;
+  box.balls.clear();
+  MainWindow window;
+  window.openScene(box, {}, QStringLiteral("empty box"));
+  render::SceneView* view = showWithBenchViewSize(window);
+  if (!view) return 1;
   std::printf("balls: %d\n", ballCount);
   printView(*view);
-  std::printf("run: %.2f s\n", seconds);
-  std::printf("frames: %zu\n", paintTimes.size());
-  std::printf("mean fps: %.1f\n", paintTimes.size() / seconds);
-  std::printf("frame interval ms: mean %.2f  median %.2f  p95 %.2f  max %.2f\n", mean(intervals),
-              percentile(intervals, 0.5), percentile(intervals, 0.95),
-              intervals.empty() ? 0.0 : intervals.back());
-  std::printf("paintGL ms (incl. glFinish): mean %.2f\n", mean(paintTimes));
-  std::printf("longest GUI stall ms: %.2f\n", gaps.empty() ? 0.0 : gaps.back());
+  // The same window and box without balls: what composing the window costs whatever is drawn.
+  const FrameFigures floor = measureFrames(window, *view);
+  printFigures("floor (no balls)", floor, nullptr);
+  window.openScene(gas, {}, QStringLiteral("gas of %1 balls").arg(ballCount));
+  const FrameFigures balls = measureFrames(window, *view);
+  printFigures(qPrintable(QStringLiteral("%1 balls").arg(ballCount)), balls, &floor);
   std::fflush(stdout);
   return 0;
 }
@@ -238,4 +275,4 @@ int benchmarkStress(int seconds) {
   return 0;
 }
 
-}  // namespace carom::ui
+}  // namespace carom::app

@@ -3,10 +3,11 @@
 // Benchmarks of the whole program in its real window, for `carom --bench-render` and
 // `carom --bench-stress`. Both print their figures to stdout and return an exit code.
 
-namespace carom::ui {
+namespace carom::app {
 
 // A gas of `ballCount` balls running with the view at 1280x720: frame intervals and the longest
-// stall of the GUI thread over 5 s.
+// stall of the GUI thread over 5 s, first for the same window and box without balls (the floor
+// that composing the window costs), then with them, each figure also as a ratio to the floor.
 int benchmarkRender(int ballCount);
 
 // A gas hot enough for about 10,000 collisions a second, run for `seconds` with explosions and
@@ -14,4 +15,4 @@ int benchmarkRender(int ballCount);
 // memory, live explosions and sounds played; then whether memory stayed flat.
 int benchmarkStress(int seconds);
 
-}  // namespace carom::ui
+}  // namespace carom::app

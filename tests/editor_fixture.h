@@ -1,20 +1,17 @@
 #pragma once
 // What the editor's GUI tests share: a small scene, a window showing it, clicks at world
-// points, and an answerer for modal dialogs that never lets one hang the run.
+// points, and the answerers for modal dialogs of tests/dialog_answerer.h.
 
+#include "tests/dialog_answerer.h"
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
 
 #include <QAction>
 #include <QApplication>
-#include <QDialog>
-#include <QMessageBox>
-#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTest>
-#include <QTimer>
 
 #include <functional>
 #include <memory>
@@ -43,51 +40,6 @@ inline Scene floorScene() {
   }
   return scene;
 }
-
-// Waits for the next modal dialog of type `Dialog`, then hands it to `answer` (which must close
-// it). Gives up after five seconds, closing whatever modal dialog is up, so no test hangs.
-template <typename Dialog>
-class ModalAnswerer {
- public:
-  explicit ModalAnswerer(std::function<void(Dialog*)> answer) : answer_(std::move(answer)) {
-    QTimer::singleShot(0, [this] { poll(); });
-  }
-  bool answered() const { return answered_; }
-
- private:
-  void poll() {
-    QWidget* modal = QApplication::activeModalWidget();
-    if (auto* dialog = qobject_cast<Dialog*>(modal)) {
-      answered_ = true;
-      answer_(dialog);
-      return;
-    }
-    if (++attempts_ < 500) {
-      QTimer::singleShot(10, [this] { poll(); });
-    } else if (auto* other = qobject_cast<QDialog*>(modal)) {
-      other->reject();
-    }
-  }
-  std::function<void(Dialog*)> answer_;
-  bool answered_ = false;
-  int attempts_ = 0;
-};
-
-// Presses `button` in the next message box and records its text.
-class DialogAnswerer {
- public:
-  explicit DialogAnswerer(QMessageBox::StandardButton button)
-      : answerer_([this, button](QMessageBox* box) {
-          text_ = box->text();
-          box->button(button)->click();
-        }) {}
-  QString text() const { return text_; }
-  bool answered() const { return answerer_.answered(); }
-
- private:
-  QString text_;
-  ModalAnswerer<QMessageBox> answerer_;
-};
 
 // Opens a window on floorScene() for each test and drives its view.
 class EditorFixture : public QObject {

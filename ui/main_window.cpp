@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/accuracy_window.h"
+#include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
@@ -8,8 +9,8 @@
 #include "ui/help_dialogs.h"
 #include "ui/language.h"
 #include "ui/number_box.h"
+#include "ui/scene_files.h"
 
-#include "sim/io/scene_file.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 #include "ui/editor/scene_document.h"
@@ -21,21 +22,16 @@
 
 #include <QAction>
 #include <QActionGroup>
-#include <QApplication>
-#include <QClipboard>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
-#include <QFileDialog>
-#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QMimeData>
-#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -48,16 +44,6 @@ namespace carom::ui {
 using render::SceneView;
 
 namespace {
-
-// The bundled scenes the Examples menu offers, by title, in its order.
-constexpr struct {
-  const char* file;  // in :/scenes, without ".json"
-  const char* title;
-} kExamples[] = {{"magic-room", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Magic room")},
-                 {"galton-board", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Galton board")},
-                 {"gas-box", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Gas box")},
-                 {"inelastic-pile", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Inelastic pile")},
-                 {"newtons-cradle", QT_TRANSLATE_NOOP("carom::ui::MainWindow", "Newton's cradle")}};
 
 // For each ball of `edited`, the index of the same ball in `shown` when the edit left it
 // alone. Every edit keeps the order of the balls it does not touch and either changes balls in
@@ -109,6 +95,31 @@ MainWindow::MainWindow(QWidget* parent)
   connect(propertiesDock_, &PropertiesDock::refused, this, &MainWindow::showMessage);
   resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   recovery_ = new SceneRecovery(document_, this);
+  files_ = new SceneFiles(document_, this, this);
+  connect(files_, &SceneFiles::message, this, &MainWindow::showMessage);
+  connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] {
+    playAction_->setChecked(false);
+    shownScene_.reset();  // a fresh start: no running state carries over to another scene
+  });
+  connect(files_, &SceneFiles::sceneOpened, this, [this] {
+    view_->frameScene();
+    energyPlot_->clear();
+    lastCollisionCount_ = 0;
+    lastCollisionTime_ = 0.0;
+    collisionsPerSecond_ = 0.0;
+  });
+  // Pasted and duplicated balls move to the right of the screen, as the camera looks.
+  editActions_ = new EditActions(
+      document_,
+      [this] {
+        const QVector3D right =
+            QVector3D::crossProduct(view_->camera().eye() - view_->camera().target(),
+                                    QVector3D(0, 1, 0))
+                .normalized();
+        return Vec3(-right.x(), -right.y(), -right.z());
+      },
+      this);
+  connect(editActions_, &EditActions::message, this, &MainWindow::showMessage);
   buildActions();
   buildFileActions();
   buildEditActions();
@@ -147,12 +158,6 @@ MainWindow::~MainWindow() {
   // undo stack, which announces its texts as it clears itself on the way out.
   document_->disconnect(this);
   document_->undoStack()->disconnect(this);
-}
-
-void MainWindow::commitTypedValue() {
-  // As if the user had pressed Enter: fields and the outline's name editor commit on focus out.
-  if (QWidget* focus = QApplication::focusWidget(); focus && focus->window() == this)
-    focus->clearFocus();
 }
 
 QWidget* MainWindow::view() const {
@@ -328,10 +333,10 @@ void MainWindow::buildMenus() {
 
   examplesMenu_ = menuBar()->addMenu(QString());
   examplesMenu_->setObjectName("examplesMenu");
-  for (const auto& example : kExamples) {
-    QAction* action = examplesMenu_->addAction(
-        QString(), this, [this, file = QString(example.file)] { openExample(file, true); });
-    action->setObjectName(QString("example:%1").arg(example.file));
+  for (const QString& file : SceneFiles::exampleFiles()) {
+    QAction* action =
+        examplesMenu_->addAction(QString(), this, [this, file] { openExample(file, true); });
+    action->setObjectName(QString("example:%1").arg(file));
   }
 
   viewMenu_ = menuBar()->addMenu(QString());
@@ -474,8 +479,8 @@ void MainWindow::retranslate() {
 
   examplesMenu_->setTitle(tr("&Examples"));
   const QList<QAction*> examples = examplesMenu_->actions();
-  for (int i = 0; i < int(std::size(kExamples)); ++i) examples[i]->setText(tr(kExamples[i].title));
-  if (openedExample_ >= 0) document_->setTitle(tr(kExamples[openedExample_].title));
+  for (int i = 0; i < int(examples.size()); ++i) examples[i]->setText(SceneFiles::exampleTitle(i));
+  files_->retranslate();
 
   viewMenu_->setTitle(tr("&View"));
   followAction_->setText(tr("&Follow Ball"));
@@ -498,15 +503,7 @@ void MainWindow::retranslate() {
 
 void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
                            const QString& title) {
-  openedExample_ = -1;
-  playAction_->setChecked(false);
-  shownScene_.reset();  // a fresh start: no running state carries over to another scene
-  document_->reset(scene, fileName, title);
-  view_->frameScene();
-  energyPlot_->clear();
-  lastCollisionCount_ = 0;
-  lastCollisionTime_ = 0.0;
-  collisionsPerSecond_ = 0.0;
+  files_->openScene(scene, fileName, title);
 }
 
 void MainWindow::showDocumentScene() {
@@ -722,17 +719,10 @@ void MainWindow::showStatus() {
 void MainWindow::buildFileActions() {
   newAction_ = new QAction(this);
   newAction_->setShortcut(QKeySequence::New);
-  connect(newAction_, &QAction::triggered, this, [this] {
-    if (maybeSave()) openScene(SceneDocument::newScene(), {});
-  });
+  connect(newAction_, &QAction::triggered, files_, &SceneFiles::newScene);
   openAction_ = new QAction(this);
   openAction_->setShortcut(QKeySequence::Open);
-  connect(openAction_, &QAction::triggered, this, [this] {
-    if (!maybeSave()) return;
-    const QString file = QFileDialog::getOpenFileName(
-        this, tr("Open Scene"), lastFolder(), tr("Carom scenes (*.carom *.json);;All files (*)"));
-    if (!file.isEmpty()) openFile(file, false);
-  });
+  connect(openAction_, &QAction::triggered, files_, &SceneFiles::open);
   saveAction_ = new QAction(this);
   saveAction_->setShortcut(QKeySequence::Save);
   connect(saveAction_, &QAction::triggered, this, &MainWindow::save);
@@ -743,132 +733,35 @@ void MainWindow::buildFileActions() {
 }
 
 bool MainWindow::openFile(const QString& fileName, bool askToSave) {
-  if (askToSave && !maybeSave()) return false;
-  const io::SceneLoadResult loaded = io::loadSceneFile(fileName);
-  if (!loaded.scene) {
-    // The open scene stays as it was.
-    QMessageBox::warning(this, tr("Cannot Open Scene"), loaded.error);
-    return false;
-  }
-  openScene(*loaded.scene, QFileInfo(fileName).absoluteFilePath());
-  addRecentFile(document_->fileName());
-  return true;
+  return files_->openFile(fileName, askToSave);
 }
 
 bool MainWindow::openExample(const QString& file, bool askToSave) {
-  const auto* example = std::find_if(std::begin(kExamples), std::end(kExamples),
-                                     [&](const auto& entry) { return file == entry.file; });
-  if (example == std::end(kExamples)) return false;
-  if (askToSave && !maybeSave()) return false;
-  const io::SceneLoadResult loaded = io::loadSceneFile(QString(":/scenes/%1.json").arg(file));
-  if (!loaded.scene) return false;  // bundled and tested: cannot happen
-  openScene(*loaded.scene, {}, tr(example->title));
-  openedExample_ = static_cast<int>(example - std::begin(kExamples));
-  return true;
+  return files_->openExample(file, askToSave);
 }
 
 bool MainWindow::offerRecovery() {
-  for (const SceneRecovery::Orphan& orphan : SceneRecovery::orphans()) {
-    const QString name = orphan.originalFile.isEmpty()
-                             ? tr("an unsaved scene")
-                             : QDir::toNativeSeparators(orphan.originalFile);
-    QMessageBox box(QMessageBox::Question, tr("Recover Scene"),
-                    tr("Carom did not close properly while %1 had unsaved changes. The copy "
-                       "saved at %2 can be recovered.")
-                        // In the program's language: installTranslation() made its locale
-                        // the default one.
-                        .arg(name, QLocale().toString(orphan.saved, QLocale::ShortFormat)),
-                    QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, this);
-    box.button(QMessageBox::Yes)->setText(tr("&Recover"));
-    box.button(QMessageBox::No)->setText(tr("&Discard"));
-    box.button(QMessageBox::Cancel)->setText(tr("Not &Now"));  // and Escape: asked again next time
-    box.setDefaultButton(QMessageBox::Yes);
-    const int answer = box.exec();
-    if (answer == QMessageBox::Cancel) continue;
-    const bool recover = answer == QMessageBox::Yes;
-    const io::SceneLoadResult loaded =
-        recover ? io::loadSceneFile(orphan.sceneFile) : io::SceneLoadResult{};
-    if (recover && !loaded.scene) {
-      QMessageBox::warning(this, tr("Cannot Recover Scene"), loaded.error);
-      continue;  // kept, for a later try
-    }
-    SceneRecovery::discard(orphan);
-    if (!recover) continue;
-    openScene(*loaded.scene, orphan.originalFile);
-    document_->markUnsaved();
-    return true;
-  }
-  return false;
+  return files_->offerRecovery();
 }
 
 bool MainWindow::save() {
-  if (document_->fileName().isEmpty()) return saveAs();
-  return saveTo(document_->fileName());
+  return files_->save();
 }
 
 bool MainWindow::saveAs() {
-  QString suggested = document_->fileName();
-  if (suggested.isEmpty()) {
-    const QString base =
-        openedExample_ >= 0 ? kExamples[openedExample_].file : document_->displayName();
-    suggested = QDir(lastFolder()).filePath(base + ".carom");
-  }
-  QString file = QFileDialog::getSaveFileName(this, tr("Save Scene"), suggested,
-                                              tr("Carom scenes (*.carom);;All files (*)"));
-  if (file.isEmpty()) return false;
-  if (QFileInfo(file).suffix().isEmpty()) file += ".carom";
-  return saveTo(file);
-}
-
-bool MainWindow::saveTo(const QString& fileName) {
-  commitTypedValue();
-  QString error;
-  if (!io::saveSceneFile(document_->scene(), fileName, &error)) {
-    // The old file, if any, is untouched: the save writes a new one and renames it over.
-    QMessageBox::warning(this, tr("Cannot Save Scene"), error);
-    return false;
-  }
-  document_->markSaved(QFileInfo(fileName).absoluteFilePath());
-  addRecentFile(document_->fileName());
-  showMessage(tr("Saved %1").arg(fileName));
-  return true;
-}
-
-bool MainWindow::maybeSave() {
-  commitTypedValue();
-  if (!document_->isModified()) return true;
-  const auto answer = QMessageBox::question(
-      this, tr("Unsaved Changes"),
-      tr("The scene %1 has unsaved changes. Save them?").arg(document_->displayName()),
-      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
-  if (answer == QMessageBox::Save) return save();
-  return answer == QMessageBox::Discard;
+  return files_->saveAs();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (maybeSave())
+  if (files_->maybeSave())
     event->accept();
   else
     event->ignore();
 }
 
-QString MainWindow::lastFolder() const {
-  const QStringList recent = QSettings().value(kRecentFilesKey).toStringList();
-  return recent.isEmpty() ? QDir::homePath() : QFileInfo(recent.first()).absolutePath();
-}
-
-void MainWindow::addRecentFile(const QString& fileName) {
-  QSettings settings;
-  QStringList recent = settings.value(kRecentFilesKey).toStringList();
-  recent.removeAll(fileName);
-  recent.prepend(fileName);
-  while (recent.size() > kMaxRecentFiles) recent.removeLast();
-  settings.setValue(kRecentFilesKey, recent);
-}
-
 void MainWindow::fillRecentMenu() {
   recentMenu_->clear();
-  const QStringList recent = QSettings().value(kRecentFilesKey).toStringList();
+  const QStringList recent = SceneFiles::recentFiles();
   for (const QString& file : recent) {
     recentMenu_->addAction(QDir::toNativeSeparators(file), this,
                            [this, file] { openFile(file, true); });
@@ -912,27 +805,19 @@ void MainWindow::buildEditActions() {
 
   copyAction_ = new QAction(this);
   copyAction_->setShortcut(QKeySequence::Copy);
-  connect(copyAction_, &QAction::triggered, this, &MainWindow::copySelection);
+  connect(copyAction_, &QAction::triggered, editActions_, &EditActions::copy);
   pasteAction_ = new QAction(this);
   pasteAction_->setShortcut(QKeySequence::Paste);
-  connect(pasteAction_, &QAction::triggered, this, &MainWindow::paste);
+  connect(pasteAction_, &QAction::triggered, editActions_, &EditActions::paste);
   duplicateAction_ = new QAction(this);
   duplicateAction_->setShortcut(Qt::CTRL | Qt::Key_D);
-  connect(duplicateAction_, &QAction::triggered, this, [this] {
-    insertObjects(extract(document_->scene(), document_->selection()), tr("Duplicate"));
-  });
+  connect(duplicateAction_, &QAction::triggered, editActions_, &EditActions::duplicate);
   deleteAction_ = new QAction(this);
   deleteAction_->setShortcut(QKeySequence::Delete);
-  connect(deleteAction_, &QAction::triggered, this, &MainWindow::deleteSelection);
+  connect(deleteAction_, &QAction::triggered, editActions_, &EditActions::deleteSelection);
   selectAllAction_ = new QAction(this);
   selectAllAction_->setShortcut(QKeySequence::SelectAll);
-  connect(selectAllAction_, &QAction::triggered, this, [this] {
-    const Scene& scene = document_->scene();
-    Selection all;
-    for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder})
-      for (int i = 0; i < objectCount(scene, kind); ++i) all.push_back({kind, i});
-    document_->setSelection(all);
-  });
+  connect(selectAllAction_, &QAction::triggered, editActions_, &EditActions::selectAll);
 
   useStateAction_ = new QAction(this);
   useStateAction_->setObjectName("useCurrentState");
@@ -952,61 +837,6 @@ void MainWindow::buildEditActions() {
   tabifyDockWidget(outlineDock_, historyDock_);
   outlineDock_->raise();
   historyDock_->hide();
-}
-
-void MainWindow::copySelection() {
-  const Selection& selection = document_->selection();
-  if (selection.empty()) return;
-  const QByteArray json = io::serializeScene(extract(document_->scene(), selection));
-  auto* mime = new QMimeData;
-  mime->setData(kSceneMimeType, json);
-  mime->setText(QString::fromUtf8(json));
-  QApplication::clipboard()->setMimeData(mime);
-}
-
-void MainWindow::paste() {
-  const QMimeData* mime = QApplication::clipboard()->mimeData();
-  if (!mime) return;
-  const QByteArray json =
-      mime->hasFormat(kSceneMimeType) ? mime->data(kSceneMimeType) : mime->text().toUtf8();
-  const io::SceneLoadResult parsed = io::parseScene(json, tr("clipboard"));
-  if (!parsed.scene) {
-    showMessage(tr("Nothing to paste: %1").arg(parsed.error));
-    return;
-  }
-  insertObjects(*parsed.scene, tr("Paste"));
-}
-
-void MainWindow::insertObjects(Scene objects, const QString& text) {
-  if (objects.balls.empty() && objects.planes.empty() && objects.cylinders.empty()) return;
-  // Balls copied onto themselves would overlap: shift them all sideways until they fit.
-  const QVector3D right =
-      QVector3D::crossProduct(view_->camera().eye() - view_->camera().target(), QVector3D(0, 1, 0))
-          .normalized();
-  Vec3 across(-right.x(), -right.y(), -right.z());
-  if (!across.allFinite() || across.norm() < 0.5) across = Vec3::UnitX();
-  double largest = 0.0;
-  for (const Ball& ball : objects.balls) largest = std::max(largest, ball.radius);
-  QString error;
-  for (int attempt = 0; attempt <= kMaxPlacementAttempts; ++attempt) {
-    Scene edited = document_->scene();
-    Scene shifted = objects;
-    const Vec3 offset = attempt * 2.2 * largest * across;
-    for (Ball& ball : shifted.balls) ball.position += offset;
-    const Selection added = append(edited, shifted);
-    error = document_->apply(edited, text, added);
-    if (error.isEmpty()) return;
-    if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
-  }
-  showMessage(tr("Cannot place the objects: %1").arg(error));
-}
-
-void MainWindow::deleteSelection() {
-  if (document_->selection().empty()) return;
-  Scene edited = document_->scene();
-  remove(edited, document_->selection());
-  const QString error = document_->apply(edited, tr("Delete"), {});
-  if (!error.isEmpty()) showMessage(error);
 }
 
 void MainWindow::useCurrentState() {

@@ -23,7 +23,9 @@ class QToolBar;
 namespace carom::ui {
 
 class AccuracyWindow;
+class EditActions;
 class SceneDocument;
+class SceneFiles;
 class EditorTools;
 class NumberBox;
 class OutlineDock;
@@ -100,24 +102,12 @@ class MainWindow : public QMainWindow {
   void buildEditActions();
   void buildToolActions();
   void showSelection();
-  bool saveTo(const QString& fileName);
-  // Commits what the user is typing in a dock, before a save or a question about saving.
-  void commitTypedValue();
-  // Asks about unsaved changes; false when the user cancels (or a save fails).
-  bool maybeSave();
-  QString lastFolder() const;
-  void addRecentFile(const QString& fileName);
   void fillRecentMenu();
   void showDocumentScene();
   Scene withRunningState(const Scene& edited);
   void editWorld(const QString& text, const std::function<void(World&)>& change);
   void updateTitle();
   int followTarget() const;
-  void copySelection();
-  void paste();
-  // Adds copies of `objects`, moved aside as far as needed to overlap nothing, as one command.
-  void insertObjects(Scene objects, const QString& text);
-  void deleteSelection();
   void useCurrentState();
   void buildToolBar();
   void buildMenus();
@@ -138,13 +128,12 @@ class MainWindow : public QMainWindow {
   QAction* smallerStepAction_ = nullptr;
   static constexpr const char* kAntialiasingKey = "view/antialiasing";
   SceneDocument* document_ = nullptr;
+  SceneFiles* files_ = nullptr;         // New, Open, Save, the recent files, the examples
+  EditActions* editActions_ = nullptr;  // copy, paste, duplicate, delete, select all
   EditorTools* tools_ = nullptr;
   QAction* toolActions_[4] = {};  // in EditorTools::Tool order
   QAction* snapAction_ = nullptr;
   std::shared_ptr<const Scene> shownScene_;  // what the view and the simulation started from
-  // The bundled example open, as an index of the Examples menu, until another scene opens:
-  // its title follows the language, and Save As suggests its file's name.
-  int openedExample_ = -1;
   QAction* newAction_ = nullptr;
   QAction* openAction_ = nullptr;
   QAction* saveAction_ = nullptr;
@@ -180,11 +169,7 @@ class MainWindow : public QMainWindow {
   SceneRecovery* recovery_ = nullptr;
   static constexpr int kMessageMilliseconds = 8000;
   static constexpr int kDockWidth = 330;
-  static constexpr int kMaxRecentFiles = 8;
-  static constexpr int kMaxPlacementAttempts = 20;
-  static constexpr const char* kRecentFilesKey = "files/recent";
   static constexpr const char* kApplyToRunningKey = "editing/applyToRunningState";
-  static constexpr const char* kSceneMimeType = "application/x-carom-scene";
   QAction* playAction_ = nullptr;
   QAction* stepAction_ = nullptr;
   QAction* resetAction_ = nullptr;

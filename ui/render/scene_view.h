@@ -9,11 +9,12 @@
 
 #include <Eigen/Geometry>
 #include <QElapsedTimer>
+#include <QMatrix4x4>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
-#include <QSize>
 #include <QTimer>
+#include <QVector3D>
 
 #include <cstdint>
 #include <memory>
@@ -24,6 +25,10 @@
 class QOpenGLShaderProgram;
 
 namespace carom::render {
+
+class ExplosionRenderer;
+class LineRenderer;
+class MultisampleTarget;
 
 class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Q_OBJECT
@@ -104,22 +109,32 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void keyPressEvent(QKeyEvent* event) override;
 
  private:
-  void releaseGl();
-  // The world's x, y and z axes through the origin, across the scene's bounds.
-  void drawAxes(const QMatrix4x4& viewProjection);
-  void drawHandleArrow(const QMatrix4x4& viewProjection, const QVector3D& eye);
-  // Binds the multisampled framebuffer, made or resized to the view; false if it cannot be.
-  bool bindMultisampleBuffer();
-  void releaseMultisampleBuffer();
-  void sortBallsFrontToBack(const QVector3D& eye);
-  void vertexAttribute(GLuint location, GLint components, GLenum type, GLsizei stride,
-                       std::size_t offset, bool perInstance);
+  // What every program is given in a frame.
+  struct FrameCamera {
+    QMatrix4x4 viewProjection;
+    QVector3D eye;
+    QVector3D light;  // towards the light, unit length
+  };
+
+  void detectSoftwareRenderer();
+  void createBallBuffers();
+  void createPlaneBuffers();
+  void createCylinderBuffers();
   void createCylinderMesh();
-  void createExplosionData();
-  void drawExplosions(const QMatrix4x4& viewProjection, const QVector3D& eye);
+  void releaseGl();
   double clockSeconds() const;
   void uploadStaticData();
   void uploadBallPositions();
+  void advanceExplosions();
+  // Binds the framebuffer to draw into and clears it; true if it is the multisampled one.
+  bool beginFrame();
+  FrameCamera frameCamera();
+  void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
+  void sortBallsFrontToBack(const QVector3D& eye);
+  void drawBalls(const FrameCamera& frame);
+  void drawCylindersAndPlanes(const FrameCamera& frame);
+  // Leaves the GL state as Qt's compositing expects it, once the GPU is done.
+  void endFrame();
   void followBall();
   void userMovedCamera();
 
@@ -147,22 +162,12 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
-  std::unique_ptr<QOpenGLShaderProgram> explosionProgram_;
-  std::unique_ptr<QOpenGLShaderProgram> lineProgram_;
-  GLuint lineVao_ = 0;
-  GLuint lineBuffer_ = 0;
-  GLint samples_ = 0;
-  GLuint multisampleFramebuffer_ = 0;
-  GLuint multisampleColor_ = 0;
-  GLuint multisampleDepth_ = 0;
-  QSize multisampleSize_;
+  std::unique_ptr<LineRenderer> lineRenderer_;
+  std::unique_ptr<ExplosionRenderer> explosionRenderer_;
+  std::unique_ptr<MultisampleTarget> multisample_;
   GLuint ballVao_ = 0;
   GLuint planeVao_ = 0;
   GLuint cylinderVao_ = 0;
-  GLuint explosionVao_ = 0;
-  GLuint explosionCornerBuffer_ = 0;
-  GLuint explosionInstanceBuffer_ = 0;
-  GLuint sparkTexture_ = 0;
   GLuint ballIndexBuffer_ = 0;
   GLuint ballPositionBuffer_ = 0;
   GLuint ballAttributeBuffer_ = 0;

@@ -1,0 +1,82 @@
+#include "ui/edit_actions.h"
+
+#include "sim/io/scene_file.h"
+#include "ui/editor/object_ref.h"
+#include "ui/editor/scene_document.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QMimeData>
+
+#include <algorithm>
+
+namespace carom::ui {
+
+EditActions::EditActions(SceneDocument* document, std::function<Vec3()> across, QObject* parent)
+    : QObject(parent), document_(document), across_(std::move(across)) {}
+
+void EditActions::copy() {
+  const Selection& selection = document_->selection();
+  if (selection.empty()) return;
+  const QByteArray json = io::serializeScene(extract(document_->scene(), selection));
+  auto* mime = new QMimeData;
+  mime->setData(kSceneMimeType, json);
+  mime->setText(QString::fromUtf8(json));
+  QApplication::clipboard()->setMimeData(mime);
+}
+
+void EditActions::paste() {
+  const QMimeData* mime = QApplication::clipboard()->mimeData();
+  if (!mime) return;
+  const QByteArray json =
+      mime->hasFormat(kSceneMimeType) ? mime->data(kSceneMimeType) : mime->text().toUtf8();
+  const io::SceneLoadResult parsed = io::parseScene(json, tr("clipboard"));
+  if (!parsed.scene) {
+    emit message(tr("Nothing to paste: %1").arg(parsed.error));
+    return;
+  }
+  insertObjects(*parsed.scene, tr("Paste"));
+}
+
+void EditActions::duplicate() {
+  insertObjects(extract(document_->scene(), document_->selection()), tr("Duplicate"));
+}
+
+void EditActions::deleteSelection() {
+  if (document_->selection().empty()) return;
+  Scene edited = document_->scene();
+  remove(edited, document_->selection());
+  const QString error = document_->apply(edited, tr("Delete"), {});
+  if (!error.isEmpty()) emit message(error);
+}
+
+void EditActions::selectAll() {
+  const Scene& scene = document_->scene();
+  Selection all;
+  for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder})
+    for (int i = 0; i < objectCount(scene, kind); ++i) all.push_back({kind, i});
+  document_->setSelection(all);
+}
+
+void EditActions::insertObjects(Scene objects, const QString& text) {
+  if (objects.balls.empty() && objects.planes.empty() && objects.cylinders.empty()) return;
+  // Balls copied onto themselves would overlap: shift them all sideways until they fit.
+  Vec3 across = across_ ? across_() : Vec3::UnitX();
+  if (!across.allFinite() || across.norm() < 0.5) across = Vec3::UnitX();
+  double largest = 0.0;
+  for (const Ball& ball : objects.balls) largest = std::max(largest, ball.radius);
+  QString error;
+  for (int attempt = 0; attempt <= kMaxPlacementAttempts; ++attempt) {
+    Scene edited = document_->scene();
+    Scene shifted = objects;
+    const Vec3 offset = attempt * 2.2 * largest * across;
+    for (Ball& ball : shifted.balls) ball.position += offset;
+    const Selection added = append(edited, shifted);
+    error = document_->apply(edited, text, added);
+    if (error.isEmpty()) return;
+    if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
+  }
+  emit message(tr("Cannot place the objects: %1").arg(error));
+}
+
+}  // namespace carom::ui
