@@ -2,6 +2,7 @@
 // object exactly as it was, names and colours included, wherever the removed ones stood.
 
 #include "ui/editor/object_ref.h"
+#include "ui/editor/running_state.h"
 
 #include <QTest>
 
@@ -64,6 +65,7 @@ class TestObjectRef : public QObject {
   void removeKeepsEveryOtherObject();
   void removeIgnoresReferencesToNothing();
   void extractThenAppendCopiesEveryField();
+  void untouchedBallsKeepTheirRunningState();
 };
 
 void TestObjectRef::removeKeepsEveryOtherObject_data() {
@@ -132,6 +134,39 @@ void TestObjectRef::extractThenAppendCopiesEveryField() {
   // Then removing the copies gives back the original, as Duplicate followed by Delete does.
   carom::ui::remove(target, added);
   QVERIFY(target == namedScene());
+}
+
+// Edits applied to a running simulation: a ball the edit left alone takes the run's state; a
+// ball it changed or added keeps the edit's.
+void TestObjectRef::untouchedBallsKeepTheirRunningState() {
+  const Scene shown = namedScene();
+  std::vector<Vec3> positions, velocities;
+  for (int i = 0; i < kPerKind; ++i) {
+    positions.push_back(Vec3(100.0 + i, 0, 0));
+    velocities.push_back(Vec3(0, -1.0 - i, 0));
+  }
+  const auto ranFrom = [&](const Scene& start, int startIndex, int shownIndex) {
+    return start.balls[startIndex].position == positions[shownIndex] &&
+           start.balls[startIndex].velocity == velocities[shownIndex];
+  };
+  // An edit removes balls (here ball 1): the others keep their running state.
+  Scene edited = shown;
+  carom::ui::remove(edited, {{ObjectKind::Ball, 1}});
+  Scene start = carom::ui::withRunningBalls(shown, edited, positions, velocities);
+  QCOMPARE(start.balls.size(), edited.balls.size());
+  for (int i = 0; i < kPerKind - 1; ++i) QVERIFY(ranFrom(start, i, i < 1 ? i : i + 1));
+  // Or changes balls in place and appends some: the changed and the new ones are as edited.
+  edited = shown;
+  edited.balls[3].name = "renamed";
+  Ball added;
+  added.position = Vec3(-50, 1, 0);
+  edited.balls.push_back(added);
+  start = carom::ui::withRunningBalls(shown, edited, positions, velocities);
+  QCOMPARE(start.balls.size(), edited.balls.size());
+  for (int i : {0, 1, 2, 4}) QVERIFY(ranFrom(start, i, i));
+  QVERIFY(start.balls[3] == edited.balls[3]);
+  QVERIFY(start.balls[5] == added);
+  QVERIFY(start.planes == edited.planes && start.cylinders == edited.cylinders);
 }
 
 QTEST_APPLESS_MAIN(TestObjectRef)

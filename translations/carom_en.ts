@@ -4,7 +4,7 @@
      add every source text as unfinished); test_language checks "1 ball" and "2 balls". -->
 <TS version="2.1" language="en_US">
 <context>
-    <name>carom::ui::MainWindow</name>
+    <name>carom::ui::StatusReadout</name>
     <message numerus="yes">
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
         <translation>

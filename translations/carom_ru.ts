@@ -652,406 +652,382 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="177"/>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="168"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="272"/>
+        <location filename="../ui/main_window.cpp" line="263"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="283"/>
+        <location filename="../ui/main_window.cpp" line="274"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="290"/>
+        <location filename="../ui/main_window.cpp" line="281"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="297"/>
+        <location filename="../ui/main_window.cpp" line="288"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="411"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="553"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="633"/>
+        <location filename="../ui/main_window.cpp" line="623"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="659"/>
+        <location filename="../ui/main_window.cpp" line="649"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="403"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="404"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="407"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
-    <message numerus="yes">
-        <location filename="../ui/main_window.cpp" line="700"/>
-        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
-        <translation>
-            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шар   E = %5 J (дрейф %6)</numerusform>
-            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шара   E = %5 J (дрейф %6)</numerusform>
-            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шаров   E = %5 J (дрейф %6)</numerusform>
-        </translation>
-    </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="769"/>
+        <location filename="../ui/main_window.cpp" line="722"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="399"/>
+        <location filename="../ui/main_window.cpp" line="390"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="392"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="850"/>
+        <location filename="../ui/main_window.cpp" line="803"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="483"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="710"/>
-        <source>   sound unavailable</source>
-        <translation>   звук недоступен</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="712"/>
-        <source>   muted</source>
-        <translation>   звук выключен</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="713"/>
-        <source>   — the physics cannot keep up; running slower</source>
-        <translation>   — физика не успевает; замедленный ход</translation>
     </message>
 </context>
 <context>
@@ -1457,6 +1433,33 @@
         <location filename="../ui/scene_files.cpp" line="174"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::StatusReadout</name>
+    <message numerus="yes">
+        <location filename="../ui/status_readout.cpp" line="63"/>
+        <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
+        <translation>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шар   E = %5 J (дрейф %6)</numerusform>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шара   E = %5 J (дрейф %6)</numerusform>
+            <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шаров   E = %5 J (дрейф %6)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/status_readout.cpp" line="73"/>
+        <source>   sound unavailable</source>
+        <translation>   звук недоступен</translation>
+    </message>
+    <message>
+        <location filename="../ui/status_readout.cpp" line="75"/>
+        <source>   muted</source>
+        <translation>   звук выключен</translation>
+    </message>
+    <message>
+        <location filename="../ui/status_readout.cpp" line="76"/>
+        <source>   — the physics cannot keep up; running slower</source>
+        <translation>   — физика не успевает; замедленный ход</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
+#include "ui/editor/running_state.h"
 #include "ui/energy_plot.h"
 #include "ui/help_dialogs.h"
 #include "ui/language.h"
@@ -19,6 +20,7 @@
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
 #include "ui/sound/sound_board.h"
+#include "ui/status_readout.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -43,30 +45,6 @@ namespace carom::ui {
 
 using render::SceneView;
 
-namespace {
-
-// For each ball of `edited`, the index of the same ball in `shown` when the edit left it
-// alone. Every edit keeps the order of the balls it does not touch and either changes balls in
-// place, appends them, or removes some, so one pass in step finds them.
-std::vector<std::optional<std::size_t>> matchUnchangedBalls(const std::vector<Ball>& shown,
-                                                            const std::vector<Ball>& edited) {
-  std::vector<std::optional<std::size_t>> match(edited.size());
-  if (edited.size() >= shown.size()) {
-    for (std::size_t i = 0; i < shown.size(); ++i)
-      if (shown[i] == edited[i]) match[i] = i;
-    return match;
-  }
-  std::size_t j = 0;
-  for (std::size_t i = 0; i < edited.size(); ++i) {
-    while (j < shown.size() && !(shown[j] == edited[i])) ++j;  // removed
-    if (j == shown.size()) break;
-    match[i] = j++;
-  }
-  return match;
-}
-
-}  // namespace
-
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       simulation_(std::make_unique<SimulationController>()),
@@ -81,10 +59,10 @@ MainWindow::MainWindow(QWidget* parent)
   // Below the view, where the plot's time axis has room.
   addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
   energyPlot_->setMinimumHeight(190);
-  status_ = new QLabel;
+  sound_ = new sound::SoundBoard(this);
+  status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
   statusBar()->addPermanentWidget(status_);
-  sound_ = new sound::SoundBoard(this);
   tools_ = new EditorTools(document_, view_, this);
   connect(tools_, &EditorTools::refused, this, &MainWindow::showMessage);
   outlineDock_ = new OutlineDock(document_, this);
@@ -104,9 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(files_, &SceneFiles::sceneOpened, this, [this] {
     view_->frameScene();
     energyPlot_->clear();
-    lastCollisionCount_ = 0;
-    lastCollisionTime_ = 0.0;
-    collisionsPerSecond_ = 0.0;
+    status_->restart();
   });
   // Pasted and duplicated balls move to the right of the screen, as the camera looks.
   editActions_ = new EditActions(
@@ -135,19 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
   });
   connect(simulation_.get(), &SimulationController::snapshotPublished, this,
           &MainWindow::showSnapshot);
-  connect(view_, &SceneView::frameRendered, this, [this](double) {
-    ++framesRendered_;
-    const double seconds = fpsClock_.nsecsElapsed() * 1e-9;
-    if (seconds >= 1.0) {
-      framesPerSecond_ = (framesRendered_ - framesAtLastSample_) / seconds;
-      framesAtLastSample_ = framesRendered_;
-      fpsClock_.restart();
-    }
-  });
-  fpsClock_.start();
-  statusTimer_.setSingleShot(true);
-  statusTimer_.setInterval(kStatusRefreshMilliseconds);
-  connect(&statusTimer_, &QTimer::timeout, this, &MainWindow::showStatus);
+  connect(view_, &SceneView::frameRendered, status_, &StatusReadout::countFrame);
   retranslate();
   resize(1280, 800);
 }
@@ -166,6 +130,10 @@ QWidget* MainWindow::view() const {
 
 QString MainWindow::statusText() const {
   return status_->text();
+}
+
+int MainWindow::framesRendered() const {
+  return status_->framesRendered();
 }
 
 void MainWindow::buildActions() {
@@ -498,7 +466,6 @@ void MainWindow::retranslate() {
   aboutAction_->setText(tr("&About Carom"));
 
   updateTitle();
-  showStatus();
 }
 
 void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
@@ -551,14 +518,8 @@ void MainWindow::showDocumentScene() {
 Scene MainWindow::withRunningState(const Scene& edited) {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
   if (!snapshot || snapshot->positions.size() != shownScene_->balls.size()) return edited;
-  Scene start = edited;
-  const std::vector<std::optional<std::size_t>> running =
-      matchUnchangedBalls(shownScene_->balls, edited.balls);
-  for (std::size_t i = 0; i < start.balls.size(); ++i) {
-    if (!running[i]) continue;
-    start.balls[i].position = snapshot->positions[*running[i]];
-    start.balls[i].velocity = snapshot->velocities[*running[i]];
-  }
+  const Scene start =
+      withRunningBalls(*shownScene_, edited, snapshot->positions, snapshot->velocities);
   if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty()) {
     showMessage(tr("The edit does not fit the running state (%1): restarted from the edited "
                    "scene.")
@@ -674,44 +635,7 @@ void MainWindow::showSnapshot() {
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
   sound_->play(snapshot->collisions);
-  latestSnapshot_ = snapshot;
-  // Numbers changing sixty times a second cannot be read, and relaying out the status bar each
-  // frame costs the GUI thread; the line shows the latest snapshot a few times a second.
-  if (!statusTimer_.isActive()) statusTimer_.start();
-}
-
-void MainWindow::showStatus() {
-  const std::shared_ptr<const SimulationSnapshot> snapshot = latestSnapshot_;
-  if (!snapshot) return;
-  const std::uint64_t collisions = snapshot->stats.collisions.total();
-  if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
-    lastCollisionTime_ = snapshot->time;  // after a reset
-    lastCollisionCount_ = collisions;
-  } else if (snapshot->time - lastCollisionTime_ >= 0.5) {
-    collisionsPerSecond_ =
-        double(collisions - lastCollisionCount_) / (snapshot->time - lastCollisionTime_);
-    lastCollisionTime_ = snapshot->time;
-    lastCollisionCount_ = collisions;
-  }
-  const double energy = snapshot->kineticEnergy + snapshot->potentialEnergy;
-  const double drift = snapshot->initialEnergy != 0.0
-                           ? (energy - snapshot->initialEnergy) / std::abs(snapshot->initialEnergy)
-                           : 0.0;
-  QString line = tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   "
-                    "E = %5 J (drift %6)",
-                    nullptr, static_cast<int>(snapshot->positions.size()))
-                     .arg(snapshot->time, 0, 'f', 3)
-                     .arg(snapshot->realTimeFactor, 0, 'f', 2)
-                     .arg(framesPerSecond_, 0, 'f', 0)
-                     .arg(collisionsPerSecond_, 0, 'f', 0)
-                     .arg(energy, 0, 'g', 6)
-                     .arg(drift, 0, 'e', 1);
-  if (!sound_->available())
-    line += tr("   sound unavailable");
-  else if (sound_->muted())
-    line += tr("   muted");
-  if (snapshot->fallingBehind) line += tr("   — the physics cannot keep up; running slower");
-  status_->setText(line);
+  status_->showSnapshot(snapshot);
 }
 
 // ---- Files ---------------------------------------------------------------------------------

@@ -5,10 +5,8 @@
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
-#include <QTimer>
 
 #include <functional>
 #include <memory>
@@ -31,6 +29,7 @@ class NumberBox;
 class OutlineDock;
 class PropertiesDock;
 class SceneRecovery;
+class StatusReadout;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
@@ -84,7 +83,7 @@ class MainWindow : public QMainWindow {
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
   AccuracyWindow* openAccuracyWindow(double duration = 5.0);
   // Frames drawn and snapshots shown so far (for the status line and tests).
-  int framesRendered() const { return framesRendered_; }
+  int framesRendered() const;
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -113,7 +112,6 @@ class MainWindow : public QMainWindow {
   void buildMenus();
   void buildHelpMenu();
   void showSnapshot();
-  void showStatus();
   void changeTimeStep(double factor);
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
@@ -186,17 +184,7 @@ class MainWindow : public QMainWindow {
   NumberBox* timeStep_ = nullptr;
   QComboBox* method_ = nullptr;
   QComboBox* integrator_ = nullptr;
-  QLabel* status_ = nullptr;
-  static constexpr int kStatusRefreshMilliseconds = 200;
-  QTimer statusTimer_;
-  std::shared_ptr<const SimulationSnapshot> latestSnapshot_;
-  int framesRendered_ = 0;
-  int framesAtLastSample_ = 0;
-  QElapsedTimer fpsClock_;
-  double framesPerSecond_ = 0.0;
-  double lastCollisionTime_ = 0.0;
-  std::uint64_t lastCollisionCount_ = 0;
-  double collisionsPerSecond_ = 0.0;
+  StatusReadout* status_ = nullptr;
 };
 
 }  // namespace carom::ui

@@ -1,0 +1,80 @@
+#include "ui/status_readout.h"
+
+#include "ui/simulation_snapshot.h"
+#include "ui/sound/sound_board.h"
+
+#include <QEvent>
+
+#include <cmath>
+
+namespace carom::ui {
+
+StatusReadout::StatusReadout(const sound::SoundBoard* sound, QWidget* parent)
+    : QLabel(parent), sound_(sound) {
+  fpsClock_.start();
+  refreshTimer_.setSingleShot(true);
+  refreshTimer_.setInterval(kRefreshMilliseconds);
+  connect(&refreshTimer_, &QTimer::timeout, this, &StatusReadout::refresh);
+}
+
+void StatusReadout::showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot) {
+  latest_ = std::move(snapshot);
+  if (!refreshTimer_.isActive()) refreshTimer_.start();
+}
+
+void StatusReadout::countFrame() {
+  ++framesRendered_;
+  const double seconds = fpsClock_.nsecsElapsed() * 1e-9;
+  if (seconds >= 1.0) {
+    framesPerSecond_ = (framesRendered_ - framesAtLastSample_) / seconds;
+    framesAtLastSample_ = framesRendered_;
+    fpsClock_.restart();
+  }
+}
+
+void StatusReadout::restart() {
+  lastCollisionCount_ = 0;
+  lastCollisionTime_ = 0.0;
+  collisionsPerSecond_ = 0.0;
+}
+
+void StatusReadout::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) refresh();
+  QLabel::changeEvent(event);
+}
+
+void StatusReadout::refresh() {
+  const std::shared_ptr<const SimulationSnapshot> snapshot = latest_;
+  if (!snapshot) return;
+  const std::uint64_t collisions = snapshot->stats.collisions.total();
+  if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
+    lastCollisionTime_ = snapshot->time;  // after a reset
+    lastCollisionCount_ = collisions;
+  } else if (snapshot->time - lastCollisionTime_ >= kRateSeconds) {
+    collisionsPerSecond_ =
+        double(collisions - lastCollisionCount_) / (snapshot->time - lastCollisionTime_);
+    lastCollisionTime_ = snapshot->time;
+    lastCollisionCount_ = collisions;
+  }
+  const double energy = snapshot->kineticEnergy + snapshot->potentialEnergy;
+  const double drift = snapshot->initialEnergy != 0.0
+                           ? (energy - snapshot->initialEnergy) / std::abs(snapshot->initialEnergy)
+                           : 0.0;
+  QString line = tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   "
+                    "E = %5 J (drift %6)",
+                    nullptr, static_cast<int>(snapshot->positions.size()))
+                     .arg(snapshot->time, 0, 'f', 3)
+                     .arg(snapshot->realTimeFactor, 0, 'f', 2)
+                     .arg(framesPerSecond_, 0, 'f', 0)
+                     .arg(collisionsPerSecond_, 0, 'f', 0)
+                     .arg(energy, 0, 'g', 6)
+                     .arg(drift, 0, 'e', 1);
+  if (!sound_->available())
+    line += tr("   sound unavailable");
+  else if (sound_->muted())
+    line += tr("   muted");
+  if (snapshot->fallingBehind) line += tr("   — the physics cannot keep up; running slower");
+  setText(line);
+}
+
+}  // namespace carom::ui
