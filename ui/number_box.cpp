@@ -10,11 +10,6 @@
 #include <utility>
 
 namespace carom::ui {
-namespace {
-
-constexpr int kShownDigits = 6;
-
-}  // namespace
 
 NumberBox::NumberBox(const QString& name, double low, double high, double step, QWidget* parent)
     : QDoubleSpinBox(parent), name_(name) {
@@ -56,7 +51,7 @@ double NumberBox::valueFromText(const QString& text) const {
 }
 
 QString NumberBox::textFromValue(double value) const {
-  return numberLocale().toString(value, 'g', kShownDigits);
+  return formatShortNumber(value);
 }
 
 QSize NumberBox::sizeHint() const {

@@ -15,6 +15,11 @@ QString formatNumber(double value) {
   return numberLocale().toString(value, 'g', QLocale::FloatingPointShortest);
 }
 
+QString formatShortNumber(double value) {
+  constexpr int kShownDigits = 6;
+  return numberLocale().toString(value, 'g', kShownDigits);
+}
+
 ParsedNumber parseNumber(const QString& typed) {
   const QString text = typed.trimmed();
   bool ok = false;

@@ -14,6 +14,8 @@ QLocale numberLocale();
 
 // The shortest text that reads back as the same double.
 QString formatNumber(double value);
+// Six significant digits, for reading at a glance (the stored value is not rounded).
+QString formatShortNumber(double value);
 
 // A number typed in, or why it is not one.
 struct ParsedNumber {

@@ -54,8 +54,7 @@ class NumberField : public QLineEdit {
   void showValue(bool editing) {
     const QSignalBlocker blocker(this);
     QString text;
-    if (value_)
-      text = editing ? formatNumber(*value_) : numberLocale().toString(*value_, 'g', kShownDigits);
+    if (value_) text = editing ? formatNumber(*value_) : formatShortNumber(*value_);
     setText(text);
     setModified(false);
     QStringList tip{value_ ? PropertiesDock::tr("%1: %2").arg(name_, formatNumber(*value_))
@@ -64,7 +63,6 @@ class NumberField : public QLineEdit {
     setToolTip(tip.join('\n'));
   }
 
-  static constexpr int kShownDigits = 6;
   QString name_;
   QString hint_;
   std::optional<double> value_;
