@@ -6,23 +6,35 @@ namespace carom {
 
 Bodies makeBodies(const Scene& scene) {
   Bodies bodies;
-  const double worldRestitution = scene.world.restitution;
   for (const Plane& plane : scene.planes) {
     bodies.planes.push_back(planeShape(plane));
-    bodies.planeRestitution.push_back(plane.restitution.value_or(worldRestitution));
+    bodies.planeOwnRestitution.push_back(plane.restitution);
   }
   for (const Cylinder& cylinder : scene.cylinders) {
     bodies.cylinders.push_back(cylinderShape(cylinder));
-    bodies.cylinderRestitution.push_back(cylinder.restitution.value_or(worldRestitution));
+    bodies.cylinderOwnRestitution.push_back(cylinder.restitution);
   }
   for (const Ball& ball : scene.balls) {
     bodies.radius.push_back(ball.radius);
     bodies.mass.push_back(ball.mass);
     bodies.inverseMass.push_back(1.0 / ball.mass);
-    bodies.restitution.push_back(ball.restitution.value_or(worldRestitution));
+    bodies.ownRestitution.push_back(ball.restitution);
     bodies.maxRadius = std::max(bodies.maxRadius, ball.radius);
   }
+  bodies.setWorldRestitution(scene.world.restitution);
   return bodies;
+}
+
+void Bodies::setWorldRestitution(double worldRestitution) {
+  const auto resolve = [worldRestitution](const std::vector<std::optional<double>>& own,
+                                          std::vector<double>& resolved) {
+    resolved.clear();
+    for (const std::optional<double>& value : own)
+      resolved.push_back(value.value_or(worldRestitution));
+  };
+  resolve(planeOwnRestitution, planeRestitution);
+  resolve(cylinderOwnRestitution, cylinderRestitution);
+  resolve(ownRestitution, restitution);
 }
 
 }  // namespace carom

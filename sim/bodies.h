@@ -4,6 +4,7 @@
 
 #include "sim/shapes.h"
 
+#include <optional>
 #include <vector>
 
 namespace carom {
@@ -18,8 +19,14 @@ struct Bodies {
   std::vector<double> inverseMass;
   std::vector<double> restitution;  // each ball's own value, or the world's
   double maxRadius = 0.0;
+  // The objects' own values (none: the world's), kept to resolve the world's again.
+  std::vector<std::optional<double>> planeOwnRestitution;
+  std::vector<std::optional<double>> cylinderOwnRestitution;
+  std::vector<std::optional<double>> ownRestitution;
 
   int ballCount() const { return static_cast<int>(radius.size()); }
+  // Every object without a value of its own takes `worldRestitution` from now on.
+  void setWorldRestitution(double worldRestitution);
 };
 
 Bodies makeBodies(const Scene& scene);

@@ -48,31 +48,15 @@ double Simulation::time() const {
   return stepper_->now();
 }
 
-void Simulation::setGravity(const Vec3& gravity) {
-  const std::vector<BallState> current = state();
-  world_.gravity = gravity;
+void Simulation::setWorld(const World& world) {
+  if (world == world_) return;
+  std::vector<BallState> current = state();
+  const double now = time();
   // Resting balls rested against the old gravity: let them all settle again.
-  std::vector<BallState> moving = current;
-  for (BallState& s : moving) s.resting = false;
-  rebuildStepper(moving, time());
-}
-
-void Simulation::setTimeStep(double timeStep) {
-  world_.timeStep = timeStep;
-  rebuildStepper(state(), time());
-}
-
-void Simulation::setMethod(Method method) {
-  const std::vector<BallState> current = state();
-  const double now = time();
-  world_.method = method;
-  rebuildStepper(current, now);
-}
-
-void Simulation::setIntegrator(Integrator integrator) {
-  const std::vector<BallState> current = state();
-  const double now = time();
-  world_.integrator = integrator;
+  if (world.gravity != world_.gravity)
+    for (BallState& ball : current) ball.resting = false;
+  if (world.restitution != world_.restitution) bodies_.setWorldRestitution(world.restitution);
+  world_ = world;
   rebuildStepper(current, now);
 }
 

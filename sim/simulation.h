@@ -34,11 +34,9 @@ class Simulation {
   const Bodies& bodies() const { return bodies_; }
   int ballCount() const { return bodies_.ballCount(); }
 
-  // Live changes, applied from the current state on.
-  void setGravity(const Vec3& gravity);
-  void setTimeStep(double timeStep);
-  void setMethod(Method method);
-  void setIntegrator(Integrator integrator);
+  // New world settings (valid), applied live from the current state on: the simulation
+  // rebuilds what the changed fields need and keeps the balls where they are.
+  void setWorld(const World& world);
 
   // Every ball at time(), in scene order.
   std::vector<BallState> state() const;

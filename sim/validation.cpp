@@ -11,6 +11,7 @@
 #include <limits>
 #include <queue>
 #include <string_view>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -338,6 +339,29 @@ class BallOverlapFinder {
   std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
 };
 
+void checkBallAgainstPlane(const Ball& ball, std::size_t ballIndex, const IndexedPlane& plane,
+                           ErrorList& errors) {
+  const double distance = plane.shape.gap(ball.position, 0.0);
+  if (!overlaps(ball.radius - distance, ball.radius)) return;
+  const std::string path = indexed("balls", ballIndex) + ".position";
+  const std::string other = indexed("planes", plane.index);
+  if (distance < 0.0)
+    errors.add(path,
+               "overlaps " + other + " (is " + formatDepth(-distance) + " behind its surface)");
+  else
+    errors.add(path, "overlaps " + other + " by " + formatDepth(ball.radius - distance));
+}
+
+void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
+                              const IndexedCylinder& cylinder, ErrorList& errors) {
+  const double distance = cylinder.shape.gap(ball.position, 0.0) + cylinder.shape.radius;
+  const double radiusSum = ball.radius + cylinder.shape.radius;
+  if (overlaps(radiusSum - distance, radiusSum))
+    errors.add(indexed("balls", ballIndex) + ".position",
+               "overlaps " + indexed("cylinders", cylinder.index) + " by " +
+                   formatDepth(radiusSum - distance));
+}
+
 void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
                 const std::vector<IndexedCylinder>& cylinders, ErrorList& errors) {
   const auto& balls = scene.balls;
@@ -350,29 +374,25 @@ void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
       checkBall(balls[i], i, &errors);
       continue;
     }
-    const Ball& ball = balls[i];
-    const std::string path = indexed("balls", i) + ".position";
-    for (const IndexedPlane& plane : planes) {
-      const double distance = plane.shape.gap(ball.position, 0.0);
-      if (!overlaps(ball.radius - distance, ball.radius)) continue;
-      const std::string other = indexed("planes", plane.index);
-      if (distance < 0.0)
-        errors.add(path,
-                   "overlaps " + other + " (is " + formatDepth(-distance) + " behind its surface)");
-      else
-        errors.add(path, "overlaps " + other + " by " + formatDepth(ball.radius - distance));
-    }
-    for (const IndexedCylinder& cylinder : cylinders) {
-      const double distance = cylinder.shape.gap(ball.position, 0.0) + cylinder.shape.radius;
-      const double radiusSum = ball.radius + cylinder.shape.radius;
-      if (overlaps(radiusSum - distance, radiusSum))
-        errors.add(path, "overlaps " + indexed("cylinders", cylinder.index) + " by " +
-                             formatDepth(radiusSum - distance));
-    }
+    for (const IndexedPlane& plane : planes) checkBallAgainstPlane(balls[i], i, plane, errors);
+    for (const IndexedCylinder& cylinder : cylinders)
+      checkBallAgainstCylinder(balls[i], i, cylinder, errors);
     for (const auto& overlap : finder.overlapsOf(i))
-      errors.add(path, "overlaps " + indexed("balls", overlap.earlier) + " by " +
-                           formatDepth(overlap.depth));
+      errors.add(
+          indexed("balls", i) + ".position",
+          "overlaps " + indexed("balls", overlap.earlier) + " by " + formatDepth(overlap.depth));
   }
+}
+
+bool checkCounts(const Scene& scene, ErrorList& errors) {
+  bool countsOk = checkCount("planes", scene.planes.size(), tol::kMaxPlanes, errors);
+  countsOk &= checkCount("cylinders", scene.cylinders.size(), tol::kMaxCylinders, errors);
+  countsOk &= checkCount("balls", scene.balls.size(), tol::kMaxBalls, errors);
+  return countsOk;
+}
+
+bool contains(const std::vector<std::size_t>& sorted, std::size_t index) {
+  return std::binary_search(sorted.begin(), sorted.end(), index);
 }
 
 }  // namespace
@@ -380,10 +400,7 @@ void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors) {
   ErrorList errors(maxErrors);
   // Counts first: a scene with absurdly many objects is refused before any of them is looked at.
-  bool countsOk = checkCount("planes", scene.planes.size(), tol::kMaxPlanes, errors);
-  countsOk &= checkCount("cylinders", scene.cylinders.size(), tol::kMaxCylinders, errors);
-  countsOk &= checkCount("balls", scene.balls.size(), tol::kMaxBalls, errors);
-  if (!countsOk) return errors.take();
+  if (!checkCounts(scene, errors)) return errors.take();
 
   checkWorld(scene.world, errors);
 
@@ -397,6 +414,110 @@ std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxEr
       cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
   if (!errors.full()) checkBalls(scene, planes, cylinders, errors);
   return errors.take();
+}
+
+std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors) {
+  ErrorList errors(maxErrors);
+  checkWorld(world, errors);
+  return errors.take();
+}
+
+std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,
+                                             std::size_t maxErrors) {
+  for (auto* list : {&objects.planes, &objects.cylinders, &objects.balls}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  // Every problem is gathered, then put in file order (planes, cylinders, balls, each by index)
+  // so that the first one is the one validateScene would report first.
+  struct Found {
+    int list;
+    std::size_t index;
+    ValidationError error;
+  };
+  std::vector<Found> found;
+  const auto collect = [&found](int list, std::size_t index, ErrorList& errors) {
+    for (ValidationError& error : errors.take()) found.push_back({list, index, std::move(error)});
+  };
+  constexpr std::size_t kAll = std::numeric_limits<std::size_t>::max();
+  {
+    ErrorList errors(maxErrors);
+    if (!checkCounts(scene, errors)) return errors.take();
+  }
+
+  // Changed planes and cylinders against every ball.
+  std::vector<IndexedPlane> changedPlanes;
+  for (std::size_t i : objects.planes) {
+    if (i >= scene.planes.size()) continue;
+    ErrorList errors(kAll);
+    if (checkPlane(scene.planes[i], i, &errors))
+      changedPlanes.push_back({i, planeShape(scene.planes[i])});
+    collect(0, i, errors);
+  }
+  std::vector<IndexedCylinder> changedCylinders;
+  for (std::size_t i : objects.cylinders) {
+    if (i >= scene.cylinders.size()) continue;
+    ErrorList errors(kAll);
+    if (checkCylinder(scene.cylinders[i], i, &errors))
+      changedCylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+    collect(1, i, errors);
+  }
+  const auto& balls = scene.balls;
+  if (!changedPlanes.empty() || !changedCylinders.empty()) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (contains(objects.balls, i)) continue;  // checked in full below
+      ErrorList errors(kAll);
+      for (const IndexedPlane& plane : changedPlanes)
+        checkBallAgainstPlane(balls[i], i, plane, errors);
+      for (const IndexedCylinder& cylinder : changedCylinders)
+        checkBallAgainstCylinder(balls[i], i, cylinder, errors);
+      collect(2, i, errors);
+    }
+  }
+
+  // Changed balls against everything. The unchanged objects are valid, so only the changed
+  // planes and cylinders and balls can fail their own checks.
+  std::vector<IndexedPlane> planes;
+  for (std::size_t i = 0; i < scene.planes.size(); ++i)
+    if (!contains(objects.planes, i) || checkPlane(scene.planes[i], i, nullptr))
+      planes.push_back({i, planeShape(scene.planes[i])});
+  std::vector<IndexedCylinder> cylinders;
+  for (std::size_t i = 0; i < scene.cylinders.size(); ++i)
+    if (!contains(objects.cylinders, i) || checkCylinder(scene.cylinders[i], i, nullptr))
+      cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+  for (std::size_t i : objects.balls) {
+    if (i >= balls.size()) continue;
+    ErrorList errors(kAll);
+    if (!checkBall(balls[i], i, &errors)) {
+      collect(2, i, errors);
+      continue;
+    }
+    for (const IndexedPlane& plane : planes) checkBallAgainstPlane(balls[i], i, plane, errors);
+    for (const IndexedCylinder& cylinder : cylinders)
+      checkBallAgainstCylinder(balls[i], i, cylinder, errors);
+    collect(2, i, errors);
+    for (std::size_t j = 0; j < balls.size(); ++j) {
+      // A pair of changed balls is looked at once, from its earlier ball.
+      if (j == i || (j < i && contains(objects.balls, j))) continue;
+      if (contains(objects.balls, j) && !checkBall(balls[j], j, nullptr)) continue;
+      const double radiusSum = balls[i].radius + balls[j].radius;
+      const double depth = radiusSum - (balls[i].position - balls[j].position).norm();
+      if (!overlaps(depth, radiusSum)) continue;
+      // Reported on the later ball, as validateScene does.
+      ErrorList pair(kAll);
+      pair.add(indexed("balls", std::max(i, j)) + ".position",
+               "overlaps " + indexed("balls", std::min(i, j)) + " by " + formatDepth(depth));
+      collect(2, std::max(i, j), pair);
+    }
+  }
+
+  std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
+    return std::tie(a.list, a.index) < std::tie(b.list, b.index);
+  });
+  std::vector<ValidationError> errors;
+  for (std::size_t k = 0; k < found.size() && k < maxErrors; ++k)
+    errors.push_back(std::move(found[k].error));
+  return errors;
 }
 
 }  // namespace carom

@@ -20,4 +20,18 @@ struct ValidationError {
 // "#rrggbb", and that no ball overlaps another ball, a plane or a cylinder (touching is fine).
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors = 20);
 
+// The same rules for an edit, without looking at the whole scene again: `scene` was valid
+// except for the objects listed (changed in place or appended), and its world is not checked.
+// Returns what validateScene would, first problem first. Costs one pass over the balls per
+// listed object, so a typed value in a scene of a million balls does not re-check them all.
+struct SceneObjectIndices {
+  std::vector<std::size_t> planes;
+  std::vector<std::size_t> cylinders;
+  std::vector<std::size_t> balls;
+};
+std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,
+                                             std::size_t maxErrors = 20);
+// The world's settings alone (gravity, time step, restitution).
+std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors = 20);
+
 }  // namespace carom

@@ -3,6 +3,7 @@
 // points, and the answerers for modal dialogs of tests/dialog_answerer.h.
 
 #include "tests/dialog_answerer.h"
+#include "tests/scene_edits.h"
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"

@@ -488,7 +488,7 @@ void TestEditor::anEditRestartsTheRun() {
   QTRY_VERIFY(window_->simulation().latest()->time > 0.5);
   carom::Scene edited = document().scene();
   edited.balls[1].mass = 2.0;
-  QVERIFY(document().apply(edited, "heavier").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "heavier").isEmpty());
   // From the start of the edited scene, still running.
   QTRY_VERIFY(window_->simulation().latest()->time < 0.4);
   QTRY_VERIFY(window_->simulation().latest()->time > 0.1);
@@ -509,14 +509,14 @@ void TestEditor::editsCanApplyToTheRunningState() {
   // Ball 0 is edited and starts over; ball 1 is left alone and stays where the run had it.
   carom::Scene edited = document().scene();
   edited.balls[0].color = "#00ff00";
-  QVERIFY(document().apply(edited, "recolour").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "recolour").isEmpty());
   QTRY_COMPARE(window_->simulation().latest()->time, 0.0);
   QCOMPARE(window_->simulation().latest()->positions[0], Vec3(-2, 3, 0));
   QCOMPARE(window_->simulation().latest()->positions[1], running[1]);
   // Off: the next edit starts everything from the scene.
   applyToRunning->setChecked(false);
   edited.balls[0].color = "#0000ff";
-  QVERIFY(document().apply(edited, "recolour").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "recolour").isEmpty());
   QTRY_COMPARE(window_->simulation().latest()->positions[1], Vec3(2, 3, 0));
 }
 
@@ -547,7 +547,7 @@ void TestEditor::runningStateSurvivesAddingAndDeleting() {
   inTheWay.position = running[1] - Vec3(0, 0.6, 0);  // clear of where it started
   inTheWay.name = "in the way";
   edited.balls.push_back(inTheWay);
-  QVERIFY(document().apply(edited, "add").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
   QCOMPARE(window_->simulation().latest()->positions[0], Vec3(2, 3, 0));
   QVERIFY2(window_->statusMessage().contains("does not fit the running state"),

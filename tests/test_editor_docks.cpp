@@ -109,7 +109,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
     post.point = Vec3(2, 0, -2);
     post.radius = 0.3;
     edited.cylinders.push_back(post);
-    QVERIFY(document().apply(edited, "add").isEmpty());
+    QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   }
 };
 
@@ -292,7 +292,7 @@ void TestEditorDocks::editsEverySelectedObject() {
   second.radius = 1.0;
   second.name = "second";
   edited.balls.push_back(second);
-  QVERIFY(document().apply(edited, "add").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   document().setSelection({{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}});
   QVERIFY2(properties().heading().contains("2 selected"), qPrintable(properties().heading()));
   // Values the balls share show; those they do not are blank, marked "mixed".
@@ -533,7 +533,7 @@ void TestEditorDocks::fieldsShowSixDigitsAndEditAllOfThem() {
   carom::Scene edited = document().scene();
   edited.balls[0].position.x() = 0.1 + 0.2;  // 0.30000000000000004
   edited.balls[0].mass = 2.0 / 3.0;
-  QVERIFY(document().apply(edited, "set").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "set").isEmpty());
   document().setSelection({{ObjectKind::Ball, 0}});
   QLineEdit* x = field("position.x");
   QLineEdit* mass = field("mass");
@@ -558,7 +558,7 @@ void TestEditorDocks::fieldsShowSixDigitsAndEditAllOfThem() {
   carom::Scene two = document().scene();
   two.balls.push_back(two.balls[0]);
   two.balls[1].position = Vec3(2, 1, 0);
-  QVERIFY(document().apply(two, "add").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), two, "add").isEmpty());
   document().setSelection({{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}});
   QCOMPARE(x->text(), QString());
   QCOMPARE(x->placeholderText(), QString("mixed"));
@@ -570,7 +570,7 @@ void TestEditorDocks::fieldsShowSixDigitsAndEditAllOfThem() {
 void TestEditorDocks::fieldsLeftAsTheyWereKeepExactValues() {
   carom::Scene edited = document().scene();
   edited.balls[0].velocity = Vec3(0.1, 1.0 / 3.0, 0);
-  QVERIFY(document().apply(edited, "set").isEmpty());
+  QVERIFY(carom::testing::applyEdit(document(), edited, "set").isEmpty());
   const int commands = document().undoStack()->count();
   document().setSelection({{ObjectKind::Ball, 0}});
   for (const char* name : {"velocity.x", "velocity.y"}) {

@@ -106,7 +106,7 @@ class TestLanguage : public carom::testing::EditorFixture {
   void makeModified() {
     carom::Scene edited = document().scene();
     edited.balls[0].mass = 2.0;
-    QVERIFY(document().apply(edited, "heavier").isEmpty());
+    QVERIFY(carom::testing::applyEdit(document(), edited, "heavier").isEmpty());
   }
 };
 

@@ -18,6 +18,7 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTest>
+#include <QThread>
 #include <QTimer>
 
 using carom::ui::MainWindow;
@@ -257,10 +258,17 @@ class TestMainWindow : public QObject {
   }
 
   void guiNeverWaitsOnThePhysics() {
-    // The worker is held inside a batch of steps for two seconds; meanwhile the window keeps
-    // handling input and repainting, and its controls respond. A GUI that waited on the worker
-    // would do none of this until the two seconds were over.
-    window_->simulation().stallNextBatch(2.0);
+    // The physics thread is kept busy for two seconds, as a very slow batch of steps would keep
+    // it; meanwhile the window keeps handling input and repainting, and its controls respond. A
+    // GUI that waited on the worker would do none of this until the two seconds were over.
+    auto* physics = window_->simulation().findChild<QThread*>("physics");
+    QVERIFY(physics);
+    auto* stall = new QObject;
+    stall->moveToThread(physics);
+    QMetaObject::invokeMethod(stall, [stall] {
+      QThread::sleep(2);
+      stall->deleteLater();
+    });
     QTest::keyClick(window_.get(), Qt::Key_Space);
     QTest::qWait(100);  // the worker is now stalled
     int ticks = 0;

@@ -72,7 +72,9 @@ class TestMethods : public QObject {
     QCOMPARE(sim.time(), 10 * s.world.timeStep);
     QCOMPARE(sim.ballCount(), 0);
     QCOMPARE(sim.totalEnergy(), 0.0);
-    sim.setMethod(Method((method + 1) % 3));
+    World next = s.world;
+    next.method = Method((method + 1) % 3);
+    sim.setWorld(next);
     sim.step();
     QVERIFY(std::abs(sim.time() - 11 * s.world.timeStep) < 1e-12);
   }
@@ -360,15 +362,44 @@ class TestMethods : public QObject {
     Simulation sim(s);
     sim.advance(0.5);
     const std::vector<BallState> before = sim.state();
-    sim.setMethod(Method::Discrete);
+    World world = s.world;
+    world.method = Method::Discrete;
+    sim.setWorld(world);
     const std::vector<BallState> after = sim.state();
     for (std::size_t i = 0; i < before.size(); ++i)
       QVERIFY(before[i].position == after[i].position);
     sim.advance(0.5);
-    sim.setMethod(Method::Swept);
-    sim.setGravity(Vec3(0, -1, 0));
+    world.method = Method::Swept;
+    world.gravity = Vec3(0, -1, 0);
+    sim.setWorld(world);
     sim.advance(0.5);
     QVERIFY(std::abs(sim.time() - 1.5) < 1e-12);
+  }
+
+  void worldRestitutionChangesLive() {
+    // One ball dropped on a floor: after the world's restitution drops to 0.5 mid-flight, the
+    // next bounce keeps half the speed; a ball and a floor with their own values keep them.
+    for (const bool ownValue : {false, true}) {
+      Scene s;
+      s.planes.push_back(Plane{});
+      if (ownValue) s.planes[0].restitution = 1.0;
+      Ball ball;
+      ball.position = Vec3(0, 2, 0);
+      ball.radius = 0.1;
+      if (ownValue) ball.restitution = 1.0;
+      s.balls.push_back(ball);
+      Simulation sim(s);
+      sim.advance(0.1);
+      World world = s.world;
+      world.restitution = 0.5;
+      sim.setWorld(world);
+      QCOMPARE(sim.world().restitution, 0.5);
+      const double speedAtImpact = std::sqrt(2.0 * 9.81 * 1.9);
+      sim.advance(std::sqrt(2.0 * 1.9 / 9.81) - 0.1 + 1e-6);  // just after the bounce
+      const double expected = (ownValue ? 1.0 : 0.5) * speedAtImpact;
+      QVERIFY2(std::abs(sim.velocities()[0].y() - expected) < 1e-3,
+               qPrintable(QString::number(sim.velocities()[0].y())));
+    }
   }
 };
 

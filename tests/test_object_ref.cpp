@@ -66,6 +66,9 @@ class TestObjectRef : public QObject {
   void removeIgnoresReferencesToNothing();
   void extractThenAppendCopiesEveryField();
   void untouchedBallsKeepTheirRunningState();
+  void insertUndoesRemove_data();
+  void insertUndoesRemove();
+  void assignWritesBackWhatExtractTook();
 };
 
 void TestObjectRef::removeKeepsEveryOtherObject_data() {
@@ -152,7 +155,9 @@ void TestObjectRef::untouchedBallsKeepTheirRunningState() {
   // An edit removes balls (here ball 1): the others keep their running state.
   Scene edited = shown;
   carom::ui::remove(edited, {{ObjectKind::Ball, 1}});
-  Scene start = carom::ui::withRunningBalls(shown, edited, positions, velocities);
+  carom::ui::SceneChange change;
+  change.removed = {{ObjectKind::Ball, 1}};
+  Scene start = carom::ui::withRunningBalls(edited, change, positions, velocities);
   QCOMPARE(start.balls.size(), edited.balls.size());
   for (int i = 0; i < kPerKind - 1; ++i) QVERIFY(ranFrom(start, i, i < 1 ? i : i + 1));
   // Or changes balls in place and appends some: the changed and the new ones are as edited.
@@ -161,12 +166,60 @@ void TestObjectRef::untouchedBallsKeepTheirRunningState() {
   Ball added;
   added.position = Vec3(-50, 1, 0);
   edited.balls.push_back(added);
-  start = carom::ui::withRunningBalls(shown, edited, positions, velocities);
+  change = {};
+  change.edited = {{ObjectKind::Ball, 3}};
+  change.inserted = {{ObjectKind::Ball, kPerKind}};
+  start = carom::ui::withRunningBalls(edited, change, positions, velocities);
   QCOMPARE(start.balls.size(), edited.balls.size());
   for (int i : {0, 1, 2, 4}) QVERIFY(ranFrom(start, i, i));
   QVERIFY(start.balls[3] == edited.balls[3]);
   QVERIFY(start.balls[5] == added);
   QVERIFY(start.planes == edited.planes && start.cylinders == edited.cylinders);
+}
+
+void TestObjectRef::insertUndoesRemove_data() {
+  removeKeepsEveryOtherObject_data();
+}
+
+// Undoing a Delete puts the removed objects back where they stood, every field as it was.
+void TestObjectRef::insertUndoesRemove() {
+  QFETCH(int, kind);
+  QFETCH(std::vector<int>, removed);
+  Selection refs;
+  for (int index : removed) refs.push_back({ObjectKind(kind), index});
+  // And a ball among the planes or cylinders, so that kinds mix.
+  if (kind != 0) refs.push_back({ObjectKind::Ball, 2});
+  const Scene before = namedScene();
+  Scene scene = before;
+  const Scene taken = carom::ui::extract(scene, carom::ui::normalized(refs));
+  carom::ui::remove(scene, refs);
+  QVERIFY(!(scene == before));
+  carom::ui::insert(scene, refs, taken);
+  QVERIFY(scene == before);
+}
+
+// An edit of a few objects works on their copies: the copies go back to the same places, and
+// every other object stays as it was.
+void TestObjectRef::assignWritesBackWhatExtractTook() {
+  const Scene before = namedScene();
+  const Selection refs{{ObjectKind::Ball, 1}, {ObjectKind::Ball, 4}, {ObjectKind::Cylinder, 2}};
+  Scene values = carom::ui::extract(before, refs);
+  const Selection local = carom::ui::extractedRefs(refs);
+  QCOMPARE(local,
+           (Selection{{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}, {ObjectKind::Cylinder, 0}}));
+  for (const ObjectRef& ref : local) carom::ui::objectInfo(values, ref).name += " edited";
+  Scene scene = before;
+  carom::ui::assign(scene, refs, values);
+  for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder}) {
+    for (int i = 0; i < kPerKind; ++i) {
+      const ObjectRef ref{kind, i};
+      const bool edited = std::find(refs.begin(), refs.end(), ref) != refs.end();
+      const std::string expected =
+          carom::ui::objectInfo(before, ref).name + (edited ? " edited" : "");
+      QCOMPARE(carom::ui::objectInfo(scene, ref).name, expected);
+    }
+  }
+  QVERIFY(scene.balls[1].position == before.balls[1].position);
 }
 
 QTEST_APPLESS_MAIN(TestObjectRef)

@@ -35,7 +35,7 @@ int runChild(const QString& file) {
   carom::Scene edited = window.document()->scene();
   edited.balls[0].position = Vec3(1, 2, 3);
   edited.balls[0].name = "unsaved work";
-  if (!window.document()->apply(edited, "edit").isEmpty()) return 4;
+  if (!carom::testing::applyEdit(*window.document(), edited, "edit").isEmpty()) return 4;
   window.show();
   return QApplication::exec();
 }

@@ -3,6 +3,7 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/dialog_answerer.h"
+#include "tests/scene_edits.h"
 #include "tests/scene_helpers.h"
 #include "ui/editor/scene_document.h"
 #include "ui/scene_files.h"
@@ -93,7 +94,7 @@ QString TestSceneFiles::writeScene(const QString& name, const Scene& scene) {
 void TestSceneFiles::edit() {
   Scene edited = document_->scene();
   edited.balls.clear();
-  QVERIFY(document_->apply(edited, "Delete", {}).isEmpty());
+  QVERIFY(carom::testing::applyEdit(*document_, edited, "Delete").isEmpty());
   QVERIFY(document_->isModified());
 }
 

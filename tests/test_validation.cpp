@@ -446,6 +446,68 @@ class ValidationTest : public QObject {
     QCOMPARE(found, expected);
   }
 
+  // An edit is checked on the objects it touches only (validateObjects): from a valid scene,
+  // random edits of a few objects (moves into and out of overlaps, bad values, appended
+  // objects) must give exactly the errors validateScene gives for the whole edited scene.
+  void editChecksMatchTheWholeScene() {
+    std::mt19937_64 random(777);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Scene valid;
+    Plane floor;
+    valid.planes.push_back(floor);
+    Plane wall;
+    wall.point = Vec3(10, 0, 0);
+    wall.normal = Vec3(-1, 0, 0);
+    valid.planes.push_back(wall);
+    Cylinder post;
+    post.point = Vec3(5, 0, 5);
+    post.radius = 0.5;
+    valid.cylinders.push_back(post);
+    while (valid.balls.size() < 200) {
+      Ball ball = makeBall(Vec3(unit(random) * 9, 0.3 + unit(random) * 5, unit(random) * 9),
+                           0.1 + 0.2 * unit(random));
+      Scene attempt = valid;
+      attempt.balls.push_back(ball);
+      if (carom::validateScene(attempt, 1).empty()) valid = attempt;
+    }
+    const auto randomPoint = [&] {
+      return Vec3(unit(random) * 11 - 0.5, unit(random) * 6 - 0.5, unit(random) * 11 - 0.5);
+    };
+    int failing = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+      Scene edited = valid;
+      carom::SceneObjectIndices touched;
+      const int edits = 1 + int(unit(random) * 3);
+      for (int e = 0; e < edits; ++e) {
+        const double what = unit(random);
+        if (what < 0.5) {
+          const std::size_t i = std::size_t(unit(random) * edited.balls.size());
+          edited.balls[i].position = randomPoint();
+          if (unit(random) < 0.1) edited.balls[i].radius = unit(random) < 0.5 ? -1.0 : kNaN;
+          touched.balls.push_back(i);
+        } else if (what < 0.65) {
+          edited.balls.push_back(makeBall(randomPoint(), 0.2));
+          touched.balls.push_back(edited.balls.size() - 1);
+        } else if (what < 0.8) {
+          const std::size_t i = std::size_t(unit(random) * edited.planes.size());
+          edited.planes[i].point.y() = unit(random) * 0.6 - 0.3;
+          if (unit(random) < 0.1) edited.planes[i].normal = Vec3::Zero();
+          touched.planes.push_back(i);
+        } else {
+          edited.cylinders[0].point = randomPoint();
+          edited.cylinders[0].radius = 0.2 + unit(random);
+          touched.cylinders.push_back(0);
+        }
+      }
+      const QStringList whole = texts(carom::validateScene(edited, 1000));
+      QCOMPARE(texts(carom::validateObjects(edited, touched, 1000)), whole);
+      QCOMPARE(texts(carom::validateObjects(edited, touched, 1)), whole.mid(0, 1));
+      failing += !whole.isEmpty();
+    }
+    // Both outcomes must have been exercised.
+    QVERIFY2(failing > 50 && failing < 350, qPrintable(QString::number(failing)));
+  }
+
   // 200,000 touching balls on a lattice and one intruder: exactly the intruder's eight overlaps
   // are found (touching neighbours are not overlaps). All pairs would be 2e10 comparisons: this
   // finishes only because the test is not all-pairs.

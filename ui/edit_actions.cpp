@@ -43,10 +43,7 @@ void EditActions::duplicate() {
 }
 
 void EditActions::deleteSelection() {
-  if (document_->selection().empty()) return;
-  Scene edited = document_->scene();
-  remove(edited, document_->selection());
-  const QString error = document_->apply(edited, tr("Delete"), {});
+  const QString error = document_->removeObjects(document_->selection(), tr("Delete"));
   if (!error.isEmpty()) emit message(error);
 }
 
@@ -67,12 +64,10 @@ void EditActions::insertObjects(Scene objects, const QString& text) {
   for (const Ball& ball : objects.balls) largest = std::max(largest, ball.radius);
   QString error;
   for (int attempt = 0; attempt <= kMaxPlacementAttempts; ++attempt) {
-    Scene edited = document_->scene();
     Scene shifted = objects;
     const Vec3 offset = attempt * 2.2 * largest * across;
     for (Ball& ball : shifted.balls) ball.position += offset;
-    const Selection added = append(edited, shifted);
-    error = document_->apply(edited, text, added);
+    error = document_->addObjects(shifted, text);
     if (error.isEmpty()) return;
     if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
   }

@@ -19,6 +19,7 @@
 #include "ui/render/render_scene.h"
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
+#include "ui/simulation_sync.h"
 #include "ui/sound/sound_board.h"
 #include "ui/status_readout.h"
 
@@ -52,6 +53,12 @@ MainWindow::MainWindow(QWidget* parent)
   setAcceptDrops(true);
   view_ = new SceneView;
   setCentralWidget(view_);
+  sync_ = new SimulationSync(document_, simulation_.get(), this);
+  connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
+    view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
+    showSelection();
+  });
+  connect(sync_, &SimulationSync::message, this, &MainWindow::showMessage);
   energyPlot_ = new EnergyPlot;
   energyDock_ = new QDockWidget(this);
   energyDock_->setObjectName("energyDock");
@@ -75,10 +82,7 @@ MainWindow::MainWindow(QWidget* parent)
   recovery_ = new SceneRecovery(document_, this);
   files_ = new SceneFiles(document_, this, this);
   connect(files_, &SceneFiles::message, this, &MainWindow::showMessage);
-  connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] {
-    playAction_->setChecked(false);
-    shownScene_.reset();  // a fresh start: no running state carries over to another scene
-  });
+  connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] { playAction_->setChecked(false); });
   connect(files_, &SceneFiles::sceneOpened, this, [this] {
     view_->frameScene();
     energyPlot_->clear();
@@ -101,8 +105,11 @@ MainWindow::MainWindow(QWidget* parent)
   buildEditActions();
   buildToolActions();
   buildToolBar();
+  simulation_->setSpeed(speed_->value());
   buildMenus();
-  connect(document_, &SceneDocument::sceneChanged, this, &MainWindow::showDocumentScene);
+  connect(document_, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
+    if (change.world) showWorld();
+  });
   connect(document_, &SceneDocument::displayNameChanged, this, &MainWindow::updateTitle);
   connect(document_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(document_, &SceneDocument::selectionChanged, this, [this] {
@@ -473,70 +480,25 @@ void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
   files_->openScene(scene, fileName, title);
 }
 
-void MainWindow::showDocumentScene() {
-  const std::shared_ptr<const Scene> scene = document_->sharedScene();
-  const bool sameObjects = shownScene_ && shownScene_->balls == scene->balls &&
-                           shownScene_->planes == scene->planes &&
-                           shownScene_->cylinders == scene->cylinders;
-  const bool sameWorld = shownScene_ && shownScene_->world == scene->world;
+void MainWindow::showWorld() {
   // The toolbar mirrors the world settings without echoing them back as edits.
-  {
-    const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
-                                       QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
-                                       QSignalBlocker(method_),     QSignalBlocker(integrator_)};
-    for (int a = 0; a < 3; ++a) gravity_[a]->setValue(scene->world.gravity[a]);
-    timeStep_->setValue(scene->world.timeStep);
-    method_->setCurrentIndex(int(scene->world.method));
-    integrator_->setCurrentIndex(int(scene->world.integrator));
-  }
-  if (sameObjects && shownScene_->world.restitution == scene->world.restitution) {
-    // Gravity, time step, method and integrator change live, from the running state on.
-    if (!sameWorld) {
-      if (shownScene_->world.gravity != scene->world.gravity)
-        simulation_->setGravity(scene->world.gravity);
-      if (shownScene_->world.timeStep != scene->world.timeStep)
-        simulation_->setTimeStep(scene->world.timeStep);
-      if (shownScene_->world.method != scene->world.method)
-        simulation_->setMethod(scene->world.method);
-      if (shownScene_->world.integrator != scene->world.integrator)
-        simulation_->setIntegrator(scene->world.integrator);
-    }
-    shownScene_ = scene;
-    return;
-  }
-  Scene start = *scene;
-  if (shownScene_ && applyToRunningAction_->isChecked()) start = withRunningState(*scene);
-  shownScene_ = scene;
-  view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(start)));
-  showSelection();
-  simulation_->loadScene(start);
-  simulation_->setSpeed(speed_->value());
-}
-
-// The edited scene, with every ball the edit left alone where the running simulation has it.
-// When that state would overlap what the edit added, the edited scene as it is.
-Scene MainWindow::withRunningState(const Scene& edited) {
-  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
-  if (!snapshot || snapshot->positions.size() != shownScene_->balls.size()) return edited;
-  const Scene start =
-      withRunningBalls(*shownScene_, edited, snapshot->positions, snapshot->velocities);
-  if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty()) {
-    showMessage(tr("The edit does not fit the running state (%1): restarted from the edited "
-                   "scene.")
-                    .arg(QString::fromStdString(errors.front().text())));
-    return edited;
-  }
-  return start;
+  const World& world = document_->scene().world;
+  const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
+                                     QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
+                                     QSignalBlocker(method_),     QSignalBlocker(integrator_)};
+  for (int a = 0; a < 3; ++a) gravity_[a]->setValue(world.gravity[a]);
+  timeStep_->setValue(world.timeStep);
+  method_->setCurrentIndex(int(world.method));
+  integrator_->setCurrentIndex(int(world.integrator));
 }
 
 void MainWindow::editWorld(const QString& text, const std::function<void(World&)>& change) {
-  Scene edited = document_->scene();
-  change(edited.world);
-  if (edited.world == document_->scene().world) return;
-  const QString error = document_->apply(edited, text);
+  World world = document_->scene().world;
+  change(world);
+  const QString error = document_->editWorld(world, text);
   if (!error.isEmpty()) {
     showMessage(error);
-    showDocumentScene();  // puts the toolbar back
+    showWorld();  // puts the toolbar back
   }
 }
 
@@ -750,8 +712,11 @@ void MainWindow::buildEditActions() {
   applyToRunningAction_->setObjectName("applyToRunningState");
   applyToRunningAction_->setCheckable(true);
   applyToRunningAction_->setChecked(QSettings().value(kApplyToRunningKey, false).toBool());
-  connect(applyToRunningAction_, &QAction::toggled, this,
-          [](bool on) { QSettings().setValue(kApplyToRunningKey, on); });
+  sync_->setApplyToRunningState(applyToRunningAction_->isChecked());
+  connect(applyToRunningAction_, &QAction::toggled, this, [this](bool on) {
+    sync_->setApplyToRunningState(on);
+    QSettings().setValue(kApplyToRunningKey, on);
+  });
 
   addActions({undoAction_, redoAction_, copyAction_, pasteAction_, duplicateAction_, deleteAction_,
               selectAllAction_});
@@ -765,13 +730,17 @@ void MainWindow::buildEditActions() {
 
 void MainWindow::useCurrentState() {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
-  Scene edited = document_->scene();
-  if (!snapshot || snapshot->positions.size() != edited.balls.size()) return;
-  for (std::size_t i = 0; i < edited.balls.size(); ++i) {
-    edited.balls[i].position = snapshot->positions[i];
-    edited.balls[i].velocity = snapshot->velocities[i];
+  const Scene& scene = document_->scene();
+  if (!snapshot || snapshot->positions.size() != scene.balls.size()) return;
+  Selection balls;
+  Scene values;
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    balls.push_back({ObjectKind::Ball, static_cast<int>(i)});
+    values.balls.push_back(scene.balls[i]);
+    values.balls.back().position = snapshot->positions[i];
+    values.balls.back().velocity = snapshot->velocities[i];
   }
-  const QString error = document_->apply(edited, tr("Use Current State as Initial"));
+  const QString error = document_->editObjects(balls, values, tr("Use Current State as Initial"));
   if (!error.isEmpty()) showMessage(error);
 }
 

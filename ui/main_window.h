@@ -33,6 +33,7 @@ class StatusReadout;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
+class SimulationSync;
 }  // namespace carom::ui
 namespace carom::sound {
 class SoundBoard;
@@ -102,8 +103,7 @@ class MainWindow : public QMainWindow {
   void buildToolActions();
   void showSelection();
   void fillRecentMenu();
-  void showDocumentScene();
-  Scene withRunningState(const Scene& edited);
+  void showWorld();
   void editWorld(const QString& text, const std::function<void(World&)>& change);
   void updateTitle();
   int followTarget() const;
@@ -131,7 +131,7 @@ class MainWindow : public QMainWindow {
   EditorTools* tools_ = nullptr;
   QAction* toolActions_[4] = {};  // in EditorTools::Tool order
   QAction* snapAction_ = nullptr;
-  std::shared_ptr<const Scene> shownScene_;  // what the view and the simulation started from
+  SimulationSync* sync_ = nullptr;  // keeps the simulation in step with the document
   QAction* newAction_ = nullptr;
   QAction* openAction_ = nullptr;
   QAction* saveAction_ = nullptr;

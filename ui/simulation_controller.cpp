@@ -30,38 +30,41 @@ void takeOver([[maybe_unused]] QThread* thread) {
 
 SimulationController::SimulationController(QObject* parent)
     : QObject(parent),
+      thread_(new QThread(this)),
       worker_(new SimulationWorker(exchange_)),
       calls_(new CallQueue(worker_)) {  // a child of the worker, so on its thread
-  thread_.setObjectName("physics");
-  worker_->moveToThread(&thread_);
-  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+  thread_->setObjectName("physics");
+  worker_->moveToThread(thread_);
+  connect(thread_, &QThread::finished, worker_, &QObject::deleteLater);
   // Emitted on the physics thread once its event loop has ended, before the worker is deleted
   // and before wait() returns.
   connect(
-      &thread_, &QThread::finished, &thread_,
+      thread_, &QThread::finished, thread_,
       [this] {
-        takeOver(&thread_);
-        handOver(&thread_);
+        takeOver(thread_);
+        handOver(thread_);
       },
       Qt::DirectConnection);
   connect(worker_, &SimulationWorker::snapshotPublished, this,
           &SimulationController::snapshotPublished, Qt::QueuedConnection);
-  thread_.start();
+  thread_->start();
 }
 
 SimulationController::~SimulationController() {
-  handOver(&thread_);
-  thread_.quit();
-  thread_.wait();
-  takeOver(&thread_);
+  handOver(thread_);
+  thread_->quit();
+  thread_->wait();
+  takeOver(thread_);
 }
 
 void SimulationController::post(std::function<void()> call) {
   calls_->post(std::move(call));
 }
 
-void SimulationController::loadScene(const carom::Scene& scene) {
-  post([worker = worker_, scene] { worker->loadScene(scene); });
+std::uint64_t SimulationController::loadScene(std::shared_ptr<const carom::Scene> scene) {
+  const std::uint64_t number = ++loads_;
+  post([worker = worker_, scene = std::move(scene), number] { worker->loadScene(*scene, number); });
+  return number;
 }
 void SimulationController::setRunning(bool running) {
   post([worker = worker_, running] { worker->setRunning(running); });
@@ -75,20 +78,8 @@ void SimulationController::reset() {
 void SimulationController::setSpeed(double factor) {
   post([worker = worker_, factor] { worker->setSpeed(factor); });
 }
-void SimulationController::setGravity(const carom::Vec3& gravity) {
-  post([worker = worker_, gravity] { worker->setGravity(gravity); });
-}
-void SimulationController::setTimeStep(double seconds) {
-  post([worker = worker_, seconds] { worker->setTimeStep(seconds); });
-}
-void SimulationController::setMethod(carom::Method method) {
-  post([worker = worker_, method] { worker->setMethod(method); });
-}
-void SimulationController::setIntegrator(carom::Integrator integrator) {
-  post([worker = worker_, integrator] { worker->setIntegrator(integrator); });
-}
-void SimulationController::stallNextBatch(double seconds) {
-  post([worker = worker_, seconds] { worker->stallNextBatch(seconds); });
+void SimulationController::setWorld(const carom::World& world) {
+  post([worker = worker_, world] { worker->setWorld(world); });
 }
 
 }  // namespace carom::ui

@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QThread>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 
@@ -22,16 +23,14 @@ class SimulationController : public QObject {
   explicit SimulationController(QObject* parent = nullptr);
   ~SimulationController() override;
 
-  void loadScene(const carom::Scene& scene);
+  // Stands at the start of `scene` (valid), paused; snapshots of it carry the number returned.
+  std::uint64_t loadScene(std::shared_ptr<const carom::Scene> scene);
   void setRunning(bool running);
   void stepOnce();
   void reset();
   void setSpeed(double factor);
-  void setGravity(const carom::Vec3& gravity);
-  void setTimeStep(double seconds);
-  void setMethod(carom::Method method);
-  void setIntegrator(carom::Integrator integrator);
-  void stallNextBatch(double seconds);  // test hook
+  // New world settings (valid), applied from the running state on.
+  void setWorld(const carom::World& world);
 
   // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }
@@ -45,7 +44,8 @@ class SimulationController : public QObject {
   void post(std::function<void()> call);
 
   SnapshotExchange exchange_;
-  QThread thread_;
+  QThread* thread_;  // a child named "physics"
+  std::uint64_t loads_ = 0;
   SimulationWorker* worker_;  // on thread_, deleted when it finishes
   CallQueue* calls_;          // the worker's child: runs the posted calls on thread_
 };

@@ -5,6 +5,7 @@
 #include "sim/run_stats.h"
 #include "sim/scene.h"
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -12,6 +13,7 @@
 namespace carom::ui {
 
 struct SimulationSnapshot {
+  std::uint64_t startNumber = 0;  // which start the run began from (SimulationController)
   double time = 0.0;
   std::vector<Vec3> positions;
   std::vector<Vec3> velocities;  // same order

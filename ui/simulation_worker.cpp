@@ -3,7 +3,6 @@
 #include "sim/measures.h"
 #include "sim/simulation.h"
 
-#include <QThread>
 #include <QTimer>
 
 #include <algorithm>
@@ -30,8 +29,9 @@ SimulationWorker::SimulationWorker(SnapshotExchange& exchange, QObject* parent)
 
 SimulationWorker::~SimulationWorker() = default;
 
-void SimulationWorker::loadScene(const carom::Scene& scene) {
+void SimulationWorker::loadScene(const carom::Scene& scene, std::uint64_t number) {
   scene_ = scene;
+  startNumber_ = number;
   reset();
 }
 
@@ -71,47 +71,19 @@ void SimulationWorker::setSpeed(double factor) {
   speed_ = std::max(0.0, factor);
 }
 
-void SimulationWorker::setGravity(const carom::Vec3& gravity) {
+void SimulationWorker::setWorld(const carom::World& world) {
   if (!simulation_) return;
-  scene_.world.gravity = gravity;
-  simulation_->setGravity(gravity);
-  initialEnergy_ = simulation_->totalEnergy();  // energy is measured against the new field
+  const bool newGravity = world.gravity != scene_.world.gravity;
+  scene_.world = world;
+  simulation_->setWorld(world);
+  if (newGravity) initialEnergy_ = simulation_->totalEnergy();  // measured in the new field
   publish();
-}
-
-void SimulationWorker::setTimeStep(double seconds) {
-  if (!simulation_) return;
-  scene_.world.timeStep = seconds;
-  simulation_->setTimeStep(seconds);
-  publish();
-}
-
-void SimulationWorker::setMethod(carom::Method method) {
-  if (!simulation_) return;
-  scene_.world.method = method;
-  simulation_->setMethod(method);
-  publish();
-}
-
-void SimulationWorker::setIntegrator(carom::Integrator integrator) {
-  if (!simulation_) return;
-  scene_.world.integrator = integrator;
-  simulation_->setIntegrator(integrator);
-  publish();
-}
-
-void SimulationWorker::stallNextBatch(double seconds) {
-  stall_ = seconds;
 }
 
 void SimulationWorker::tick() {
   const double elapsed = clock_.nsecsElapsed() * 1e-9;
   clock_.restart();
   if (!running_ || !simulation_) return;
-  if (stall_ > 0.0) {
-    QThread::usleep(static_cast<unsigned long>(stall_ * 1e6));
-    stall_ = 0.0;
-  }
   owed_ += elapsed * speed_;
   QElapsedTimer work;
   work.start();
@@ -140,6 +112,7 @@ void SimulationWorker::tick() {
 void SimulationWorker::publish() {
   if (!simulation_) return;
   auto snapshot = std::make_shared<SimulationSnapshot>();
+  snapshot->startNumber = startNumber_;
   snapshot->time = simulation_->time();
   // One read of the state serves the positions and both energies.
   for (const BallState& ball : simulation_->state()) {

@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -26,18 +27,14 @@ class SimulationWorker : public QObject {
   explicit SimulationWorker(SnapshotExchange& exchange, QObject* parent = nullptr);
   ~SimulationWorker() override;
 
-  // Replaces the scene (already validated) and stands at its start, paused.
-  void loadScene(const carom::Scene& scene);
+  // Replaces the scene (already validated) and stands at its start, paused; its snapshots carry
+  // `number`.
+  void loadScene(const carom::Scene& scene, std::uint64_t number);
   void setRunning(bool running);
   void stepOnce();
   void reset();
   void setSpeed(double factor);  // simulated seconds per real second
-  void setGravity(const carom::Vec3& gravity);
-  void setTimeStep(double seconds);
-  void setMethod(carom::Method method);
-  void setIntegrator(carom::Integrator integrator);
-  // Test hook: the next batch of steps stalls for this long, as a very slow step would.
-  void stallNextBatch(double seconds);
+  void setWorld(const carom::World& world);
 
  signals:
   // A new snapshot is in the exchange (at most one per batch of steps).
@@ -62,7 +59,7 @@ class SimulationWorker : public QObject {
   // Real seconds since a backlog was last dropped; the warning is held a while so it does not
   // blink on and off with every batch.
   double sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
-  double stall_ = 0.0;
+  std::uint64_t startNumber_ = 0;
 };
 
 }  // namespace carom::ui

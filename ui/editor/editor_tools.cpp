@@ -166,10 +166,8 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
   const bool altDrag = event->modifiers() & Qt::AltModifier;
   if (!extend && nearHandleTip(pressPosition_)) {
-    drag_ = Drag::Handle;
     grabPoint_ = handle()->tip;
-    sceneAtPress_ = document_->scene();
-    gesture_ = document_->newGesture();
+    beginDrag(Drag::Handle, document_->selection());
     return true;
   }
   const std::optional<Picked> picked = pick(pressPosition_);
@@ -190,32 +188,39 @@ bool EditorTools::mousePress(QMouseEvent* event) {
     return true;
   }
   if (!selected) document_->setSelection({hit});
-  sceneAtPress_ = document_->scene();
-  gesture_ = document_->newGesture();
   if (altDrag && hit.kind == ObjectKind::Ball) {
     // Alt-drag from a ball draws its velocity from the centre, for balls at rest.
-    drag_ = Drag::Handle;
     document_->setSelection({hit});
-    grabPoint_ = sceneAtPress_.balls[hit.index].position;
+    grabPoint_ = document_->scene().balls[hit.index].position;
+    beginDrag(Drag::Handle, {hit});
     return true;
   }
   grabPoint_ = picked->point;
-  drag_ = Drag::Objects;
+  beginDrag(Drag::Objects, document_->selection());
   return true;
+}
+
+void EditorTools::beginDrag(Drag drag, const Selection& objects) {
+  drag_ = drag;
+  dragged_ = objects;
+  draggedAtPress_ = extract(document_->scene(), dragged_);
+  gesture_ = document_->newGesture();
 }
 
 bool EditorTools::mouseMove(QMouseEvent* event) {
   if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
   const std::optional<Vec3> point = onDragPlane(event->position(), grabPoint_);
   if (!point) return true;
-  Scene edited = sceneAtPress_;
+  // Only the dragged objects are copied and changed, never the whole scene.
+  const Selection local = extractedRefs(dragged_);
+  Scene edited = draggedAtPress_;
   QString text;
   if (drag_ == Drag::Handle) {
-    text = dragHandle(edited, document_->selection().front(), *point);
+    text = dragHandle(edited, local.front(), *point);
   } else {
     const Vec3 offset = *point - grabPoint_;
-    for (const ObjectRef& ref : document_->selection()) {
-      Vec3 moved = objectPosition(sceneAtPress_, ref) + offset;
+    for (const ObjectRef& ref : local) {
+      Vec3 moved = objectPosition(draggedAtPress_, ref) + offset;
       if (snapToGrid_) {
         for (int a = 0; a < 3; ++a)
           if (axisLock_ < 0 || axisLock_ == a)
@@ -225,17 +230,16 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
     }
     text = tr("Move");
   }
-  QString error = document_->apply(edited, text, document_->selection(), gesture_);
+  QString error = document_->editObjects(dragged_, edited, text, gesture_);
   if (!error.isEmpty() && drag_ == Drag::Objects && axisLock_ < 0) {
     // Most often the move pushes a ball resting on the floor into it: keep the height and
     // slide instead.
-    Scene level = edited;
-    for (const ObjectRef& ref : document_->selection()) {
-      Vec3 moved = objectPosition(level, ref);
-      moved.y() = objectPosition(sceneAtPress_, ref).y();
-      setObjectPosition(level, ref, moved);
+    for (const ObjectRef& ref : local) {
+      Vec3 moved = objectPosition(edited, ref);
+      moved.y() = objectPosition(draggedAtPress_, ref).y();
+      setObjectPosition(edited, ref, moved);
     }
-    if (document_->apply(level, text, document_->selection(), gesture_).isEmpty()) error.clear();
+    if (document_->editObjects(dragged_, edited, text, gesture_).isEmpty()) error.clear();
   }
   if (!error.isEmpty() && !refusedDuringDrag_) {
     refusedDuringDrag_ = true;  // once per drag; the objects stay at their last valid place
@@ -278,9 +282,8 @@ void EditorTools::place(const QPointF& position) {
     return;
   }
 
-  Scene edited = scene;
+  Scene added;
   QString text;
-  ObjectRef added;
   QString error;
   if (tool_ == Tool::AddBall) {
     Ball ball;
@@ -294,11 +297,10 @@ void EditorTools::place(const QPointF& position) {
       for (int spot = 0; spot < spots; ++spot) {
         const double angle = 2.0 * std::numbers::pi * spot / spots;
         const double distance = 2.05 * ball.radius * ring;
-        Scene attempt = scene;
         ball.position = centre + distance * (std::cos(angle) * u + std::sin(angle) * v);
+        Scene attempt;
         attempt.balls.push_back(ball);
-        const QString problem = document_->apply(
-            attempt, tr("Add Ball"), {{ObjectKind::Ball, static_cast<int>(scene.balls.size())}});
+        const QString problem = document_->addObjects(attempt, tr("Add Ball"));
         if (problem.isEmpty()) return;
         if (error.isEmpty()) error = problem;
       }
@@ -313,8 +315,7 @@ void EditorTools::place(const QPointF& position) {
     Vec3 facing = toVec3(view_->camera().eye()) - point;
     facing.y() = 0.0;
     plane.normal = facing.norm() > 1e-9 ? facing.normalized() : Vec3::UnitZ();
-    edited.planes.push_back(plane);
-    added = {ObjectKind::Plane, static_cast<int>(scene.planes.size())};
+    added.planes.push_back(plane);
     text = tr("Add Plane");
   } else {
     // A post standing on the surface clicked.
@@ -323,11 +324,10 @@ void EditorTools::place(const QPointF& position) {
     cylinder.axis = normal;
     cylinder.radius =
         scene.cylinders.empty() ? kDefaultCylinderRadius : scene.cylinders.back().radius;
-    edited.cylinders.push_back(cylinder);
-    added = {ObjectKind::Cylinder, static_cast<int>(scene.cylinders.size())};
+    added.cylinders.push_back(cylinder);
     text = tr("Add Cylinder");
   }
-  error = document_->apply(edited, text, {added});
+  error = document_->addObjects(added, text);
   if (!error.isEmpty()) emit refused(tr("Cannot place it there: %1").arg(error));
 }
 

@@ -57,6 +57,7 @@ class EditorTools : public QObject {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
+  enum class Drag { None, Pending, Objects, Handle };
   bool mousePress(QMouseEvent* event);
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
@@ -70,9 +71,11 @@ class EditorTools : public QObject {
   std::optional<Picked> pick(const QPointF& position) const;
   bool nearHandleTip(const QPointF& position) const;
   // The edit a handle drag to `point` makes of `ref` in `scene`; returns the command's text.
+  // Both name the object's copy that the drag edits.
   QString dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
+  void beginDrag(Drag drag, const Selection& objects);
 
   SceneDocument* document_;
   render::SceneView* view_;
@@ -80,11 +83,12 @@ class EditorTools : public QObject {
   bool snapToGrid_ = false;
   int axisLock_ = -1;  // 0, 1, 2 while X, Y or Z is held
 
-  enum class Drag { None, Pending, Objects, Handle };
   Drag drag_ = Drag::None;
   QPointF pressPosition_;
   Vec3 grabPoint_ = Vec3::Zero();
-  Scene sceneAtPress_;
+  // The dragged objects, and their values when the drag began (as extract() gives them).
+  Selection dragged_;
+  Scene draggedAtPress_;
   int gesture_ = 0;
   bool refusedDuringDrag_ = false;
 };

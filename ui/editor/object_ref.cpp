@@ -131,7 +131,48 @@ Selection append(Scene& scene, const Scene& objects) {
   return normalized(added);
 }
 
+Selection extractedRefs(const Selection& selection) {
+  int next[3] = {0, 0, 0};
+  Selection refs;
+  for (const ObjectRef& ref : normalized(selection))
+    refs.push_back({ref.kind, next[int(ref.kind)]++});
+  return refs;
+}
+
 namespace {
+
+template <typename T>
+void assignIndices(std::vector<T>& items, const Selection& selection, ObjectKind kind,
+                   const std::vector<T>& values) {
+  std::size_t next = 0;
+  for (const ObjectRef& ref : selection) {
+    if (ref.kind != kind || next >= values.size()) continue;
+    if (ref.index >= 0 && ref.index < static_cast<int>(items.size()))
+      items[ref.index] = values[next];
+    ++next;
+  }
+}
+
+template <typename T>
+void insertIndices(std::vector<T>& items, const Selection& selection, ObjectKind kind,
+                   const std::vector<T>& values) {
+  std::vector<int> places;
+  for (const ObjectRef& ref : selection)
+    if (ref.kind == kind) places.push_back(ref.index);
+  if (places.empty()) return;
+  std::vector<T> merged;
+  merged.reserve(items.size() + values.size());
+  std::size_t kept = 0, inserted = 0;
+  while (kept < items.size() || inserted < values.size()) {
+    const bool insertHere = inserted < values.size() && inserted < places.size() &&
+                            places[inserted] <= static_cast<int>(merged.size());
+    if (insertHere || kept == items.size())
+      merged.push_back(values[inserted++]);
+    else
+      merged.push_back(std::move(items[kept++]));
+  }
+  items = std::move(merged);
+}
 
 template <typename T>
 void eraseIndices(std::vector<T>& items, const Selection& selection, ObjectKind kind) {
@@ -151,10 +192,24 @@ void eraseIndices(std::vector<T>& items, const Selection& selection, ObjectKind 
 
 }  // namespace
 
+void assign(Scene& scene, const Selection& selection, const Scene& objects) {
+  const Selection sorted = normalized(selection);
+  assignIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
+  assignIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
+  assignIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
+}
+
 void remove(Scene& scene, const Selection& selection) {
   eraseIndices(scene.balls, selection, ObjectKind::Ball);
   eraseIndices(scene.planes, selection, ObjectKind::Plane);
   eraseIndices(scene.cylinders, selection, ObjectKind::Cylinder);
+}
+
+void insert(Scene& scene, const Selection& selection, const Scene& objects) {
+  const Selection sorted = normalized(selection);
+  insertIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
+  insertIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
+  insertIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
 }
 
 }  // namespace carom::ui

@@ -42,7 +42,13 @@ QString objectLabel(const Scene& scene, const ObjectRef& ref);
 // `objects`' planes, cylinders and balls appended to `scene`, returning the new references.
 Scene extract(const Scene& scene, const Selection& selection);
 Selection append(Scene& scene, const Scene& objects);
+// Where extract() puts each selected object: the same kinds, numbered from 0 per kind.
+Selection extractedRefs(const Selection& selection);
+// The reverse of extract(): the selected objects take the values `objects` holds for them.
+void assign(Scene& scene, const Selection& selection, const Scene& objects);
 // Removes the selected objects.
 void remove(Scene& scene, const Selection& selection);
+// The reverse of remove(): `objects`, as extract() took them, go back to the selected places.
+void insert(Scene& scene, const Selection& selection, const Scene& objects);
 
 }  // namespace carom::ui

@@ -29,25 +29,51 @@ OutlineModel::OutlineModel(SceneDocument* document, QObject* parent)
   connect(document_, &SceneDocument::sceneChanged, this, &OutlineModel::sync);
 }
 
-void OutlineModel::sync() {
-  const Scene& scene = document_->scene();
+void OutlineModel::sync(const SceneChange& change) {
+  if (change.replaced) {
+    beginResetModel();
+    for (int g = 0; g < 3; ++g) counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
+    endResetModel();
+    return;
+  }
+  // Rows are removed and inserted where the objects were and are, in runs of neighbours, and
+  // only rows whose label may have changed are announced: edited objects, and those whose
+  // index moved ("Ball 7" becomes "Ball 6").
   for (int g = 0; g < 3; ++g) {
-    const int now = objectCount(scene, kindOfGroup(g));
-    const int before = counts_[g];
+    const ObjectKind kind = kindOfGroup(g);
     const QModelIndex group = index(g, 0);
-    if (now < before) {
-      beginRemoveRows(group, now, before - 1);
-      counts_[g] = now;
+    std::vector<int> removed, inserted;
+    for (const ObjectRef& ref : change.removed)
+      if (ref.kind == kind) removed.push_back(ref.index);
+    for (const ObjectRef& ref : change.inserted)
+      if (ref.kind == kind) inserted.push_back(ref.index);
+    for (std::size_t end = removed.size(); end > 0;) {
+      std::size_t begin = end - 1;
+      while (begin > 0 && removed[begin - 1] == removed[begin] - 1) --begin;
+      beginRemoveRows(group, removed[begin], removed[end - 1]);
+      counts_[g] -= int(end - begin);
       endRemoveRows();
-    } else if (now > before) {
-      beginInsertRows(group, before, now - 1);
-      counts_[g] = now;
-      endInsertRows();
+      end = begin;
     }
-    // Indices shift when objects are removed, and names and colours may have changed.
-    if (std::min(now, before) > 0)
-      emit dataChanged(index(0, 0, group), index(std::min(now, before) - 1, 0, group));
-    emit dataChanged(group, group);
+    for (std::size_t begin = 0; begin < inserted.size();) {
+      std::size_t end = begin + 1;
+      while (end < inserted.size() && inserted[end] == inserted[end - 1] + 1) ++end;
+      beginInsertRows(group, inserted[begin], inserted[end - 1]);
+      counts_[g] += int(end - begin);
+      endInsertRows();
+      begin = end;
+    }
+    if (!removed.empty() || !inserted.empty()) {
+      const int firstMoved = std::min(removed.empty() ? counts_[g] : removed.front(),
+                                      inserted.empty() ? counts_[g] : inserted.front());
+      if (firstMoved < counts_[g])
+        emit dataChanged(index(firstMoved, 0, group), index(counts_[g] - 1, 0, group));
+      emit dataChanged(group, group);  // its count
+    }
+  }
+  for (const ObjectRef& ref : change.edited) {
+    const QModelIndex row = indexOf(ref);
+    if (row.isValid()) emit dataChanged(row, row);
   }
 }
 
@@ -135,10 +161,9 @@ QVariant OutlineModel::data(const QModelIndex& index, int role) const {
 bool OutlineModel::setData(const QModelIndex& index, const QVariant& value, int role) {
   const std::optional<ObjectRef> ref = objectAt(index);
   if (!ref || role != Qt::EditRole) return false;
-  Scene edited = document_->scene();
-  objectInfo(edited, *ref).name = value.toString().trimmed().toStdString();
-  if (edited == document_->scene()) return false;
-  const QString error = document_->apply(edited, tr("Rename"));
+  Scene values = extract(document_->scene(), {*ref});
+  objectInfo(values, extractedRefs({*ref}).front()).name = value.toString().trimmed().toStdString();
+  const QString error = document_->editObjects({*ref}, values, tr("Rename"));
   if (!error.isEmpty()) emit refused(error);
   return error.isEmpty();
 }

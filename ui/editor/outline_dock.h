@@ -16,6 +16,7 @@ class QTreeView;
 namespace carom::ui {
 
 class SceneDocument;
+struct SceneChange;
 
 // Reads the document's scene directly: building it costs nothing however many balls there are.
 class OutlineModel : public QAbstractItemModel {
@@ -44,7 +45,7 @@ class OutlineModel : public QAbstractItemModel {
 
  private:
   // Brings the rows in line with the document's scene.
-  void sync();
+  void sync(const SceneChange& change);
 
   SceneDocument* document_;
   // The rows each group has in the views' eyes, updated with insert and remove notices.

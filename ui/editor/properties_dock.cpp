@@ -309,9 +309,7 @@ QComboBox* PropertiesDock::addChoice(const char* name, const char* label, const 
   for (std::string_view key : keys) box->addItem(QString::fromUtf8(key));
   const int row = addRow(kWorld, label, change, box);
   connect(box, &QComboBox::currentIndexChanged, this, [this, row, choose](int index) {
-    Scene edited = document_->scene();
-    choose(edited.world, index);
-    commit(edited, this->change(row));
+    commit(row, [&](Scene& values, const ObjectRef&) { choose(values.world, index); });
   });
   return box;
 }
@@ -320,11 +318,6 @@ int PropertiesDock::selectedKinds() const {
   int kinds = 0;
   for (const ObjectRef& ref : document_->selection()) kinds |= flagOf(ref.kind);
   return kinds == 0 ? int(kWorld) : kinds;
-}
-
-Selection PropertiesDock::targets() const {
-  const Selection& selection = document_->selection();
-  return selection.empty() ? Selection{ObjectRef{}} : selection;
 }
 
 void PropertiesDock::refresh() {
@@ -351,7 +344,8 @@ void PropertiesDock::refresh() {
     for (QWidget* widget : rows_[r].widgets) widget->setVisible(shown[r]);
   }
 
-  const Selection refs = targets();
+  // With nothing selected, the world's rows show: their accessors ignore the reference.
+  const Selection refs = selection.empty() ? Selection{ObjectRef{}} : selection;
   const QString mixed = tr("mixed");
   for (const NumberEditor& editor : numbers_) {
     if (!shown[editor.row]) continue;
@@ -398,12 +392,24 @@ void PropertiesDock::refresh() {
   }
 }
 
-bool PropertiesDock::commit(const Scene& edited, const QString& change) {
-  if (edited == document_->scene()) {
-    message_->clear();
-    return true;
+bool PropertiesDock::commit(int row, const std::function<void(Scene&, const ObjectRef&)>& set) {
+  // A field left over from another selection (a colour picked after the selection changed):
+  // its row no longer applies.
+  const int kinds = selectedKinds();
+  if ((rows_[row].kinds & kinds) != kinds) return false;
+  // Only the selected objects are copied and changed, never the whole scene.
+  const Selection& selection = document_->selection();
+  QString error;
+  if (selection.empty()) {
+    Scene values;
+    values.world = document_->scene().world;
+    set(values, ObjectRef{});
+    error = document_->editWorld(values.world, change(row));
+  } else {
+    Scene values = extract(document_->scene(), selection);
+    for (const ObjectRef& ref : extractedRefs(selection)) set(values, ref);
+    error = document_->editObjects(selection, values, change(row));
   }
-  const QString error = document_->apply(edited, change);
   if (!error.isEmpty()) {
     refuse(error);
     return false;
@@ -430,14 +436,12 @@ void PropertiesDock::numberEdited(const NumberEditor& editor) {
     return;
   }
   const double value = *parsed.value;
-  Scene edited = document_->scene();
-  for (const ObjectRef& ref : targets()) {
+  commit(editor.row, [&](Scene& values, const ObjectRef& ref) {
     double* field =
-        editor.number ? const_cast<double*>(editor.number(edited, ref))
-                      : &const_cast<Vec3*>(editor.vector(edited, ref))->coeffRef(editor.component);
+        editor.number ? const_cast<double*>(editor.number(values, ref))
+                      : &const_cast<Vec3*>(editor.vector(values, ref))->coeffRef(editor.component);
     *field = value;
-  }
-  commit(edited, change(editor.row));
+  });
 }
 
 void PropertiesDock::textEdited(const TextEditor& editor) {
@@ -446,11 +450,10 @@ void PropertiesDock::textEdited(const TextEditor& editor) {
     return;
   }
   editor.edit->setModified(false);
-  Scene edited = document_->scene();
   const std::string value = editor.edit->text().trimmed().toStdString();
-  for (const ObjectRef& ref : targets())
-    *const_cast<std::string*>(editor.text(edited, ref)) = value;
-  commit(edited, change(editor.row));
+  commit(editor.row, [&](Scene& values, const ObjectRef& ref) {
+    *const_cast<std::string*>(editor.text(values, ref)) = value;
+  });
 }
 
 void PropertiesDock::restitutionEdited() {
@@ -468,9 +471,8 @@ void PropertiesDock::restitutionEdited() {
     }
     value = parsed.value;
   }
-  Scene edited = document_->scene();
-  for (const ObjectRef& ref : targets()) objectInfo(edited, ref).restitution = value;
-  commit(edited, change(restitutionRow_));
+  commit(restitutionRow_,
+         [&](Scene& values, const ObjectRef& ref) { objectInfo(values, ref).restitution = value; });
 }
 
 void PropertiesDock::pickColor() {
@@ -480,10 +482,9 @@ void PropertiesDock::pickColor() {
     dialog = new QColorDialog(this);
     dialog->setWindowTitle(tr("Object Colour"));
     connect(dialog, &QColorDialog::colorSelected, this, [this](const QColor& color) {
-      Scene edited = document_->scene();
-      for (const ObjectRef& ref : document_->selection())
-        objectInfo(edited, ref).color = color.name().toStdString();
-      commit(edited, change(colorRow_));
+      commit(colorRow_, [&](Scene& values, const ObjectRef& ref) {
+        objectInfo(values, ref).color = color.name().toStdString();
+      });
     });
   }
   const QColor current(color_->text());

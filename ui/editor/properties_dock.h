@@ -8,7 +8,9 @@
 #include "ui/editor/object_ref.h"
 
 #include <QDockWidget>
+
 #include <QString>
+#include <functional>
 
 #include <string_view>
 #include <vector>
@@ -95,12 +97,12 @@ class PropertiesDock : public QDockWidget {
   // Document to fields.
   void refresh();
   int selectedKinds() const;
-  // The objects an edit applies to: the selection, or, for the world, one reference the world
-  // rows' accessors ignore.
-  Selection targets() const;
-  // Fields to document, as one command; false (and a message) when refused. An edit that
-  // changes nothing is no command, and takes the message away as a successful one does.
-  bool commit(const Scene& edited, const QString& change);
+  // Fields to document, as one command; false (and a message) when refused. `row`'s field was
+  // edited, and `set` changes one
+  // selected object of a scene holding copies of the selected objects only (the world rows'
+  // accessors ignore the reference and change the world). An edit that changes nothing is no
+  // command, and takes the message away as a successful one does.
+  bool commit(int row, const std::function<void(Scene&, const ObjectRef&)>& set);
   void refuse(const QString& message);
   void numberEdited(const NumberEditor& editor);
   void textEdited(const TextEditor& editor);

@@ -1,40 +1,42 @@
 #include "ui/editor/running_state.h"
 
-#include <optional>
+#include <algorithm>
 
 namespace carom::ui {
 namespace {
 
-// For each ball of `edited`, the index of the same ball in `shown` when the edit left it alone.
-std::vector<std::optional<std::size_t>> matchUnchangedBalls(const std::vector<Ball>& shown,
-                                                            const std::vector<Ball>& edited) {
-  std::vector<std::optional<std::size_t>> match(edited.size());
-  if (edited.size() >= shown.size()) {
-    for (std::size_t i = 0; i < shown.size(); ++i)
-      if (shown[i] == edited[i]) match[i] = i;
-    return match;
-  }
-  std::size_t j = 0;
-  for (std::size_t i = 0; i < edited.size(); ++i) {
-    while (j < shown.size() && !(shown[j] == edited[i])) ++j;  // removed
-    if (j == shown.size()) break;
-    match[i] = j++;
-  }
-  return match;
+std::vector<int> ballIndices(const Selection& refs) {
+  std::vector<int> indices;
+  for (const ObjectRef& ref : refs)
+    if (ref.kind == ObjectKind::Ball) indices.push_back(ref.index);
+  std::sort(indices.begin(), indices.end());
+  return indices;
+}
+
+bool contains(const std::vector<int>& sorted, int index) {
+  return std::binary_search(sorted.begin(), sorted.end(), index);
 }
 
 }  // namespace
 
-Scene withRunningBalls(const Scene& shown, const Scene& edited, const std::vector<Vec3>& positions,
-                       const std::vector<Vec3>& velocities) {
+Scene withRunningBalls(const Scene& edited, const SceneChange& change,
+                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities) {
   Scene start = edited;
-  const std::vector<std::optional<std::size_t>> running =
-      matchUnchangedBalls(shown.balls, edited.balls);
-  for (std::size_t i = 0; i < start.balls.size(); ++i) {
-    if (!running[i] || *running[i] >= positions.size() || *running[i] >= velocities.size())
+  if (change.replaced) return start;
+  const std::vector<int> removed = ballIndices(change.removed);
+  const std::vector<int> inserted = ballIndices(change.inserted);
+  const std::vector<int> changed = ballIndices(change.edited);
+  // One pass in step: `before` walks the balls of the scene before the change, skipping those
+  // removed; `after` walks the edited scene, skipping those inserted.
+  int before = 0;
+  for (int after = 0; after < static_cast<int>(start.balls.size()); ++after) {
+    if (contains(inserted, after)) continue;
+    while (contains(removed, before)) ++before;
+    const std::size_t running = static_cast<std::size_t>(before++);
+    if (contains(changed, after) || running >= positions.size() || running >= velocities.size())
       continue;
-    start.balls[i].position = positions[*running[i]];
-    start.balls[i].velocity = velocities[*running[i]];
+    start.balls[after].position = positions[running];
+    start.balls[after].velocity = velocities[running];
   }
   return start;
 }

@@ -3,16 +3,16 @@
 // taken them.
 
 #include "sim/scene.h"
+#include "ui/editor/scene_change.h"
 
 #include <vector>
 
 namespace carom::ui {
 
-// `edited`, with each ball the edit left alone (found in `shown`, the scene the run started
-// from) at the run's `positions` and `velocities`, given in `shown`'s order. Every edit keeps
-// the order of the balls it does not touch and changes balls in place, appends them or removes
-// some, so one pass in step finds them.
-Scene withRunningBalls(const Scene& shown, const Scene& edited, const std::vector<Vec3>& positions,
-                       const std::vector<Vec3>& velocities);
+// `edited` (the scene after `change`), with each ball the change left alone at the run's
+// `positions` and `velocities`, given in the order of the scene before the change. The balls
+// the change edited or inserted keep the edit's values; a replaced scene is returned as it is.
+Scene withRunningBalls(const Scene& edited, const SceneChange& change,
+                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities);
 
 }  // namespace carom::ui

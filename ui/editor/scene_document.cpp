@@ -5,32 +5,74 @@
 #include <QFileInfo>
 #include <QUndoCommand>
 
+#include <optional>
 #include <utility>
 
 namespace carom::ui {
 
-// Every edit is the scene before and after. Shared pointers make a long history cost one scene
-// per command, since each command's "after" is the next one's "before".
+namespace {
+
+SceneObjectIndices indicesOf(const Selection& refs) {
+  SceneObjectIndices indices;
+  for (const ObjectRef& ref : refs) {
+    auto& list = ref.kind == ObjectKind::Ball    ? indices.balls
+                 : ref.kind == ObjectKind::Plane ? indices.planes
+                                                 : indices.cylinders;
+    list.push_back(static_cast<std::size_t>(ref.index));
+  }
+  return indices;
+}
+
+}  // namespace
+
+// Every edit keeps only what it changes, as Tiled's commands do: the objects removed, the
+// objects inserted, the values of the objects edited in place before and after, and the world
+// before and after. So a history costs what its edits touched, whatever the size of the scene.
 class SceneEditCommand : public QUndoCommand {
  public:
-  SceneEditCommand(SceneDocument* document, std::shared_ptr<const Scene> before,
-                   Selection selectionBefore, std::shared_ptr<const Scene> after,
-                   Selection selectionAfter, const QString& text, int gesture)
+  SceneEditCommand(SceneDocument* document, const QString& text, Selection selectionAfter,
+                   int gesture = 0)
       : QUndoCommand(text),
         document_(document),
-        before_(std::move(before)),
-        after_(std::move(after)),
-        selectionBefore_(std::move(selectionBefore)),
+        selectionBefore_(document->selection_),
         selectionAfter_(std::move(selectionAfter)),
         gesture_(gesture) {}
 
-  void undo() override { document_->setState(before_, selectionBefore_); }
-  void redo() override { document_->setState(after_, selectionAfter_); }
+  Selection removed;
+  Scene removedObjects;
+  Selection inserted;
+  Scene insertedObjects;
+  Selection edited;
+  Scene editedBefore;
+  Scene editedAfter;
+  std::optional<World> worldBefore;
+  std::optional<World> worldAfter;
+
+  void redo() override {
+    Scene& scene = document_->scene_;
+    remove(scene, removed);
+    insert(scene, inserted, insertedObjects);
+    assign(scene, edited, editedAfter);
+    if (worldAfter) scene.world = *worldAfter;
+    document_->changed({worldAfter.has_value(), false, removed, inserted, edited}, selectionAfter_);
+  }
+  void undo() override {
+    Scene& scene = document_->scene_;
+    assign(scene, edited, editedBefore);
+    remove(scene, inserted);
+    insert(scene, removed, removedObjects);
+    if (worldBefore) scene.world = *worldBefore;
+    document_->changed({worldBefore.has_value(), false, inserted, removed, edited},
+                       selectionBefore_);
+  }
   int id() const override { return gesture_ == 0 ? -1 : kGestureCommandId; }
   bool mergeWith(const QUndoCommand* other) override {
     const auto* next = static_cast<const SceneEditCommand*>(other);
-    if (next->gesture_ != gesture_) return false;
-    after_ = next->after_;
+    if (next->gesture_ != gesture_ || next->edited != edited || !removed.empty() ||
+        !inserted.empty() || !next->removed.empty() || !next->inserted.empty() || worldAfter ||
+        next->worldAfter)
+      return false;
+    editedAfter = next->editedAfter;
     selectionAfter_ = next->selectionAfter_;
     return true;
   }
@@ -38,15 +80,12 @@ class SceneEditCommand : public QUndoCommand {
  private:
   static constexpr int kGestureCommandId = 1;
   SceneDocument* document_;
-  std::shared_ptr<const Scene> before_;
-  std::shared_ptr<const Scene> after_;
   Selection selectionBefore_;
   Selection selectionAfter_;
   int gesture_;
 };
 
-SceneDocument::SceneDocument(QObject* parent)
-    : QObject(parent), scene_(std::make_shared<const Scene>()) {
+SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
   connect(&undoStack_, &QUndoStack::cleanChanged, this,
           [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -78,7 +117,10 @@ void SceneDocument::reset(const Scene& scene, const QString& fileName, const QSt
   undoStack_.setClean();
   fileName_ = fileName;
   title_ = title;
-  setState(std::make_shared<const Scene>(scene), {});
+  scene_ = scene;
+  SceneChange change;
+  change.world = change.replaced = true;
+  changed(change, {});
   emit displayNameChanged();
   emit modifiedChanged(false);
 }
@@ -90,13 +132,63 @@ void SceneDocument::markSaved(const QString& fileName) {
   if (renamed) emit displayNameChanged();
 }
 
-QString SceneDocument::apply(const Scene& edited, const QString& text, const Selection& selection,
-                             int gesture) {
-  const std::vector<ValidationError> errors = validateScene(edited, 1);
+QString SceneDocument::editObjects(const Selection& refs, const Scene& values, const QString& text,
+                                   int gesture) {
+  Selection sorted = normalized(refs);
+  std::erase_if(sorted, [this](const ObjectRef& ref) { return !exists(scene_, ref); });
+  Scene before = extract(scene_, sorted);
+  const Selection local = extractedRefs(sorted);
+  if (extract(values, local) == before) return {};  // nothing to do
+  // Tried in place, then put back: the command makes the change.
+  assign(scene_, sorted, values);
+  const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(sorted), 1);
+  assign(scene_, sorted, before);
   if (!errors.empty()) return QString::fromStdString(errors.front().text());
-  undoStack_.push(new SceneEditCommand(this, scene_, selection_,
-                                       std::make_shared<const Scene>(edited), normalized(selection),
-                                       text, gesture));
+  auto* command = new SceneEditCommand(this, text, selection_, gesture);
+  command->edited = sorted;
+  command->editedBefore = std::move(before);
+  command->editedAfter = extract(values, local);
+  undoStack_.push(command);
+  return {};
+}
+
+QString SceneDocument::addObjects(const Scene& objects, const QString& text) {
+  const std::size_t sizes[3] = {scene_.balls.size(), scene_.planes.size(), scene_.cylinders.size()};
+  const Selection added = append(scene_, objects);
+  const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(added), 1);
+  scene_.balls.resize(sizes[0]);
+  scene_.planes.resize(sizes[1]);
+  scene_.cylinders.resize(sizes[2]);
+  if (!errors.empty()) return QString::fromStdString(errors.front().text());
+  if (added.empty()) return {};
+  auto* command = new SceneEditCommand(this, text, added);
+  command->inserted = added;
+  command->insertedObjects = objects;
+  command->insertedObjects.world = {};
+  command->insertedObjects.extra.clear();
+  undoStack_.push(command);
+  return {};
+}
+
+QString SceneDocument::removeObjects(const Selection& refs, const QString& text) {
+  Selection sorted = normalized(refs);
+  std::erase_if(sorted, [this](const ObjectRef& ref) { return !exists(scene_, ref); });
+  if (sorted.empty()) return {};
+  auto* command = new SceneEditCommand(this, text, {});
+  command->removed = sorted;
+  command->removedObjects = extract(scene_, sorted);
+  undoStack_.push(command);
+  return {};
+}
+
+QString SceneDocument::editWorld(const World& world, const QString& text) {
+  if (world == scene_.world) return {};
+  const std::vector<ValidationError> errors = validateWorld(world, 1);
+  if (!errors.empty()) return QString::fromStdString(errors.front().text());
+  auto* command = new SceneEditCommand(this, text, selection_);
+  command->worldBefore = scene_.world;
+  command->worldAfter = world;
+  undoStack_.push(command);
   return {};
 }
 
@@ -107,18 +199,17 @@ void SceneDocument::setSelection(Selection selection) {
 
 bool SceneDocument::selectSilently(Selection selection) {
   selection = normalized(std::move(selection));
-  std::erase_if(selection, [this](const ObjectRef& ref) { return !exists(*scene_, ref); });
+  std::erase_if(selection, [this](const ObjectRef& ref) { return !exists(scene_, ref); });
   if (selection == selection_) return false;
   selection_ = std::move(selection);
   return true;
 }
 
-void SceneDocument::setState(std::shared_ptr<const Scene> scene, const Selection& selection) {
-  scene_ = std::move(scene);
+void SceneDocument::changed(const SceneChange& change, const Selection& selection) {
   // The selection first: observers of sceneChanged may read it, and old references may no
   // longer exist.
   const bool selectionChanged = selectSilently(selection);
-  emit sceneChanged();
+  emit sceneChanged(change);
   if (selectionChanged) emit this->selectionChanged();
 }
 

@@ -4,12 +4,11 @@
 
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
+#include "ui/editor/scene_change.h"
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
-
-#include <memory>
 
 namespace carom::ui {
 
@@ -18,8 +17,7 @@ class SceneDocument : public QObject {
  public:
   explicit SceneDocument(QObject* parent = nullptr);
 
-  const Scene& scene() const { return *scene_; }
-  std::shared_ptr<const Scene> sharedScene() const { return scene_; }
+  const Scene& scene() const { return scene_; }
   QUndoStack* undoStack() { return &undoStack_; }
 
   // The file the scene was read from or last saved to; empty for a new scene.
@@ -41,16 +39,21 @@ class SceneDocument : public QObject {
   // A scene recovered after a crash: unsaved, with no history to undo back to the saved file.
   void markUnsaved() { undoStack_.resetClean(); }
 
-  // One user action. `edited` is checked with the scene validation every loader uses; when it
-  // fails, nothing changes and the first problem is returned ("balls[2].radius: must be
-  // positive (got -1)"). Otherwise it becomes one command named `text`, selecting `selection`,
-  // and an empty string is returned. Successive edits with the same non-zero `gesture` (one
-  // mouse drag) merge into one command.
-  QString apply(const Scene& edited, const QString& text, const Selection& selection,
-                int gesture = 0);
-  QString apply(const Scene& edited, const QString& text) {
-    return apply(edited, text, selection_);
-  }
+  // The edits. Each is one user action, checked with the scene validation every loader uses
+  // (for the objects it touches only, so that an edit costs the same in any scene). When that
+  // fails nothing changes and the first problem is returned ("balls[2].radius: must be positive
+  // (got -1)"); otherwise it becomes one command named `text` and an empty string is returned.
+  //
+  // The objects `refs` names take the values `values` holds for them, in the order extract()
+  // gives. Successive edits of the same objects with the same non-zero `gesture` (one mouse
+  // drag) merge into one command.
+  QString editObjects(const Selection& refs, const Scene& values, const QString& text,
+                      int gesture = 0);
+  // Appends the planes, cylinders and balls of `objects` and selects them.
+  QString addObjects(const Scene& objects, const QString& text);
+  // Removes the objects `refs` names and clears the selection.
+  QString removeObjects(const Selection& refs, const QString& text);
+  QString editWorld(const World& world, const QString& text);
   // A number for a new gesture, never 0.
   int newGesture() { return ++lastGesture_; }
 
@@ -60,7 +63,7 @@ class SceneDocument : public QObject {
 
  signals:
   // After every change of the scene: an edit, undo, redo or reset.
-  void sceneChanged();
+  void sceneChanged(const carom::ui::SceneChange& change);
   void selectionChanged();
   // The file name or the title changed, and with them displayName().
   void displayNameChanged();
@@ -69,11 +72,11 @@ class SceneDocument : public QObject {
  private:
   friend class SceneEditCommand;
   // Called by commands: no validation, no history.
-  void setState(std::shared_ptr<const Scene> scene, const Selection& selection);
+  void changed(const SceneChange& change, const Selection& selection);
   // Whether the selection changed; emits nothing.
   bool selectSilently(Selection selection);
 
-  std::shared_ptr<const Scene> scene_;
+  Scene scene_;
   Selection selection_;
   QString fileName_;
   QString title_;

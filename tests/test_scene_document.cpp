@@ -1,0 +1,212 @@
+// The document's edits: each says what it changed (kind and indices) so that observers update
+// only that; undo and redo restore every field; a refused edit changes nothing; and the
+// outline announces only the rows an edit touched.
+
+#include "sim/validation.h"
+#include "ui/editor/outline_dock.h"
+#include "ui/editor/scene_document.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <string>
+#include <vector>
+
+using carom::Ball;
+using carom::Scene;
+using carom::Vec3;
+using carom::ui::ObjectKind;
+using carom::ui::ObjectRef;
+using carom::ui::SceneChange;
+using carom::ui::SceneDocument;
+using carom::ui::Selection;
+
+namespace {
+
+// A floor, a post and ten named balls in a row.
+Scene rowOfBalls() {
+  Scene scene = SceneDocument::newScene();
+  carom::Cylinder post;
+  post.point = Vec3(0, 0, -5);
+  post.radius = 0.5;
+  post.name = "post";
+  scene.cylinders.push_back(post);
+  for (int i = 0; i < 10; ++i) {
+    Ball ball;
+    ball.position = Vec3(3.0 * i, 1, 0);
+    ball.name = "ball " + std::to_string(i);
+    ball.color = "#0000" + std::to_string(10 + i);
+    scene.balls.push_back(ball);
+  }
+  return scene;
+}
+
+// Records every change the document reports.
+struct ChangeLog {
+  explicit ChangeLog(SceneDocument& document) {
+    QObject::connect(&document, &SceneDocument::sceneChanged, &receiver,
+                     [this](const SceneChange& change) { changes.push_back(change); });
+  }
+  QObject receiver;  // disconnects when the log goes
+  std::vector<SceneChange> changes;
+};
+
+}  // namespace
+
+class TestSceneDocument : public QObject {
+  Q_OBJECT
+ private slots:
+  void init() { document_.reset(rowOfBalls(), {}); }
+
+  void editReportsTheObjectsItChanged() {
+    ChangeLog log(document_);
+    const Selection refs{{ObjectKind::Ball, 3}, {ObjectKind::Ball, 7}};
+    Scene values = carom::ui::extract(document_.scene(), refs);
+    values.balls[0].radius = 0.75;
+    values.balls[1].mass = 5.0;
+    QCOMPARE(document_.editObjects(refs, values, "edit"), QString());
+    QCOMPARE(document_.scene().balls[3].radius, 0.75);
+    QCOMPARE(document_.scene().balls[7].mass, 5.0);
+    QCOMPARE(int(log.changes.size()), 1);
+    QCOMPARE(log.changes[0].edited, refs);
+    QVERIFY(!log.changes[0].world && !log.changes[0].countsChanged());
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == rowOfBalls());
+    QCOMPARE(log.changes.back().edited, refs);
+    document_.undoStack()->redo();
+    QCOMPARE(document_.scene().balls[3].radius, 0.75);
+    // The same values again: no command, no change.
+    QCOMPARE(document_.editObjects(refs, values, "again"), QString());
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QCOMPARE(int(log.changes.size()), 3);
+  }
+
+  void refusedEditChangesNothing() {
+    ChangeLog log(document_);
+    const Selection refs{{ObjectKind::Ball, 2}};
+    Scene values = carom::ui::extract(document_.scene(), refs);
+    values.balls[0].position = document_.scene().balls[3].position;  // onto ball 3
+    Scene whole = document_.scene();
+    whole.balls[2] = values.balls[0];
+    const std::string expected = carom::validateScene(whole, 1).front().text();
+    QCOMPARE(document_.editObjects(refs, values, "overlap"), QString::fromStdString(expected));
+    QVERIFY(document_.scene() == rowOfBalls());
+    QCOMPARE(document_.undoStack()->count(), 0);
+    QVERIFY(log.changes.empty());
+    // A world edit is checked too.
+    carom::World world = document_.scene().world;
+    world.timeStep = -1;
+    QVERIFY(document_.editWorld(world, "bad step").startsWith("world.timeStep"));
+    QVERIFY(log.changes.empty());
+    // And added objects.
+    Scene added;
+    added.balls.push_back(document_.scene().balls[0]);
+    QVERIFY(document_.addObjects(added, "onto ball 0").contains("overlaps balls[0]"));
+    QVERIFY(document_.scene() == rowOfBalls());
+  }
+
+  void removeAndUndoRestoreEveryField() {
+    ChangeLog log(document_);
+    const Selection doomed{{ObjectKind::Ball, 0},
+                           {ObjectKind::Ball, 4},
+                           {ObjectKind::Ball, 5},
+                           {ObjectKind::Cylinder, 0}};
+    document_.setSelection(doomed);
+    QCOMPARE(document_.removeObjects(doomed, "Delete"), QString());
+    QCOMPARE(int(document_.scene().balls.size()), 7);
+    QVERIFY(document_.scene().cylinders.empty());
+    QCOMPARE(document_.scene().balls[3].name, std::string("ball 6"));
+    QVERIFY(document_.selection().empty());
+    QCOMPARE(log.changes.back().removed, doomed);
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == rowOfBalls());
+    QCOMPARE(log.changes.back().inserted, doomed);
+    QCOMPARE(document_.selection(), doomed);
+  }
+
+  void addSelectsAndReportsTheNewObjects() {
+    ChangeLog log(document_);
+    Scene added;
+    Ball ball;
+    ball.position = Vec3(0, 5, 0);
+    added.balls.push_back(ball);
+    carom::Plane wall;
+    wall.point = Vec3(-5, 0, 0);
+    wall.normal = Vec3(1, 0, 0);
+    added.planes.push_back(wall);
+    QCOMPARE(document_.addObjects(added, "Paste"), QString());
+    const Selection expected{{ObjectKind::Ball, 10}, {ObjectKind::Plane, 1}};
+    QCOMPARE(document_.selection(), expected);
+    QCOMPARE(log.changes.back().inserted, expected);
+    QVERIFY(document_.scene().balls[10].position == ball.position);
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == rowOfBalls());
+  }
+
+  void worldEditReportsTheWorldOnly() {
+    ChangeLog log(document_);
+    carom::World world = document_.scene().world;
+    world.gravity = Vec3(0, -1.62, 0);
+    QCOMPARE(document_.editWorld(world, "Moon"), QString());
+    QCOMPARE(int(log.changes.size()), 1);
+    QVERIFY(log.changes[0].world && !log.changes[0].objectsChanged());
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene().world == rowOfBalls().world);
+  }
+
+  void aDragIsOneCommand() {
+    const int gesture = document_.newGesture();
+    const Selection refs{{ObjectKind::Ball, 9}};
+    for (int step = 1; step <= 5; ++step) {
+      Scene values = carom::ui::extract(rowOfBalls(), refs);
+      values.balls[0].position.y() += step;
+      QCOMPARE(document_.editObjects(refs, values, "Move", gesture), QString());
+    }
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QCOMPARE(document_.scene().balls[9].position.y(), 6.0);
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == rowOfBalls());
+  }
+
+  void outlineAnnouncesOnlyTheRowsTouched() {
+    carom::ui::OutlineModel model(&document_);
+    const QModelIndex balls = model.groupIndex(ObjectKind::Ball);
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
+    // A rename: that row alone.
+    const Selection refs{{ObjectKind::Ball, 6}};
+    Scene values = carom::ui::extract(document_.scene(), refs);
+    values.balls[0].name = "renamed";
+    QCOMPARE(document_.editObjects(refs, values, "Rename"), QString());
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed[0][0].value<QModelIndex>(), model.index(6, 0, balls));
+    QCOMPARE(changed[0][1].value<QModelIndex>(), model.index(6, 0, balls));
+    // A delete of balls 2 and 3: those rows go, and the rows after them (renumbered) and the
+    // group's count are announced; the rows before are not.
+    changed.clear();
+    QCOMPARE(document_.removeObjects({{ObjectKind::Ball, 2}, {ObjectKind::Ball, 3}}, "Delete"),
+             QString());
+    QCOMPARE(removed.count(), 1);
+    QCOMPARE(removed[0][1].toInt(), 2);
+    QCOMPARE(removed[0][2].toInt(), 3);
+    QCOMPARE(model.rowCount(balls), 8);
+    for (const QList<QVariant>& signal : changed) {
+      const QModelIndex first = signal[0].value<QModelIndex>();
+      QVERIFY(first == balls || (first.parent() == balls && first.row() >= 2));
+    }
+    // Undo puts them back in place.
+    document_.undoStack()->undo();
+    QCOMPARE(inserted.count(), 1);
+    QCOMPARE(inserted[0][1].toInt(), 2);
+    QCOMPARE(model.rowCount(balls), 10);
+    QCOMPARE(model.data(model.index(3, 0, balls), Qt::DisplayRole).toString(), QString("ball 3"));
+  }
+
+ private:
+  SceneDocument document_;
+};
+
+QTEST_GUILESS_MAIN(TestSceneDocument)
+#include "test_scene_document.moc"
