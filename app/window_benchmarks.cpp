@@ -5,7 +5,7 @@
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
-#include "ui/sound/sound_board.h"
+#include "ui/sound_thread.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>

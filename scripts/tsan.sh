@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Builds the tests of Carom's threaded parts with ThreadSanitizer in ./build-tsan and runs them;
 # any report fails the run. They are the physics worker's hand-over (the snapshot exchange and
-# the call queue under contention in test_handover; running, stepping, live settings, the
-# stalled worker and the speed vs accuracy study's thread in test_main_window), editing while
-# the simulation runs (test_editor) and sound (test_sound); the rest of the suite runs on one
-# thread. Debian's Qt, Mesa and PulseAudio are not built with TSan: tests/tsan.supp lists the
+# the call queue under contention in test_handover; running, stepping, live settings, the busy
+# physics thread and the speed vs accuracy study's thread pool in test_main_window), editing
+# while the simulation runs (test_editor) and the sound thread (test_sound); the rest of the
+# suite runs on one thread. Debian's Qt, Mesa and PulseAudio are not built with TSan: tests/tsan.supp lists the
 # false reports that follow from that, each with its reason, and none of Carom's own code.
 #
 # That the suppressions hide no race of Carom's was checked by putting two in by hand (a call

@@ -62,7 +62,7 @@ class EditorFixture : public QObject {
     QApplication::setActiveWindow(window_.get());
     QTRY_VERIFY(window_->framesRendered() > 0);
   }
-  ui::SceneDocument& document() { return *window_->document(); }
+  editor::SceneDocument& document() { return *window_->document(); }
   render::SceneView& view() { return *qobject_cast<render::SceneView*>(window_->view()); }
   QPoint at(const Vec3& world) { return view().project(world).toPoint(); }
   void click(const Vec3& world, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {

@@ -196,6 +196,7 @@ class TestCli : public QObject {
     QVERIFY2(run.out.contains("carom-cli run"), run.out.constData());
     QVERIFY2(run.out.contains("carom-cli validate"), run.out.constData());
     QVERIFY2(run.out.contains("carom-cli bench"), run.out.constData());
+    QVERIFY2(run.out.contains("carom-cli study"), run.out.constData());
     QVERIFY2(run.err.isEmpty(), run.err.constData());
   }
 
@@ -481,6 +482,33 @@ class TestCli : public QObject {
     QCOMPARE(rows.size(), 6);
   }
 
+  // --- study ---
+
+  // The figures are times, unchecked; what is checked is that every run is reported once and
+  // the summary names the threads asked for.
+  void studyMagicRoom_data() {
+    QTest::addColumn<int>("threads");
+    QTest::newRow("1 thread") << 1;
+    QTest::newRow("2 threads") << 2;
+  }
+  void studyMagicRoom() {
+    QFETCH(int, threads);
+    const CliRun run =
+        runCli({"study", magicRoom(), "--duration", "0.5", "--threads", QString::number(threads)});
+    VERIFY_EXIT(run, 0);
+    QList<QByteArray> lines = nonEmptyLines(run.out);
+    QVERIFY2(lines.size() == 1 + 31 + 5, qPrintable(run.describe()));
+    QVERIFY2(lines.takeFirst().startsWith("method"), qPrintable(run.describe()));
+    QVERIFY2(lines[0].startsWith("exact"), qPrintable(run.describe()));
+    QSet<QByteArray> runs;
+    for (int i = 0; i < 31; ++i) runs << lines[i].simplified().split(' ').mid(0, 3).join(' ');
+    QCOMPARE(runs.size(), 31);
+    QCOMPARE(lines[31].simplified(), "threads " + QByteArray::number(threads));
+    for (const char* figure : {"wall s", "reference s", "runs s", "speed-up"})
+      QVERIFY2(run.out.contains(figure), qPrintable(run.describe()));
+    QVERIFY2(run.err.startsWith("study:"), qPrintable(run.describe()));
+  }
+
   // --- bad input: exit code 2, nothing on stdout, a short message naming the problem ---
 
   void badArguments_data() {
@@ -497,6 +525,18 @@ class TestCli : public QObject {
         << QStringList{"run", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("unknown bench option")
         << QStringList{"bench", "--slow"} << QStringList{"--slow"};
+    QTest::newRow("unknown study option")
+        << QStringList{"study", scene, "--fast"} << QStringList{"unknown option", "--fast"};
+    QTest::newRow("study without a scene")
+        << QStringList{"study", "--threads", "2"} << QStringList{"no scene file"};
+    QTest::newRow("study missing file")
+        << QStringList{"study", missing} << QStringList{missing, "cannot open"};
+    QTest::newRow("--threads 0") << QStringList{"study", scene, "--threads", "0"}
+                                 << QStringList{"--threads", "'0'"};
+    QTest::newRow("--threads 2.5")
+        << QStringList{"study", scene, "--threads", "2.5"} << QStringList{"--threads", "2.5"};
+    QTest::newRow("study --duration nan")
+        << QStringList{"study", scene, "--duration", "nan"} << QStringList{"--duration", "nan"};
     QTest::newRow("run without a scene")
         << QStringList{"run", "--json"} << QStringList{"no scene file"};
     QTest::newRow("validate without a scene")

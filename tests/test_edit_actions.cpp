@@ -21,10 +21,10 @@
 
 using carom::Scene;
 using carom::Vec3;
+using carom::editor::ObjectKind;
+using carom::editor::SceneDocument;
+using carom::editor::Selection;
 using carom::ui::EditActions;
-using carom::ui::ObjectKind;
-using carom::ui::SceneDocument;
-using carom::ui::Selection;
 
 namespace {
 
@@ -143,7 +143,7 @@ void TestEditActions::selectAllSelectsEverything() {
   actions_->selectAll();
   QCOMPARE(document_->selection().size(), std::size_t{3});
   QVERIFY(std::count(document_->selection().begin(), document_->selection().end(),
-                     carom::ui::ObjectRef{ObjectKind::Plane, 0}) == 1);
+                     carom::editor::ObjectRef{ObjectKind::Plane, 0}) == 1);
   actions_->deleteSelection();
   QVERIFY(document_->scene().balls.empty() && document_->scene().planes.empty());
   QCOMPARE(document_->undoStack()->count(), 1);

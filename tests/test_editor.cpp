@@ -29,11 +29,11 @@
 #include <memory>
 
 using carom::Vec3;
-using carom::ui::EditorTools;
+using carom::editor::EditorTools;
+using carom::editor::ObjectKind;
+using carom::editor::ObjectRef;
+using carom::editor::SceneDocument;
 using carom::ui::MainWindow;
-using carom::ui::ObjectKind;
-using carom::ui::ObjectRef;
-using carom::ui::SceneDocument;
 
 using carom::testing::DialogAnswerer;
 using carom::testing::floorScene;
@@ -91,7 +91,7 @@ void TestEditor::addsEachKindByClicking() {
                           .arg(added.position.x())
                           .arg(added.position.y())
                           .arg(added.position.z())));
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 1}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 1}}));
 
   chooseTool("toolAddCylinder");
   click(Vec3(-2, 0, -1));
@@ -119,12 +119,12 @@ void TestEditor::refusesAPlacementWithNoRoom() {
 void TestEditor::selectsByClicking() {
   chooseTool("toolSelect");
   click(Vec3(0, 0.5, 0));
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 0}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 0}}));
   click(Vec3(1.5, 0, 1.5), Qt::ControlModifier);  // the floor joins
   QCOMPARE(document().selection(),
-           (carom::ui::Selection{{ObjectKind::Ball, 0}, {ObjectKind::Plane, 0}}));
+           (carom::editor::Selection{{ObjectKind::Ball, 0}, {ObjectKind::Plane, 0}}));
   click(Vec3(0, 0.5, 0), Qt::ShiftModifier);  // the ball leaves
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Plane, 0}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Plane, 0}}));
   // Empty sky above the room clears it.
   QTest::mouseClick(&view(), Qt::LeftButton, Qt::NoModifier, QPoint(view().width() / 2, 3));
   QVERIFY(document().selection().empty());
@@ -198,7 +198,7 @@ void TestEditor::duplicateDeleteCopyPaste() {
   QCOMPARE(copy.name, std::string("first"));
   QCOMPARE(copy.color, std::string("#ff0000"));
   QVERIFY((copy.position - Vec3(0, 0.5, 0)).norm() >= 1.0 - 1e-9);  // beside, not inside
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 1}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 1}}));
 
   QTest::keyClick(window_.get(), Qt::Key_C, Qt::ControlModifier);
   QVERIFY(QApplication::clipboard()->text().contains("\"balls\""));

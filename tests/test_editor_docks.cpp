@@ -20,8 +20,8 @@
 #include <QUndoStack>
 
 using carom::Vec3;
-using carom::ui::ObjectKind;
-using carom::ui::Selection;
+using carom::editor::ObjectKind;
+using carom::editor::Selection;
 
 class TestEditorDocks : public carom::testing::EditorFixture {
   Q_OBJECT
@@ -55,8 +55,8 @@ class TestEditorDocks : public carom::testing::EditorFixture {
 
  private:
   QTreeView& tree() { return *window_->outlineDock()->tree(); }
-  carom::ui::OutlineModel& outline() { return *window_->outlineDock()->model(); }
-  carom::ui::PropertiesDock& properties() { return *window_->propertiesDock(); }
+  carom::editor::OutlineModel& outline() { return *window_->outlineDock()->model(); }
+  carom::editor::PropertiesDock& properties() { return *window_->propertiesDock(); }
   QLineEdit* field(const QString& name) {
     auto* edit = properties().findChild<QLineEdit*>(name);
     if (!edit) qWarning("no field %s", qPrintable(name));
@@ -100,7 +100,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
     Selection selection;
     for (const QModelIndex& index : tree().selectionModel()->selectedIndexes())
       if (auto ref = outline().objectAt(index)) selection.push_back(*ref);
-    return carom::ui::normalized(selection);
+    return carom::editor::normalized(selection);
   }
   // Adds a cylinder standing at (2, 0, -2), away from the ball, as one command.
   void addCylinder() {
@@ -385,7 +385,7 @@ void TestEditorDocks::picksAColour() {
 void TestEditorDocks::turnsAPlaneByItsHandle() {
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Plane, 1}});  // the wall at x = -4, facing +x
-  const std::optional<carom::ui::EditorTools::Handle> handle = window_->tools()->handle();
+  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
   QVERIFY(handle);
   QCOMPARE(handle->base, Vec3(-4, 0, 0));
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitX()));
@@ -411,7 +411,7 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   addCylinder();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Cylinder, 0}});
-  const std::optional<carom::ui::EditorTools::Handle> handle = window_->tools()->handle();
+  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
   QVERIFY(handle);
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitY()));
   const QPoint tip = at(handle->tip);

@@ -24,7 +24,7 @@
 #include <QToolBar>
 #include <QUndoView>
 
-using carom::ui::ObjectKind;
+using carom::editor::ObjectKind;
 
 namespace {
 
@@ -206,9 +206,9 @@ void TestLanguage::recoveryDateFollowsTheLanguage() {
   QFETCH(QString, recover);
   // What a session that crashed leaves: a scene without a live lock, saved at a known time, and
   // nothing else to offer.
-  QDir folder(carom::ui::SceneRecovery::folder());
+  QDir folder(carom::editor::SceneRecovery::folder());
   for (const QString& old : folder.entryList({"*.carom"}, QDir::Files)) folder.remove(old);
-  const QString scene = QDir(carom::ui::SceneRecovery::folder()).filePath("crashed-1.carom");
+  const QString scene = QDir(carom::editor::SceneRecovery::folder()).filePath("crashed-1.carom");
   QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), scene, nullptr));
   const QDateTime saved(QDate(2026, 11, 23), QTime(17, 5));
   {
@@ -395,7 +395,7 @@ void TestLanguage::countsTakeTheirPluralForms() {
   QTRY_VERIFY2(window_->statusText().contains(readout), qPrintable(window_->statusText()));
   window_->setRunning(false);
   if (heading.isEmpty()) return;
-  carom::ui::Selection all;
+  carom::editor::Selection all;
   for (int i = 0; i < balls; ++i) all.push_back({ObjectKind::Ball, i});
   all.push_back({ObjectKind::Plane, 0});
   document().setSelection(all);

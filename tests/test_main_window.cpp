@@ -7,7 +7,7 @@
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
-#include "ui/sound/sound_board.h"
+#include "ui/sound_thread.h"
 
 #include <QAction>
 #include <QApplication>
@@ -22,6 +22,17 @@
 #include <QTimer>
 
 using carom::ui::MainWindow;
+
+// The controller's queue of calls to the physics thread (ui/call_queue.h, where ThreadSanitizer
+// sees what crosses).
+namespace carom::ui {
+class SimulationControllerTestAccess {
+ public:
+  static void post(SimulationController& controller, std::function<void()> call) {
+    controller.post(std::move(call));
+  }
+};
+}  // namespace carom::ui
 using carom::ui::SimulationSnapshot;
 
 namespace {
@@ -261,14 +272,8 @@ class TestMainWindow : public QObject {
     // The physics thread is kept busy for two seconds, as a very slow batch of steps would keep
     // it; meanwhile the window keeps handling input and repainting, and its controls respond. A
     // GUI that waited on the worker would do none of this until the two seconds were over.
-    auto* physics = window_->simulation().findChild<QThread*>("physics");
-    QVERIFY(physics);
-    auto* stall = new QObject;
-    stall->moveToThread(physics);
-    QMetaObject::invokeMethod(stall, [stall] {
-      QThread::sleep(2);
-      stall->deleteLater();
-    });
+    carom::ui::SimulationControllerTestAccess::post(window_->simulation(),
+                                                    [] { QThread::sleep(2); });
     QTest::keyClick(window_.get(), Qt::Key_Space);
     QTest::qWait(100);  // the worker is now stalled
     int ticks = 0;

@@ -14,9 +14,9 @@ using carom::Cylinder;
 using carom::Plane;
 using carom::Scene;
 using carom::Vec3;
-using carom::ui::ObjectKind;
-using carom::ui::ObjectRef;
-using carom::ui::Selection;
+using carom::editor::ObjectKind;
+using carom::editor::ObjectRef;
+using carom::editor::Selection;
 
 namespace {
 
@@ -95,7 +95,7 @@ void TestObjectRef::removeKeepsEveryOtherObject() {
   Selection selection;
   for (int index : removed) selection.push_back({ObjectKind(kind), index});
   Scene after = before;
-  carom::ui::remove(after, selection);
+  carom::editor::remove(after, selection);
 
   // The kind removed from lost exactly those; the other kinds are untouched, field by field.
   const auto expect = [&](ObjectKind k, const auto& items) {
@@ -117,7 +117,7 @@ void TestObjectRef::removeKeepsEveryOtherObject() {
 
 void TestObjectRef::removeIgnoresReferencesToNothing() {
   Scene scene = namedScene();
-  carom::ui::remove(scene, {{ObjectKind::Ball, -1}, {ObjectKind::Plane, kPerKind}});
+  carom::editor::remove(scene, {{ObjectKind::Ball, -1}, {ObjectKind::Plane, kPerKind}});
   QVERIFY(scene == namedScene());
 }
 
@@ -125,9 +125,9 @@ void TestObjectRef::extractThenAppendCopiesEveryField() {
   const Scene source = namedScene();
   const Selection picked = {
       {ObjectKind::Ball, 4}, {ObjectKind::Plane, 0}, {ObjectKind::Cylinder, 2}};
-  const Scene part = carom::ui::extract(source, picked);
+  const Scene part = carom::editor::extract(source, picked);
   Scene target = namedScene();
-  const Selection added = carom::ui::append(target, part);
+  const Selection added = carom::editor::append(target, part);
   QCOMPARE(added, (Selection{{ObjectKind::Ball, kPerKind},
                              {ObjectKind::Plane, kPerKind},
                              {ObjectKind::Cylinder, kPerKind}}));
@@ -135,7 +135,7 @@ void TestObjectRef::extractThenAppendCopiesEveryField() {
   QVERIFY(target.planes.back() == source.planes[0]);
   QVERIFY(target.cylinders.back() == source.cylinders[2]);
   // Then removing the copies gives back the original, as Duplicate followed by Delete does.
-  carom::ui::remove(target, added);
+  carom::editor::remove(target, added);
   QVERIFY(target == namedScene());
 }
 
@@ -154,10 +154,10 @@ void TestObjectRef::untouchedBallsKeepTheirRunningState() {
   };
   // An edit removes balls (here ball 1): the others keep their running state.
   Scene edited = shown;
-  carom::ui::remove(edited, {{ObjectKind::Ball, 1}});
-  carom::ui::SceneChange change;
+  carom::editor::remove(edited, {{ObjectKind::Ball, 1}});
+  carom::editor::SceneChange change;
   change.removed = {{ObjectKind::Ball, 1}};
-  Scene start = carom::ui::withRunningBalls(edited, change, positions, velocities);
+  Scene start = carom::editor::withRunningBalls(edited, change, positions, velocities);
   QCOMPARE(start.balls.size(), edited.balls.size());
   for (int i = 0; i < kPerKind - 1; ++i) QVERIFY(ranFrom(start, i, i < 1 ? i : i + 1));
   // Or changes balls in place and appends some: the changed and the new ones are as edited.
@@ -169,7 +169,7 @@ void TestObjectRef::untouchedBallsKeepTheirRunningState() {
   change = {};
   change.edited = {{ObjectKind::Ball, 3}};
   change.inserted = {{ObjectKind::Ball, kPerKind}};
-  start = carom::ui::withRunningBalls(edited, change, positions, velocities);
+  start = carom::editor::withRunningBalls(edited, change, positions, velocities);
   QCOMPARE(start.balls.size(), edited.balls.size());
   for (int i : {0, 1, 2, 4}) QVERIFY(ranFrom(start, i, i));
   QVERIFY(start.balls[3] == edited.balls[3]);
@@ -191,10 +191,10 @@ void TestObjectRef::insertUndoesRemove() {
   if (kind != 0) refs.push_back({ObjectKind::Ball, 2});
   const Scene before = namedScene();
   Scene scene = before;
-  const Scene taken = carom::ui::extract(scene, carom::ui::normalized(refs));
-  carom::ui::remove(scene, refs);
+  const Scene taken = carom::editor::extract(scene, carom::editor::normalized(refs));
+  carom::editor::remove(scene, refs);
   QVERIFY(!(scene == before));
-  carom::ui::insert(scene, refs, taken);
+  carom::editor::insert(scene, refs, taken);
   QVERIFY(scene == before);
 }
 
@@ -203,20 +203,20 @@ void TestObjectRef::insertUndoesRemove() {
 void TestObjectRef::assignWritesBackWhatExtractTook() {
   const Scene before = namedScene();
   const Selection refs{{ObjectKind::Ball, 1}, {ObjectKind::Ball, 4}, {ObjectKind::Cylinder, 2}};
-  Scene values = carom::ui::extract(before, refs);
-  const Selection local = carom::ui::extractedRefs(refs);
+  Scene values = carom::editor::extract(before, refs);
+  const Selection local = carom::editor::extractedRefs(refs);
   QCOMPARE(local,
            (Selection{{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}, {ObjectKind::Cylinder, 0}}));
-  for (const ObjectRef& ref : local) carom::ui::objectInfo(values, ref).name += " edited";
+  for (const ObjectRef& ref : local) carom::editor::objectInfo(values, ref).name += " edited";
   Scene scene = before;
-  carom::ui::assign(scene, refs, values);
+  carom::editor::assign(scene, refs, values);
   for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder}) {
     for (int i = 0; i < kPerKind; ++i) {
       const ObjectRef ref{kind, i};
       const bool edited = std::find(refs.begin(), refs.end(), ref) != refs.end();
       const std::string expected =
-          carom::ui::objectInfo(before, ref).name + (edited ? " edited" : "");
-      QCOMPARE(carom::ui::objectInfo(scene, ref).name, expected);
+          carom::editor::objectInfo(before, ref).name + (edited ? " edited" : "");
+      QCOMPARE(carom::editor::objectInfo(scene, ref).name, expected);
     }
   }
   QVERIFY(scene.balls[1].position == before.balls[1].position);

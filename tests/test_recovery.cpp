@@ -14,9 +14,9 @@
 #include <cstdio>
 
 using carom::Vec3;
+using carom::editor::SceneRecovery;
 using carom::testing::DialogAnswerer;
 using carom::ui::MainWindow;
-using carom::ui::SceneRecovery;
 
 namespace {
 
@@ -127,7 +127,7 @@ void TestRecovery::notNowKeepsTheCopy() {
 
 void TestRecovery::aCleanEndLeavesNothing() {
   window_->recovery()->setInterval(kChildIntervalMilliseconds);
-  document().setSelection({{carom::ui::ObjectKind::Ball, 0}});
+  document().setSelection({{carom::editor::ObjectKind::Ball, 0}});
   QTest::keyClick(window_.get(), Qt::Key_Delete);
   QTRY_VERIFY(QFileInfo::exists(window_->recovery()->copyFile()));
   const QString copy = window_->recovery()->copyFile();
@@ -144,7 +144,7 @@ void TestRecovery::copiesFollowTheUnsavedState() {
   SceneRecovery* recovery = window_->recovery();
   QVERIFY(recovery->autosave());  // nothing unsaved: no copy
   QVERIFY(!QFileInfo::exists(recovery->copyFile()));
-  document().setSelection({{carom::ui::ObjectKind::Ball, 0}});
+  document().setSelection({{carom::editor::ObjectKind::Ball, 0}});
   QTest::keyClick(window_.get(), Qt::Key_Delete);
   QSignalSpy written(recovery, &SceneRecovery::autosaved);
   QVERIFY(recovery->autosave());

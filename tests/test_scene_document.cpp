@@ -16,11 +16,11 @@
 using carom::Ball;
 using carom::Scene;
 using carom::Vec3;
-using carom::ui::ObjectKind;
-using carom::ui::ObjectRef;
-using carom::ui::SceneChange;
-using carom::ui::SceneDocument;
-using carom::ui::Selection;
+using carom::editor::ObjectKind;
+using carom::editor::ObjectRef;
+using carom::editor::SceneChange;
+using carom::editor::SceneDocument;
+using carom::editor::Selection;
 
 namespace {
 
@@ -62,7 +62,7 @@ class TestSceneDocument : public QObject {
   void editReportsTheObjectsItChanged() {
     ChangeLog log(document_);
     const Selection refs{{ObjectKind::Ball, 3}, {ObjectKind::Ball, 7}};
-    Scene values = carom::ui::extract(document_.scene(), refs);
+    Scene values = carom::editor::extract(document_.scene(), refs);
     values.balls[0].radius = 0.75;
     values.balls[1].mass = 5.0;
     QCOMPARE(document_.editObjects(refs, values, "edit"), QString());
@@ -85,7 +85,7 @@ class TestSceneDocument : public QObject {
   void refusedEditChangesNothing() {
     ChangeLog log(document_);
     const Selection refs{{ObjectKind::Ball, 2}};
-    Scene values = carom::ui::extract(document_.scene(), refs);
+    Scene values = carom::editor::extract(document_.scene(), refs);
     values.balls[0].position = document_.scene().balls[3].position;  // onto ball 3
     Scene whole = document_.scene();
     whole.balls[2] = values.balls[0];
@@ -159,7 +159,7 @@ class TestSceneDocument : public QObject {
     const int gesture = document_.newGesture();
     const Selection refs{{ObjectKind::Ball, 9}};
     for (int step = 1; step <= 5; ++step) {
-      Scene values = carom::ui::extract(rowOfBalls(), refs);
+      Scene values = carom::editor::extract(rowOfBalls(), refs);
       values.balls[0].position.y() += step;
       QCOMPARE(document_.editObjects(refs, values, "Move", gesture), QString());
     }
@@ -170,14 +170,14 @@ class TestSceneDocument : public QObject {
   }
 
   void outlineAnnouncesOnlyTheRowsTouched() {
-    carom::ui::OutlineModel model(&document_);
+    carom::editor::OutlineModel model(&document_);
     const QModelIndex balls = model.groupIndex(ObjectKind::Ball);
     QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
     QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
     QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
     // A rename: that row alone.
     const Selection refs{{ObjectKind::Ball, 6}};
-    Scene values = carom::ui::extract(document_.scene(), refs);
+    Scene values = carom::editor::extract(document_.scene(), refs);
     values.balls[0].name = "renamed";
     QCOMPARE(document_.editObjects(refs, values, "Rename"), QString());
     QCOMPARE(changed.count(), 1);

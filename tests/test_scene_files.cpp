@@ -23,9 +23,9 @@
 
 using carom::Scene;
 using carom::Vec3;
+using carom::editor::SceneDocument;
 using carom::testing::DialogAnswerer;
 using carom::testing::ModalAnswerer;
-using carom::ui::SceneDocument;
 using carom::ui::SceneFiles;
 
 namespace {

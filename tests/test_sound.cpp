@@ -1,6 +1,7 @@
 // SoundBoard against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
 
 #include "ui/sound/sound_board.h"
+#include "ui/sound_thread.h"
 
 #include <QProcess>
 #include <QSignalSpy>
@@ -197,6 +198,30 @@ class TestSound : public QObject {
     QCOMPARE(board.playedCount(), kPlays);
     // A clack is 80 ms long; 150 ms of quiet separates two.
     QCOMPARE(recorder.onsets(kSoundPeak, 44100 * 150 / 1000), kPlays);
+  }
+
+  // As the window plays them: from the GUI thread, posted to the board on its own thread,
+  // which opens the streams and feeds them while the GUI thread is busy elsewhere.
+  void soundThreadPlaysWhileTheGuiIsBusy() {
+    carom::ui::SoundThread sound;
+    QTRY_VERIFY(sound.available());  // once the board, made on its thread, has an output
+    QVERIFY(!sound.muted());
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    sound.play({hit(ContactKind::BallBall, 4.0)});
+    // The GUI thread blocks for half a second, as a very long frame would, without turning its
+    // event loop: the sound has started all the same, and is fed.
+    QThread::msleep(500);
+    QCOMPARE(sound.playedCount(), 1);
+    QTest::qWait(500);
+    recorder.stop();
+    QVERIFY2(recorder.peak() > kSoundPeak, qPrintable(QString::number(recorder.peak())));
+    // Muted: nothing more starts, and the drop is not counted as played.
+    sound.setMuted(true);
+    QVERIFY(sound.muted());
+    sound.play({hit(ContactKind::BallPlane, 4.0)});
+    QTest::qWait(300);
+    QCOMPARE(sound.playedCount(), 1);
   }
 
   void mutedPlaysNothing() {

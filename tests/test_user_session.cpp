@@ -22,10 +22,10 @@
 using carom::Ball;
 using carom::Scene;
 using carom::Vec3;
+using carom::editor::ObjectKind;
+using carom::editor::SceneRecovery;
 using carom::testing::DialogAnswerer;
 using carom::testing::ModalAnswerer;
-using carom::ui::ObjectKind;
-using carom::ui::SceneRecovery;
 
 namespace {
 
@@ -143,7 +143,7 @@ void TestUserSession::deletingABallKeepsEveryOtherName() {
   QCOMPARE(room.balls[0].color, std::string("#e63946"));  // the red one
   QTRY_VERIFY(window_->framesRendered() > 2);
   click(room.balls[0].position);
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 0}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 0}}));
   QTest::keyClick(window_.get(), Qt::Key_Delete);
 
   const QString file = folder_.filePath("room.carom");
@@ -161,10 +161,10 @@ void TestUserSession::deletingADuplicateKeepsTheOriginals() {
   const Scene room = magicRoom();
   QTRY_VERIFY(window_->framesRendered() > 2);
   click(room.balls[9].position);
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 9}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 9}}));
   QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
   QCOMPARE(document().scene().balls.size(), room.balls.size() + 1);
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 10}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 10}}));
   QTest::keyClick(window_.get(), Qt::Key_Delete);
   compareObjects(document().scene(), room);
   // Undo twice is back at the start, redo twice at the same place again.
@@ -279,11 +279,11 @@ void TestUserSession::clickTheBackground() {
       document().setSelection({{ObjectKind::Ball, 0}});
       QTest::mouseClick(&view(), Qt::LeftButton, {}, at);
       if (!document().selection().empty()) {
-        QFAIL(qPrintable(
-            QString("click at %1,%2 selected %3")
-                .arg(at.x())
-                .arg(at.y())
-                .arg(carom::ui::objectLabel(document().scene(), document().selection().front()))));
+        QFAIL(qPrintable(QString("click at %1,%2 selected %3")
+                             .arg(at.x())
+                             .arg(at.y())
+                             .arg(carom::editor::objectLabel(document().scene(),
+                                                             document().selection().front()))));
       }
     }
   }
@@ -380,7 +380,7 @@ void TestUserSession::newGivesAFloorToBuildOn() {
   // The floor is picked and deleted like anything else.
   QTest::keyClick(window_.get(), Qt::Key_V);
   click(Vec3(3, 0, 3));
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Plane, 0}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Plane, 0}}));
   QTest::keyClick(window_.get(), Qt::Key_Delete);
   QVERIFY(document().scene().planes.empty());
   QCOMPARE(document().scene().balls.size(), std::size_t{1});
@@ -420,7 +420,7 @@ void TestUserSession::openEditDeleteSaveReopen() {
   // Delete the first plane (the floor), a middle cylinder, and the last ball, each by a click
   // in the view or a selection from the document as the outline makes it, then Delete.
   click(start.balls.back().position);
-  QCOMPARE(document().selection(), (carom::ui::Selection{{ObjectKind::Ball, 9}}));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 9}}));
   QTest::keyClick(window_.get(), Qt::Key_Delete);
   expected.balls.pop_back();
   document().setSelection({{ObjectKind::Cylinder, 1}});

@@ -40,12 +40,12 @@
 <context>
     <name>NumberText</name>
     <message>
-        <location filename="../ui/editor/number_text.cpp" line="31"/>
+        <location filename="../ui/editor/number_text.cpp" line="36"/>
         <source>“%1” is out of range</source>
         <translation>„%1“ liegt außerhalb des Wertebereichs</translation>
     </message>
     <message>
-        <location filename="../ui/editor/number_text.cpp" line="33"/>
+        <location filename="../ui/editor/number_text.cpp" line="38"/>
         <source>“%1” is not a number</source>
         <translation>„%1“ ist keine Zahl</translation>
     </message>
@@ -89,124 +89,7 @@
     </message>
 </context>
 <context>
-    <name>carom::ui::AccuracyWindow</name>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="109"/>
-        <source>Speed vs accuracy</source>
-        <translation>Geschwindigkeit und Genauigkeit</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="111"/>
-        <source>Position error against exact (m)</source>
-        <translation>Positionsfehler gegenüber exact (m)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="111"/>
-        <source>Relative energy drift</source>
-        <translation>Relative Energiedrift</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="112"/>
-        <source>Deepest penetration (m)</source>
-        <translation>Maximale Eindringtiefe (m)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="112"/>
-        <source>Escaped balls</source>
-        <translation>Entwichene Kugeln</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="114"/>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Computing time (s)</source>
-        <translation>Rechenzeit (s)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Run</source>
-        <translation>Lauf</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Position error</source>
-        <translation>Positionsfehler</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Energy drift</source>
-        <translation>Energiedrift</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Penetration</source>
-        <translation>Eindringtiefe</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Escaped</source>
-        <translation>Entwichen</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="118"/>
-        <source>Apply Selected Settings</source>
-        <translation>Ausgewählte Einstellungen übernehmen</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
-        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
-        <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="110"/>
-        <source>Error:</source>
-        <translation>Fehler:</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::EditActions</name>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="33"/>
-        <source>clipboard</source>
-        <translation>Zwischenablage</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="35"/>
-        <source>Nothing to paste: %1</source>
-        <translation>Nichts einzufügen: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="38"/>
-        <source>Paste</source>
-        <translation>Einfügen</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="42"/>
-        <source>Duplicate</source>
-        <translation>Duplizieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="49"/>
-        <source>Delete</source>
-        <translation>Löschen</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="79"/>
-        <source>Cannot place the objects: %1</source>
-        <translation>Die Objekte können nicht platziert werden: %1</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::EditorTools</name>
-    <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
-        <source>Change Velocity</source>
-        <translation>Geschwindigkeit ändern</translation>
-    </message>
+    <name>carom::editor::EditorTools</name>
     <message>
         <location filename="../ui/editor/editor_tools.cpp" line="124"/>
         <source>Turn Plane</source>
@@ -218,27 +101,32 @@
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="226"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
+        <source>Change Velocity</source>
+        <translation>Geschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="231"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="277"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="281"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Klicken Sie auf eine Fläche oder den Boden, um ein Objekt zu platzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="301"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="306"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
         <source>No room for a ball there: %1</source>
         <translation>Dort ist kein Platz für eine Kugel: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="318"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="319"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
@@ -251,6 +139,426 @@
         <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Kann dort nicht platziert werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::OutlineDock</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="208"/>
+        <source>Outline</source>
+        <translation>Übersicht</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::OutlineModel</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="133"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="166"/>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::PropertiesDock</name>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="60"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="334"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="469"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="120"/>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <source>(any length)</source>
+        <translation>(beliebige Länge)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Change Colour</source>
+        <translation>Farbe ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Change Velocity</source>
+        <translation>Geschwindigkeit ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <source>Change Radius</source>
+        <translation>Radius ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <source>Mass</source>
+        <translation>Masse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <source>Change Mass</source>
+        <translation>Masse ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="151"/>
+        <source>Normal</source>
+        <translation>Normale</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="151"/>
+        <source>Turn Plane</source>
+        <translation>Ebene drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
+        <source>Axis</source>
+        <translation>Achse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
+        <source>Turn Cylinder</source>
+        <translation>Zylinder drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <source>Change Gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <source>Change Time Step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <source>Restitution</source>
+        <translation>Stoßzahl</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <source>Change Restitution</source>
+        <translation>Stoßzahl ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <source>Change Method</source>
+        <translation>Methode ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <source>Integrator</source>
+        <translation>Integrator</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <source>Change Integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="195"/>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="207"/>
+        <source>0 to 1; empty: the world&apos;s restitution</source>
+        <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="208"/>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
+        <source>Choose a colour</source>
+        <translation>Farbe wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
+        <source>Object Colour</source>
+        <translation>Objektfarbe</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
+        <source>World (nothing selected)</source>
+        <translation>Welt (nichts ausgewählt)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <source>%1: %n selected</source>
+        <translation>
+            <numerusform>%1: %n ausgewählt</numerusform>
+            <numerusform>%1: %n ausgewählt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="339"/>
+        <source>%n objects selected</source>
+        <translation>
+            <numerusform>%n Objekt ausgewählt</numerusform>
+            <numerusform>%n Objekte ausgewählt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="349"/>
+        <source>mixed</source>
+        <translation>verschieden</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <source>default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
+        <source>world&apos;s (%1)</source>
+        <translation>der Welt (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::SceneDocument</name>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="95"/>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="109"/>
+        <source>floor</source>
+        <translation>Boden</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AccuracyWindow</name>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <source>Speed vs accuracy</source>
+        <translation>Geschwindigkeit und Genauigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <source>Position error against exact (m)</source>
+        <translation>Positionsfehler gegenüber exact (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <source>Relative energy drift</source>
+        <translation>Relative Energiedrift</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <source>Deepest penetration (m)</source>
+        <translation>Maximale Eindringtiefe (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <source>Escaped balls</source>
+        <translation>Entwichene Kugeln</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="119"/>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Computing time (s)</source>
+        <translation>Rechenzeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Position error</source>
+        <translation>Positionsfehler</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Energy drift</source>
+        <translation>Energiedrift</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Penetration</source>
+        <translation>Eindringtiefe</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Escaped</source>
+        <translation>Entwichen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <source>Apply Selected Settings</source>
+        <translation>Ausgewählte Einstellungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="125"/>
+        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
+        <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/accuracy_window.cpp" line="195"/>
+        <source>%Ln runs</source>
+        <translation>
+            <numerusform>%Ln Lauf</numerusform>
+            <numerusform>%Ln Läufe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="201"/>
+        <source>Cancelled after %1 in %2 s.</source>
+        <translation>Abgebrochen nach %1 in %2 s.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/accuracy_window.cpp" line="204"/>
+        <source>%Ln threads</source>
+        <translation>
+            <numerusform>%Ln Thread</numerusform>
+            <numerusform>%Ln Threads</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="210"/>
+        <source>%1 in %2 s on %3, no faster than one after another</source>
+        <translation>%1 in %2 s mit %3, nicht schneller als nacheinander</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="213"/>
+        <source>%1 in %2 s on %3, %4× faster than one after another</source>
+        <translation>%1 in %2 s mit %3, %4× schneller als nacheinander</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
+        <source>Error:</source>
+        <translation>Fehler:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::EditActions</name>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="34"/>
+        <source>clipboard</source>
+        <translation>Zwischenablage</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="36"/>
+        <source>Nothing to paste: %1</source>
+        <translation>Nichts einzufügen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="39"/>
+        <source>Paste</source>
+        <translation>Einfügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="43"/>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="47"/>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="76"/>
+        <source>Cannot place the objects: %1</source>
+        <translation>Die Objekte können nicht platziert werden: %1</translation>
     </message>
 </context>
 <context>
@@ -652,380 +960,375 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="263"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="274"/>
+        <location filename="../ui/main_window.cpp" line="259"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="281"/>
+        <location filename="../ui/main_window.cpp" line="266"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="288"/>
+        <location filename="../ui/main_window.cpp" line="273"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="390"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="410"/>
+        <location filename="../ui/main_window.cpp" line="395"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
-        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
-        <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="649"/>
+        <location filename="../ui/main_window.cpp" line="586"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="403"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="404"/>
+        <location filename="../ui/main_window.cpp" line="389"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="406"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="391"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="378"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="407"/>
+        <location filename="../ui/main_window.cpp" line="392"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="407"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="722"/>
+        <location filename="../ui/main_window.cpp" line="659"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="390"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="392"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="397"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="398"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="399"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="803"/>
+        <location filename="../ui/main_window.cpp" line="747"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="408"/>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1033,296 +1336,19 @@
 <context>
     <name>carom::ui::NumberBox</name>
     <message>
-        <location filename="../ui/number_box.cpp" line="35"/>
+        <location filename="../ui/number_box.cpp" line="30"/>
         <source>must be finite (got %1)</source>
         <translation>muss endlich sein (erhalten: %1)</translation>
     </message>
     <message>
-        <location filename="../ui/number_box.cpp" line="37"/>
+        <location filename="../ui/number_box.cpp" line="32"/>
         <source>must be between %1 and %2 (got %3)</source>
         <translation>muss zwischen %1 und %2 liegen (erhalten: %3)</translation>
     </message>
     <message>
-        <location filename="../ui/number_box.cpp" line="76"/>
+        <location filename="../ui/number_box.cpp" line="72"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::OutlineDock</name>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="183"/>
-        <source>Outline</source>
-        <translation>Übersicht</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::OutlineModel</name>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="107"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="141"/>
-        <source>Rename</source>
-        <translation>Umbenennen</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::PropertiesDock</name>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="197"/>
-        <source>Properties</source>
-        <translation>Eigenschaften</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
-        <source>m</source>
-        <translation>m</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
-        <source>m/s</source>
-        <translation>m/s</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
-        <source>kg</source>
-        <translation>kg</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
-        <source>m/s²</source>
-        <translation>m/s²</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="126"/>
-        <source>(any length)</source>
-        <translation>(beliebige Länge)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
-        <source>Rename</source>
-        <translation>Umbenennen</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
-        <source>…</source>
-        <translation>…</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
-        <source>Choose a colour</source>
-        <translation>Farbe wählen</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
-        <source>Colour</source>
-        <translation>Farbe</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
-        <source>Change Colour</source>
-        <translation>Farbe ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="377"/>
-        <source>default</source>
-        <translation>Standard</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
-        <source>Position</source>
-        <translation>Position</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
-        <source>Move</source>
-        <translation>Verschieben</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <source>Velocity</source>
-        <translation>Geschwindigkeit</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <source>Change Velocity</source>
-        <translation>Geschwindigkeit ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
-        <source>Radius</source>
-        <translation>Radius</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
-        <source>Change Radius</source>
-        <translation>Radius ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
-        <source>Mass</source>
-        <translation>Masse</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
-        <source>Change Mass</source>
-        <translation>Masse ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
-        <source>Point</source>
-        <translation>Punkt</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
-        <source>Normal</source>
-        <translation>Normale</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
-        <source>Turn Plane</source>
-        <translation>Ebene drehen</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
-        <source>Axis</source>
-        <translation>Achse</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
-        <source>Turn Cylinder</source>
-        <translation>Zylinder drehen</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
-        <source>Gravity</source>
-        <translation>Schwerkraft</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
-        <source>Change Gravity</source>
-        <translation>Schwerkraft ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <source>Time step</source>
-        <translation>Zeitschritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <source>Change Time Step</source>
-        <translation>Zeitschritt ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
-        <source>Restitution</source>
-        <translation>Stoßzahl</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
-        <source>Change Restitution</source>
-        <translation>Stoßzahl ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
-        <source>0 to 1; empty: the world&apos;s restitution</source>
-        <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
-        <source>Method</source>
-        <translation>Methode</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
-        <source>Change Method</source>
-        <translation>Methode ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
-        <source>Integrator</source>
-        <translation>Integrator</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
-        <source>Change Integrator</source>
-        <translation>Integrator ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="337"/>
-        <source>World (nothing selected)</source>
-        <translation>Welt (nichts ausgewählt)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="61"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="431"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="468"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="345"/>
-        <source>%1: %n selected</source>
-        <translation>
-            <numerusform>%1: %n ausgewählt</numerusform>
-            <numerusform>%1: %n ausgewählt</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="348"/>
-        <source>%n objects selected</source>
-        <translation>
-            <numerusform>%n Objekt ausgewählt</numerusform>
-            <numerusform>%n Objekte ausgewählt</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="357"/>
-        <source>mixed</source>
-        <translation>verschieden</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="391"/>
-        <source>world&apos;s (%1)</source>
-        <translation>der Welt (%1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
-        <source>Object Colour</source>
-        <translation>Objektfarbe</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::SceneDocument</name>
-    <message>
-        <location filename="../ui/editor/scene_document.cpp" line="56"/>
-        <source>untitled</source>
-        <translation>unbenannt</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/scene_document.cpp" line="70"/>
-        <source>floor</source>
-        <translation>Boden</translation>
     </message>
 </context>
 <context>
@@ -1431,6 +1457,14 @@
         <location filename="../ui/scene_files.cpp" line="174"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SimulationSync</name>
+    <message>
+        <location filename="../ui/simulation_sync.cpp" line="51"/>
+        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
+        <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
     </message>
 </context>
 <context>

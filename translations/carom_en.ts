@@ -14,7 +14,7 @@
     </message>
 </context>
 <context>
-    <name>carom::ui::PropertiesDock</name>
+    <name>carom::editor::PropertiesDock</name>
     <message numerus="yes">
         <source>%1: %n selected</source>
         <translation>
@@ -27,6 +27,23 @@
         <translation>
             <numerusform>%n object selected</numerusform>
             <numerusform>%n objects selected</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AccuracyWindow</name>
+    <message numerus="yes">
+        <source>%Ln runs</source>
+        <translation>
+            <numerusform>%Ln run</numerusform>
+            <numerusform>%Ln runs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln threads</source>
+        <translation>
+            <numerusform>%Ln thread</numerusform>
+            <numerusform>%Ln threads</numerusform>
         </translation>
     </message>
 </context>

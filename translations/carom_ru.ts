@@ -40,12 +40,12 @@
 <context>
     <name>NumberText</name>
     <message>
-        <location filename="../ui/editor/number_text.cpp" line="31"/>
+        <location filename="../ui/editor/number_text.cpp" line="36"/>
         <source>“%1” is out of range</source>
         <translation>«%1» вне допустимого диапазона</translation>
     </message>
     <message>
-        <location filename="../ui/editor/number_text.cpp" line="33"/>
+        <location filename="../ui/editor/number_text.cpp" line="38"/>
         <source>“%1” is not a number</source>
         <translation>«%1» — не число</translation>
     </message>
@@ -89,124 +89,7 @@
     </message>
 </context>
 <context>
-    <name>carom::ui::AccuracyWindow</name>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="109"/>
-        <source>Speed vs accuracy</source>
-        <translation>Скорость и точность</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="111"/>
-        <source>Position error against exact (m)</source>
-        <translation>Ошибка положения относительно exact (m)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="111"/>
-        <source>Relative energy drift</source>
-        <translation>Относительный дрейф энергии</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="112"/>
-        <source>Deepest penetration (m)</source>
-        <translation>Максимальная глубина проникновения (m)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="112"/>
-        <source>Escaped balls</source>
-        <translation>Вылетевшие шары</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="114"/>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Computing time (s)</source>
-        <translation>Время вычислений (s)</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Run</source>
-        <translation>Прогон</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
-        <source>Position error</source>
-        <translation>Ошибка положения</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Energy drift</source>
-        <translation>Дрейф энергии</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Penetration</source>
-        <translation>Проникновение</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Escaped</source>
-        <translation>Вылетело</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
-        <source>Cancel</source>
-        <translation>Отмена</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="118"/>
-        <source>Apply Selected Settings</source>
-        <translation>Применить выбранные настройки</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
-        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
-        <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="110"/>
-        <source>Error:</source>
-        <translation>Ошибка:</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::EditActions</name>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="33"/>
-        <source>clipboard</source>
-        <translation>буфер обмена</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="35"/>
-        <source>Nothing to paste: %1</source>
-        <translation>Нечего вставить: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="38"/>
-        <source>Paste</source>
-        <translation>Вставить</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="42"/>
-        <source>Duplicate</source>
-        <translation>Дублировать</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="49"/>
-        <source>Delete</source>
-        <translation>Удалить</translation>
-    </message>
-    <message>
-        <location filename="../ui/edit_actions.cpp" line="79"/>
-        <source>Cannot place the objects: %1</source>
-        <translation>Не удаётся разместить объекты: %1</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::EditorTools</name>
-    <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
-        <source>Change Velocity</source>
-        <translation>Изменить скорость</translation>
-    </message>
+    <name>carom::editor::EditorTools</name>
     <message>
         <location filename="../ui/editor/editor_tools.cpp" line="124"/>
         <source>Turn Plane</source>
@@ -218,27 +101,32 @@
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="226"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
+        <source>Change Velocity</source>
+        <translation>Изменить скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="231"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="277"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="281"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Щёлкните по поверхности или по земле, чтобы поставить объект.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="301"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="306"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
         <source>No room for a ball there: %1</source>
         <translation>Здесь нет места для шара: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="318"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="319"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
@@ -251,6 +139,430 @@
         <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Сюда поставить нельзя: %1</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::OutlineDock</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="208"/>
+        <source>Outline</source>
+        <translation>Структура</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::OutlineModel</name>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="133"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/outline_dock.cpp" line="166"/>
+        <source>Rename</source>
+        <translation>Переименовать</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::PropertiesDock</name>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="60"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="334"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="469"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="120"/>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
+        <source>m/s²</source>
+        <translation>m/s²</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <source>(any length)</source>
+        <translation>(любой длины)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Name</source>
+        <translation>Имя</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
+        <source>Rename</source>
+        <translation>Переименовать</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Colour</source>
+        <translation>Цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="131"/>
+        <source>Change Colour</source>
+        <translation>Изменить цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Move</source>
+        <translation>Переместить</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Velocity</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <source>Change Velocity</source>
+        <translation>Изменить скорость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <source>Radius</source>
+        <translation>Радиус</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <source>Change Radius</source>
+        <translation>Изменить радиус</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <source>Mass</source>
+        <translation>Масса</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
+        <source>Change Mass</source>
+        <translation>Изменить массу</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <source>Point</source>
+        <translation>Точка</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="151"/>
+        <source>Normal</source>
+        <translation>Нормаль</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="151"/>
+        <source>Turn Plane</source>
+        <translation>Повернуть плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
+        <source>Turn Cylinder</source>
+        <translation>Повернуть цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <source>Gravity</source>
+        <translation>Гравитация</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <source>Change Gravity</source>
+        <translation>Изменить гравитацию</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <source>Time step</source>
+        <translation>Шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <source>Change Time Step</source>
+        <translation>Изменить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <source>Restitution</source>
+        <translation>Восстановление</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <source>Change Restitution</source>
+        <translation>Изменить коэффициент восстановления</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <source>Change Method</source>
+        <translation>Изменить метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <source>Integrator</source>
+        <translation>Интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <source>Change Integrator</source>
+        <translation>Изменить интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="195"/>
+        <source>Properties</source>
+        <translation>Свойства</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="207"/>
+        <source>0 to 1; empty: the world&apos;s restitution</source>
+        <translation>От 0 до 1; пусто — коэффициент мира</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="208"/>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
+        <source>Choose a colour</source>
+        <translation>Выбрать цвет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
+        <source>Object Colour</source>
+        <translation>Цвет объекта</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
+        <source>World (nothing selected)</source>
+        <translation>Мир (ничего не выбрано)</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <source>%1: %n selected</source>
+        <translation>
+            <numerusform>%1: выбран %n</numerusform>
+            <numerusform>%1: выбрано %n</numerusform>
+            <numerusform>%1: выбрано %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/properties_dock.cpp" line="339"/>
+        <source>%n objects selected</source>
+        <translation>
+            <numerusform>Выбран %n объект</numerusform>
+            <numerusform>Выбрано %n объекта</numerusform>
+            <numerusform>Выбрано %n объектов</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="349"/>
+        <source>mixed</source>
+        <translation>разные</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <source>default</source>
+        <translation>по умолчанию</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
+        <source>world&apos;s (%1)</source>
+        <translation>как у мира (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>carom::editor::SceneDocument</name>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="95"/>
+        <source>untitled</source>
+        <translation>без имени</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/scene_document.cpp" line="109"/>
+        <source>floor</source>
+        <translation>пол</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AccuracyWindow</name>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <source>Speed vs accuracy</source>
+        <translation>Скорость и точность</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <source>Position error against exact (m)</source>
+        <translation>Ошибка положения относительно exact (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <source>Relative energy drift</source>
+        <translation>Относительный дрейф энергии</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <source>Deepest penetration (m)</source>
+        <translation>Максимальная глубина проникновения (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <source>Escaped balls</source>
+        <translation>Вылетевшие шары</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="119"/>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Computing time (s)</source>
+        <translation>Время вычислений (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Run</source>
+        <translation>Прогон</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <source>Position error</source>
+        <translation>Ошибка положения</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Energy drift</source>
+        <translation>Дрейф энергии</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Penetration</source>
+        <translation>Проникновение</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <source>Escaped</source>
+        <translation>Вылетело</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <source>Apply Selected Settings</source>
+        <translation>Применить выбранные настройки</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="125"/>
+        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
+        <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/accuracy_window.cpp" line="195"/>
+        <source>%Ln runs</source>
+        <translation>
+            <numerusform>%Ln прогон</numerusform>
+            <numerusform>%Ln прогона</numerusform>
+            <numerusform>%Ln прогонов</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="201"/>
+        <source>Cancelled after %1 in %2 s.</source>
+        <translation>Прервано после %1 за %2 с.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/accuracy_window.cpp" line="204"/>
+        <source>%Ln threads</source>
+        <translation>
+            <numerusform>%Ln поток</numerusform>
+            <numerusform>%Ln потока</numerusform>
+            <numerusform>%Ln потоков</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="210"/>
+        <source>%1 in %2 s on %3, no faster than one after another</source>
+        <translation>%1 за %2 с на %3, не быстрее, чем по очереди</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="213"/>
+        <source>%1 in %2 s on %3, %4× faster than one after another</source>
+        <translation>%1 за %2 с на %3, в %4 раза быстрее, чем по очереди</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="115"/>
+        <source>Error:</source>
+        <translation>Ошибка:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::EditActions</name>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="34"/>
+        <source>clipboard</source>
+        <translation>буфер обмена</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="36"/>
+        <source>Nothing to paste: %1</source>
+        <translation>Нечего вставить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="39"/>
+        <source>Paste</source>
+        <translation>Вставить</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="43"/>
+        <source>Duplicate</source>
+        <translation>Дублировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="47"/>
+        <source>Delete</source>
+        <translation>Удалить</translation>
+    </message>
+    <message>
+        <location filename="../ui/edit_actions.cpp" line="76"/>
+        <source>Cannot place the objects: %1</source>
+        <translation>Не удаётся разместить объекты: %1</translation>
     </message>
 </context>
 <context>
@@ -652,380 +964,375 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="168"/>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="153"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="263"/>
+        <location filename="../ui/main_window.cpp" line="248"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="274"/>
+        <location filename="../ui/main_window.cpp" line="259"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="281"/>
+        <location filename="../ui/main_window.cpp" line="266"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="288"/>
+        <location filename="../ui/main_window.cpp" line="273"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="387"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="405"/>
+        <location filename="../ui/main_window.cpp" line="390"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="410"/>
+        <location filename="../ui/main_window.cpp" line="395"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
-        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
-        <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="409"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="623"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="649"/>
+        <location filename="../ui/main_window.cpp" line="586"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="403"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="404"/>
+        <location filename="../ui/main_window.cpp" line="389"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="406"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="391"/>
+        <location filename="../ui/main_window.cpp" line="376"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="378"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="407"/>
+        <location filename="../ui/main_window.cpp" line="392"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="407"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="722"/>
+        <location filename="../ui/main_window.cpp" line="659"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="390"/>
+        <location filename="../ui/main_window.cpp" line="375"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="392"/>
+        <location filename="../ui/main_window.cpp" line="377"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="397"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="398"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="399"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="803"/>
+        <location filename="../ui/main_window.cpp" line="747"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="408"/>
+        <location filename="../ui/main_window.cpp" line="393"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
@@ -1033,298 +1340,19 @@
 <context>
     <name>carom::ui::NumberBox</name>
     <message>
-        <location filename="../ui/number_box.cpp" line="35"/>
+        <location filename="../ui/number_box.cpp" line="30"/>
         <source>must be finite (got %1)</source>
         <translation>должно быть конечным (получено %1)</translation>
     </message>
     <message>
-        <location filename="../ui/number_box.cpp" line="37"/>
+        <location filename="../ui/number_box.cpp" line="32"/>
         <source>must be between %1 and %2 (got %3)</source>
         <translation>должно быть от %1 до %2 (получено %3)</translation>
     </message>
     <message>
-        <location filename="../ui/number_box.cpp" line="76"/>
+        <location filename="../ui/number_box.cpp" line="72"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::OutlineDock</name>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="183"/>
-        <source>Outline</source>
-        <translation>Структура</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::OutlineModel</name>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="107"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="141"/>
-        <source>Rename</source>
-        <translation>Переименовать</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::PropertiesDock</name>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="197"/>
-        <source>Properties</source>
-        <translation>Свойства</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="121"/>
-        <source>m</source>
-        <translation>m</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="122"/>
-        <source>m/s</source>
-        <translation>m/s</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="123"/>
-        <source>kg</source>
-        <translation>kg</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="124"/>
-        <source>s</source>
-        <translation>s</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="125"/>
-        <source>m/s²</source>
-        <translation>m/s²</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="126"/>
-        <source>(any length)</source>
-        <translation>(любой длины)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
-        <source>Name</source>
-        <translation>Имя</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="127"/>
-        <source>Rename</source>
-        <translation>Переименовать</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
-        <source>…</source>
-        <translation>…</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="211"/>
-        <source>Choose a colour</source>
-        <translation>Выбрать цвет</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
-        <source>Colour</source>
-        <translation>Цвет</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="133"/>
-        <source>Change Colour</source>
-        <translation>Изменить цвет</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="377"/>
-        <source>default</source>
-        <translation>по умолчанию</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
-        <source>Position</source>
-        <translation>Положение</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="140"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
-        <source>Move</source>
-        <translation>Переместить</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <source>Velocity</source>
-        <translation>Скорость</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <source>Change Velocity</source>
-        <translation>Изменить скорость</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
-        <source>Radius</source>
-        <translation>Радиус</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="144"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="158"/>
-        <source>Change Radius</source>
-        <translation>Изменить радиус</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
-        <source>Mass</source>
-        <translation>Масса</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="146"/>
-        <source>Change Mass</source>
-        <translation>Изменить массу</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="148"/>
-        <source>Point</source>
-        <translation>Точка</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
-        <source>Normal</source>
-        <translation>Нормаль</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="153"/>
-        <source>Turn Plane</source>
-        <translation>Повернуть плоскость</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
-        <source>Axis</source>
-        <translation>Ось</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="155"/>
-        <source>Turn Cylinder</source>
-        <translation>Повернуть цилиндр</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
-        <source>Gravity</source>
-        <translation>Гравитация</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
-        <source>Change Gravity</source>
-        <translation>Изменить гравитацию</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <source>Time step</source>
-        <translation>Шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <source>Change Time Step</source>
-        <translation>Изменить шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
-        <source>Restitution</source>
-        <translation>Восстановление</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="302"/>
-        <source>Change Restitution</source>
-        <translation>Изменить коэффициент восстановления</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
-        <source>0 to 1; empty: the world&apos;s restitution</source>
-        <translation>От 0 до 1; пусто — коэффициент мира</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
-        <source>Method</source>
-        <translation>Метод</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
-        <source>Change Method</source>
-        <translation>Изменить метод</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
-        <source>Integrator</source>
-        <translation>Интегратор</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
-        <source>Change Integrator</source>
-        <translation>Изменить интегратор</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="337"/>
-        <source>World (nothing selected)</source>
-        <translation>Мир (ничего не выбрано)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="61"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="431"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="468"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="345"/>
-        <source>%1: %n selected</source>
-        <translation>
-            <numerusform>%1: выбран %n</numerusform>
-            <numerusform>%1: выбрано %n</numerusform>
-            <numerusform>%1: выбрано %n</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="348"/>
-        <source>%n objects selected</source>
-        <translation>
-            <numerusform>Выбран %n объект</numerusform>
-            <numerusform>Выбрано %n объекта</numerusform>
-            <numerusform>Выбрано %n объектов</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="357"/>
-        <source>mixed</source>
-        <translation>разные</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="391"/>
-        <source>world&apos;s (%1)</source>
-        <translation>как у мира (%1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="212"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
-        <source>Object Colour</source>
-        <translation>Цвет объекта</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::SceneDocument</name>
-    <message>
-        <location filename="../ui/editor/scene_document.cpp" line="56"/>
-        <source>untitled</source>
-        <translation>без имени</translation>
-    </message>
-    <message>
-        <location filename="../ui/editor/scene_document.cpp" line="70"/>
-        <source>floor</source>
-        <translation>пол</translation>
     </message>
 </context>
 <context>
@@ -1433,6 +1461,14 @@
         <location filename="../ui/scene_files.cpp" line="174"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SimulationSync</name>
+    <message>
+        <location filename="../ui/simulation_sync.cpp" line="51"/>
+        <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
+        <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
 </context>
 <context>

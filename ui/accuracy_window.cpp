@@ -1,13 +1,12 @@
 #include "ui/accuracy_window.h"
 
-#include "ui/call_queue.h"
-
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QLogValueAxis>
 #include <QProgressBar>
 #include <QPushButton>
@@ -23,7 +22,6 @@ namespace {
 
 // Errors of exactly zero cannot sit on a log axis: they are drawn at this floor.
 constexpr double kErrorFloor = 1e-16;
-const std::vector<double> kStepFactors{0.25, 0.5, 1.0, 2.0, 4.0};
 
 QString caseName(const StudyCase& c) {
   if (c.method == Method::Exact) return QString::fromUtf8(methodName(c.method));
@@ -35,7 +33,11 @@ QString caseName(const StudyCase& c) {
 }  // namespace
 
 AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
-    : QDialog(parent), scene_(scene), calls_(new CallQueue(this)) {
+    : QDialog(parent), scene_(scene), runner_(std::make_unique<AccuracyStudyRunner>()) {
+  connect(runner_.get(), &AccuracyStudyRunner::referenceReady, this,
+          [this] { progress_->setValue(progress_->value() + 1); });
+  connect(runner_.get(), &AccuracyStudyRunner::resultReady, this, &AccuracyWindow::addResult);
+  connect(runner_.get(), &AccuracyStudyRunner::finished, this, &AccuracyWindow::finish);
   metricLabel_ = new QLabel;
   metric_ = new QComboBox;
   metric_->addItems(QStringList(4));  // named by retranslate()
@@ -82,6 +84,8 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this] { applySelected(); });
   note_ = new QLabel;
   note_->setWordWrap(true);
+  summaryLabel_ = new QLabel;
+  summaryLabel_->setWordWrap(true);
   retranslate();
   resize(900, 760);
 
@@ -97,6 +101,7 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   layout->addWidget(chartView, 2);
   layout->addWidget(table_, 1);
   layout->addWidget(note_);
+  layout->addWidget(summaryLabel_);
   layout->addLayout(bottom);
 }
 
@@ -119,47 +124,47 @@ void AccuracyWindow::retranslate() {
   note_->setText(
       tr("Each point is one run of the current scene; lower and further left is better. Choose "
          "a run to use its settings."));
+  showSummary();
   replot();  // the error axis is named after the metric
 }
 
 AccuracyWindow::~AccuracyWindow() {
-  cancel_ = true;
-  if (thread_.joinable()) thread_.join();
+  // Before the widgets go: stops the runs under way and waits for them.
+  runner_.reset();
 }
 
 void AccuracyWindow::start() {
-  if (running_) return;
-  cases_ = studyCases(scene_.world, kStepFactors);
+  if (isRunning()) return;
+  cases_ = studyCases(scene_.world, kStudyStepFactors);
   results_.clear();
   table_->setRowCount(0);
   progress_->setRange(0, static_cast<int>(cases_.size()) + 1);
   progress_->setValue(0);
-  cancel_ = false;
-  running_ = true;
+  summary_.reset();
+  showSummary();
   cancelButton_->setEnabled(true);
-  // The runs happen on their own thread; each result comes back as a queued call (calls_, on
-  // the GUI thread).
-  thread_ = std::thread([this, scene = scene_, cases = cases_, duration = duration_] {
-    const std::vector<Vec3> reference = exactFinalPositions(scene, duration);
-    calls_->post([this] { progress_->setValue(1); });
-    for (const StudyCase& c : cases) {
-      if (cancel_) break;
-      const StudyResult result = runStudyCase(scene, c, duration, reference, &cancel_);
-      if (cancel_) break;
-      calls_->post([this, result] { addResult(result); });
-    }
-    calls_->post([this] { finish(); });
-  });
+  runner_->start(scene_, cases_, duration_);
 }
 
 void AccuracyWindow::cancel() {
-  cancel_ = true;
+  runner_->cancel();
   cancelButton_->setEnabled(false);
 }
 
 void AccuracyWindow::addResult(const StudyResult& result) {
-  results_.push_back(result);
-  const int row = table_->rowCount();
+  // Results come in the order the runs finish; rows and results_ stay in the order of cases_.
+  const auto caseIndex = [this](const StudyResult& r) {
+    const StudyCase& s = r.settings;
+    const auto found = std::find_if(cases_.begin(), cases_.end(), [&s](const StudyCase& c) {
+      return c.method == s.method && c.integrator == s.integrator && c.timeStep == s.timeStep;
+    });
+    return found - cases_.begin();
+  };
+  const auto at = std::upper_bound(
+      results_.begin(), results_.end(), result,
+      [&](const StudyResult& a, const StudyResult& b) { return caseIndex(a) < caseIndex(b); });
+  const int row = static_cast<int>(at - results_.begin());
+  results_.insert(at, result);
   table_->insertRow(row);
   const QStringList cells{caseName(result.settings),
                           QString::number(result.computeSeconds, 'g', 3),
@@ -173,12 +178,40 @@ void AccuracyWindow::addResult(const StudyResult& result) {
   replot();
 }
 
-void AccuracyWindow::finish() {
-  if (thread_.joinable()) thread_.join();
-  running_ = false;
+void AccuracyWindow::finish(const StudySummary& summary) {
+  summary_ = summary;
+  showSummary();
   cancelButton_->setEnabled(false);
   progress_->setValue(progress_->maximum());
   emit studyFinished();
+}
+
+void AccuracyWindow::showSummary() {
+  if (!summary_) {
+    summaryLabel_->clear();
+    return;
+  }
+  const QLocale locale;
+  const QString runs = tr("%Ln runs", nullptr, summary_->runs);
+  // "3.1", "0.0046", "12": two significant digits, without an exponent.
+  const double seconds = summary_->wallSeconds;
+  const QString wall =
+      seconds >= 10.0 ? locale.toString(seconds, 'f', 0) : locale.toString(seconds, 'g', 2);
+  if (summary_->cancelled) {
+    summaryLabel_->setText(tr("Cancelled after %1 in %2 s.").arg(runs, wall));
+    return;
+  }
+  const QString threads = tr("%Ln threads", nullptr, summary_->threads);
+  // The speed-up sets the reference and the runs one after another against the wall time; a
+  // study of a few milliseconds is mostly overhead and may gain nothing.
+  const double speedUp = summary_->speedUp();
+  if (speedUp < 1.05) {
+    summaryLabel_->setText(
+        tr("%1 in %2 s on %3, no faster than one after another").arg(runs, wall, threads));
+    return;
+  }
+  summaryLabel_->setText(tr("%1 in %2 s on %3, %4× faster than one after another")
+                             .arg(runs, wall, threads, locale.toString(speedUp, 'f', 1)));
 }
 
 double AccuracyWindow::errorOf(const StudyResult& result) const {

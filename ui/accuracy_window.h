@@ -1,14 +1,15 @@
 #pragma once
 // The Speed vs accuracy window: runs the current scene under each method, integrator and a range
-// of time steps on a background thread, and plots each run's error against its computing time.
-// Choosing a run applies its settings to the sandbox.
+// of time steps on all cores (AccuracyStudyRunner), and plots each run's error against its
+// computing time. Choosing a run applies its settings to the sandbox.
 
 #include "sim/accuracy_study.h"
+#include "ui/accuracy_study_runner.h"
 
 #include <QDialog>
 
-#include <atomic>
-#include <thread>
+#include <memory>
+#include <optional>
 #include <vector>
 
 class QChart;
@@ -22,8 +23,6 @@ class QTableWidget;
 
 namespace carom::ui {
 
-class CallQueue;
-
 class AccuracyWindow : public QDialog {
   Q_OBJECT
  public:
@@ -34,7 +33,8 @@ class AccuracyWindow : public QDialog {
   void setDuration(double seconds) { duration_ = seconds; }
   void start();
   void cancel();
-  bool isRunning() const { return running_; }
+  bool isRunning() const { return runner_->isRunning(); }
+  // In the order of the cases (exact first), whatever order the runs finish in.
   const std::vector<StudyResult>& results() const { return results_; }
 
  signals:
@@ -47,7 +47,8 @@ class AccuracyWindow : public QDialog {
  private:
   void retranslate();
   void addResult(const StudyResult& result);
-  void finish();
+  void finish(const StudySummary& summary);
+  void showSummary();
   void replot();
   void selectNearest(carom::Method method, const QPointF& point);
   void applySelected();
@@ -57,10 +58,8 @@ class AccuracyWindow : public QDialog {
   double duration_ = 5.0;
   std::vector<StudyCase> cases_;
   std::vector<StudyResult> results_;
-  std::atomic<bool> cancel_{false};
-  std::thread thread_;
-  CallQueue* calls_;  // the study thread's results, run on the GUI thread
-  bool running_ = false;
+  std::unique_ptr<AccuracyStudyRunner> runner_;
+  std::optional<StudySummary> summary_;  // of the last study, once finished
   QLabel* metricLabel_;
   QComboBox* metric_;
   QChart* chart_;
@@ -72,6 +71,7 @@ class AccuracyWindow : public QDialog {
   QPushButton* cancelButton_;
   QPushButton* applyButton_;
   QLabel* note_;
+  QLabel* summaryLabel_;
 };
 
 }  // namespace carom::ui

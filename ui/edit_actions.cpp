@@ -12,11 +12,12 @@
 
 namespace carom::ui {
 
-EditActions::EditActions(SceneDocument* document, std::function<Vec3()> across, QObject* parent)
+EditActions::EditActions(editor::SceneDocument* document, std::function<Vec3()> across,
+                         QObject* parent)
     : QObject(parent), document_(document), across_(std::move(across)) {}
 
 void EditActions::copy() {
-  const Selection& selection = document_->selection();
+  const editor::Selection& selection = document_->selection();
   if (selection.empty()) return;
   const QByteArray json = io::serializeScene(extract(document_->scene(), selection));
   auto* mime = new QMimeData;
@@ -49,9 +50,10 @@ void EditActions::deleteSelection() {
 
 void EditActions::selectAll() {
   const Scene& scene = document_->scene();
-  Selection all;
-  for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder})
-    for (int i = 0; i < objectCount(scene, kind); ++i) all.push_back({kind, i});
+  editor::Selection all;
+  for (editor::ObjectKind kind :
+       {editor::ObjectKind::Ball, editor::ObjectKind::Plane, editor::ObjectKind::Cylinder})
+    for (int i = 0; i < editor::objectCount(scene, kind); ++i) all.push_back({kind, i});
   document_->setSelection(all);
 }
 

@@ -11,15 +11,17 @@
 
 #include <functional>
 
-namespace carom::ui {
-
+namespace carom::editor {
 class SceneDocument;
+}  // namespace carom::editor
+namespace carom::ui {
 
 class EditActions : public QObject {
   Q_OBJECT
  public:
   // `across` gives the direction, in world space, in which inserted balls are shifted aside.
-  EditActions(SceneDocument* document, std::function<Vec3()> across, QObject* parent = nullptr);
+  EditActions(editor::SceneDocument* document, std::function<Vec3()> across,
+              QObject* parent = nullptr);
 
   // The selection, as scene JSON, onto the clipboard (as text too, for other programs).
   void copy();
@@ -39,7 +41,7 @@ class EditActions : public QObject {
   void message(const QString& text);
 
  private:
-  SceneDocument* document_;
+  editor::SceneDocument* document_;
   std::function<Vec3()> across_;
 };
 

@@ -20,7 +20,7 @@
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_sync.h"
-#include "ui/sound/sound_board.h"
+#include "ui/sound_thread.h"
 #include "ui/status_readout.h"
 
 #include <QAction>
@@ -49,7 +49,7 @@ using render::SceneView;
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       simulation_(std::make_unique<SimulationController>()),
-      document_(new SceneDocument(this)) {
+      document_(new editor::SceneDocument(this)) {
   setAcceptDrops(true);
   view_ = new SceneView;
   setCentralWidget(view_);
@@ -66,20 +66,20 @@ MainWindow::MainWindow(QWidget* parent)
   // Below the view, where the plot's time axis has room.
   addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
   energyPlot_->setMinimumHeight(190);
-  sound_ = new sound::SoundBoard(this);
+  sound_ = new SoundThread(this);
   status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
   statusBar()->addPermanentWidget(status_);
-  tools_ = new EditorTools(document_, view_, this);
-  connect(tools_, &EditorTools::refused, this, &MainWindow::showMessage);
-  outlineDock_ = new OutlineDock(document_, this);
+  tools_ = new editor::EditorTools(document_, view_, this);
+  connect(tools_, &editor::EditorTools::refused, this, &MainWindow::showMessage);
+  outlineDock_ = new editor::OutlineDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, outlineDock_);
-  connect(outlineDock_->model(), &OutlineModel::refused, this, &MainWindow::showMessage);
-  propertiesDock_ = new PropertiesDock(document_, this);
+  connect(outlineDock_->model(), &editor::OutlineModel::refused, this, &MainWindow::showMessage);
+  propertiesDock_ = new editor::PropertiesDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
-  connect(propertiesDock_, &PropertiesDock::refused, this, &MainWindow::showMessage);
+  connect(propertiesDock_, &editor::PropertiesDock::refused, this, &MainWindow::showMessage);
   resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
-  recovery_ = new SceneRecovery(document_, this);
+  recovery_ = new editor::SceneRecovery(document_, this);
   files_ = new SceneFiles(document_, this, this);
   connect(files_, &SceneFiles::message, this, &MainWindow::showMessage);
   connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] { playAction_->setChecked(false); });
@@ -107,12 +107,13 @@ MainWindow::MainWindow(QWidget* parent)
   buildToolBar();
   simulation_->setSpeed(speed_->value());
   buildMenus();
-  connect(document_, &SceneDocument::sceneChanged, this, [this](const SceneChange& change) {
-    if (change.world) showWorld();
-  });
-  connect(document_, &SceneDocument::displayNameChanged, this, &MainWindow::updateTitle);
-  connect(document_, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
-  connect(document_, &SceneDocument::selectionChanged, this, [this] {
+  connect(document_, &editor::SceneDocument::sceneChanged, this,
+          [this](const editor::SceneChange& change) {
+            if (change.world) showWorld();
+          });
+  connect(document_, &editor::SceneDocument::displayNameChanged, this, &MainWindow::updateTitle);
+  connect(document_, &editor::SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &editor::SceneDocument::selectionChanged, this, [this] {
     if (followAction_->isChecked()) view_->setFollowedBall(followTarget());
     showSelection();
   });
@@ -412,7 +413,8 @@ void MainWindow::retranslate() {
         toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
   }
   snapAction_->setText(tr("Snap to &Grid"));
-  snapAction_->setToolTip(tr("Moves land on multiples of %1 m").arg(EditorTools::gridStep()));
+  snapAction_->setToolTip(
+      tr("Moves land on multiples of %1 m").arg(editor::EditorTools::gridStep()));
 
   simulationMenu_->setTitle(tr("&Simulation"));
   playAction_->setText(playAction_->isChecked() ? tr("&Pause") : tr("&Run"));
@@ -504,11 +506,13 @@ void MainWindow::editWorld(const QString& text, const std::function<void(World&)
 
 void MainWindow::showSelection() {
   std::vector<int> indices[3];
-  for (const ObjectRef& ref : document_->selection()) indices[int(ref.kind)].push_back(ref.index);
-  view_->setHighlighted(indices[int(ObjectKind::Ball)], indices[int(ObjectKind::Plane)],
-                        indices[int(ObjectKind::Cylinder)]);
+  for (const editor::ObjectRef& ref : document_->selection())
+    indices[int(ref.kind)].push_back(ref.index);
+  view_->setHighlighted(indices[int(editor::ObjectKind::Ball)],
+                        indices[int(editor::ObjectKind::Plane)],
+                        indices[int(editor::ObjectKind::Cylinder)]);
   std::optional<std::pair<Vec3, Vec3>> arrow;
-  if (const std::optional<EditorTools::Handle> handle = tools_->handle())
+  if (const std::optional<editor::EditorTools::Handle> handle = tools_->handle())
     arrow = {handle->base, handle->tip};
   view_->setHandleArrow(arrow);
 }
@@ -524,13 +528,13 @@ QString MainWindow::statusMessage() const {
 void MainWindow::buildToolActions() {
   auto* group = new QActionGroup(this);
   const struct {
-    EditorTools::Tool tool;
+    editor::EditorTools::Tool tool;
     const char* name;
     Qt::Key key;
-  } tools[] = {{EditorTools::Tool::Select, "toolSelect", Qt::Key_V},
-               {EditorTools::Tool::AddBall, "toolAddBall", Qt::Key_B},
-               {EditorTools::Tool::AddPlane, "toolAddPlane", Qt::Key_P},
-               {EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C}};
+  } tools[] = {{editor::EditorTools::Tool::Select, "toolSelect", Qt::Key_V},
+               {editor::EditorTools::Tool::AddBall, "toolAddBall", Qt::Key_B},
+               {editor::EditorTools::Tool::AddPlane, "toolAddPlane", Qt::Key_P},
+               {editor::EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C}};
   toolsBar_ = addToolBar(QString());
   toolsBar_->setObjectName("tools");
   for (const auto& entry : tools) {
@@ -558,8 +562,8 @@ void MainWindow::updateTitle() {
 }
 
 int MainWindow::followTarget() const {
-  for (const ObjectRef& ref : document_->selection())
-    if (ref.kind == ObjectKind::Ball) return ref.index;
+  for (const editor::ObjectRef& ref : document_->selection())
+    if (ref.kind == editor::ObjectKind::Ball) return ref.index;
   return document_->scene().balls.empty() ? -1 : 0;
 }
 
@@ -732,10 +736,10 @@ void MainWindow::useCurrentState() {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
   const Scene& scene = document_->scene();
   if (!snapshot || snapshot->positions.size() != scene.balls.size()) return;
-  Selection balls;
+  editor::Selection balls;
   Scene values;
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
-    balls.push_back({ObjectKind::Ball, static_cast<int>(i)});
+    balls.push_back({editor::ObjectKind::Ball, static_cast<int>(i)});
     values.balls.push_back(scene.balls[i]);
     values.balls.back().position = snapshot->positions[i];
     values.balls.back().velocity = snapshot->velocities[i];

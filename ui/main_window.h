@@ -18,26 +18,26 @@ class QLabel;
 class QMenu;
 class QToolBar;
 
+namespace carom::editor {
+class SceneDocument;
+class EditorTools;
+class OutlineDock;
+class PropertiesDock;
+class SceneRecovery;
+}  // namespace carom::editor
 namespace carom::ui {
 
 class AccuracyWindow;
 class EditActions;
-class SceneDocument;
 class SceneFiles;
-class EditorTools;
 class NumberBox;
-class OutlineDock;
-class PropertiesDock;
-class SceneRecovery;
 class StatusReadout;
+class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
 class SimulationController;
 class SimulationSync;
 }  // namespace carom::ui
-namespace carom::sound {
-class SoundBoard;
-}
 namespace carom::render {
 class SceneView;
 }
@@ -61,15 +61,15 @@ class MainWindow : public QMainWindow {
   bool openExample(const QString& file, bool askToSave);
   bool save();
   bool saveAs();
-  SceneDocument* document() const { return document_; }
-  SceneRecovery* recovery() const { return recovery_; }
+  editor::SceneDocument* document() const { return document_; }
+  editor::SceneRecovery* recovery() const { return recovery_; }
   // At start: offers the scenes that sessions which did not end cleanly left unsaved, newest
   // first, to recover, discard or keep for later; the first one recovered opens as an unsaved
   // scene. Returns whether one did.
   bool offerRecovery();
-  EditorTools* tools() const { return tools_; }
-  OutlineDock* outlineDock() const { return outlineDock_; }
-  PropertiesDock* propertiesDock() const { return propertiesDock_; }
+  editor::EditorTools* tools() const { return tools_; }
+  editor::OutlineDock* outlineDock() const { return outlineDock_; }
+  editor::PropertiesDock* propertiesDock() const { return propertiesDock_; }
   // The status bar's passing message (refusals, saves), as opposed to the status line.
   QString statusMessage() const;
   void showMessage(const QString& message);
@@ -79,7 +79,7 @@ class MainWindow : public QMainWindow {
   void setRunning(bool running);
   QWidget* view() const;
   EnergyPlot* energyPlot() const { return energyPlot_; }
-  sound::SoundBoard& sound() { return *sound_; }
+  SoundThread& sound() { return *sound_; }
   QString statusText() const;
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
   AccuracyWindow* openAccuracyWindow(double duration = 5.0);
@@ -118,17 +118,17 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
-  sound::SoundBoard* sound_ = nullptr;
+  SoundThread* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;
   QAction* antialiasingAction_ = nullptr;
   QAction* largerStepAction_ = nullptr;
   QAction* smallerStepAction_ = nullptr;
   static constexpr const char* kAntialiasingKey = "view/antialiasing";
-  SceneDocument* document_ = nullptr;
+  editor::SceneDocument* document_ = nullptr;
   SceneFiles* files_ = nullptr;         // New, Open, Save, the recent files, the examples
   EditActions* editActions_ = nullptr;  // copy, paste, duplicate, delete, select all
-  EditorTools* tools_ = nullptr;
+  editor::EditorTools* tools_ = nullptr;
   QAction* toolActions_[4] = {};  // in EditorTools::Tool order
   QAction* snapAction_ = nullptr;
   SimulationSync* sync_ = nullptr;  // keeps the simulation in step with the document
@@ -162,9 +162,9 @@ class MainWindow : public QMainWindow {
   QAction* applyToRunningAction_ = nullptr;
   QDockWidget* historyDock_ = nullptr;
   QDockWidget* energyDock_ = nullptr;
-  OutlineDock* outlineDock_ = nullptr;
-  PropertiesDock* propertiesDock_ = nullptr;
-  SceneRecovery* recovery_ = nullptr;
+  editor::OutlineDock* outlineDock_ = nullptr;
+  editor::PropertiesDock* propertiesDock_ = nullptr;
+  editor::SceneRecovery* recovery_ = nullptr;
   static constexpr int kMessageMilliseconds = 8000;
   static constexpr int kDockWidth = 330;
   static constexpr const char* kApplyToRunningKey = "editing/applyToRunningState";

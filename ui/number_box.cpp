@@ -24,13 +24,14 @@ NumberBox::NumberBox(const QString& name, double low, double high, double step, 
 }
 
 QString NumberBox::problem(const QString& text) const {
-  const ParsedNumber parsed = parseNumber(text);
+  const editor::ParsedNumber parsed = editor::parseNumber(text);
   if (!parsed.value) return parsed.problem;
   const double value = *parsed.value;
   if (!std::isfinite(value)) return tr("must be finite (got %1)").arg(text.trimmed());
   if (value < minimum() || value > maximum())
     return tr("must be between %1 and %2 (got %3)")
-        .arg(formatNumber(minimum()), formatNumber(maximum()), formatNumber(value));
+        .arg(editor::formatNumber(minimum()), editor::formatNumber(maximum()),
+             editor::formatNumber(value));
   return {};
 }
 
@@ -47,11 +48,11 @@ double NumberBox::valueFromText(const QString& text) const {
   // The value is shown to six digits; its own text stands for the exact value, so that leaving
   // the box untouched does not round it.
   if (text == textFromValue(value())) return value();
-  return parseNumber(text).value.value_or(value());
+  return editor::parseNumber(text).value.value_or(value());
 }
 
 QString NumberBox::textFromValue(double value) const {
-  return formatShortNumber(value);
+  return editor::formatShortNumber(value);
 }
 
 QSize NumberBox::sizeHint() const {

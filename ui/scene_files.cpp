@@ -35,7 +35,7 @@ constexpr const char* kRecentFilesKey = "files/recent";
 
 }  // namespace
 
-SceneFiles::SceneFiles(SceneDocument* document, QWidget* dialogParent, QObject* parent)
+SceneFiles::SceneFiles(editor::SceneDocument* document, QWidget* dialogParent, QObject* parent)
     : QObject(parent), document_(document), dialogParent_(dialogParent) {}
 
 void SceneFiles::openScene(const carom::Scene& scene, const QString& fileName,
@@ -48,7 +48,7 @@ void SceneFiles::openScene(const carom::Scene& scene, const QString& fileName,
 
 bool SceneFiles::newScene() {
   if (!maybeSave()) return false;
-  openScene(SceneDocument::newScene(), {});
+  openScene(editor::SceneDocument::newScene(), {});
   return true;
 }
 
@@ -100,7 +100,7 @@ void SceneFiles::retranslate() {
 }
 
 bool SceneFiles::offerRecovery() {
-  for (const SceneRecovery::Orphan& orphan : SceneRecovery::orphans()) {
+  for (const editor::SceneRecovery::Orphan& orphan : editor::SceneRecovery::orphans()) {
     const QString name = orphan.originalFile.isEmpty()
                              ? tr("an unsaved scene")
                              : QDir::toNativeSeparators(orphan.originalFile);
@@ -124,7 +124,7 @@ bool SceneFiles::offerRecovery() {
       QMessageBox::warning(dialogParent_, tr("Cannot Recover Scene"), loaded.error);
       continue;  // kept, for a later try
     }
-    SceneRecovery::discard(orphan);
+    editor::SceneRecovery::discard(orphan);
     if (!recover) continue;
     openScene(*loaded.scene, orphan.originalFile);
     document_->markUnsaved();

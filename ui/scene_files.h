@@ -12,14 +12,15 @@
 
 class QWidget;
 
-namespace carom::ui {
-
+namespace carom::editor {
 class SceneDocument;
+}  // namespace carom::editor
+namespace carom::ui {
 
 class SceneFiles : public QObject {
   Q_OBJECT
  public:
-  SceneFiles(SceneDocument* document, QWidget* dialogParent, QObject* parent = nullptr);
+  SceneFiles(editor::SceneDocument* document, QWidget* dialogParent, QObject* parent = nullptr);
 
   // Shows `scene` (valid) as the document read from `fileName` (empty for a new scene; `title`
   // then names it in the title bar and in Save As). Discards unsaved changes.
@@ -68,7 +69,7 @@ class SceneFiles : public QObject {
   static QString lastFolder();
   static void addRecentFile(const QString& fileName);
 
-  SceneDocument* document_;
+  editor::SceneDocument* document_;
   QWidget* dialogParent_;
   // The bundled example open, as an index of exampleFiles(), until another scene opens: its
   // title follows the language, and Save As suggests its file's name.

@@ -2,31 +2,9 @@
 
 #include "ui/call_queue.h"
 #include "ui/simulation_worker.h"
-
-#if defined(__SANITIZE_THREAD__)
-#include <sanitizer/tsan_interface.h>
-#endif
+#include "ui/thread_handover.h"
 
 namespace carom::ui {
-namespace {
-
-// Ending the thread hands it over twice through Qt: quit() to the physics thread, and its end
-// back to wait(). Both go through a futex inside Qt, which ThreadSanitizer cannot see (Debian's
-// Qt is not built with it), so these say so: what the GUI did before quit() comes before the
-// worker is deleted on its thread, and what the worker did comes before wait() returns. They
-// do nothing outside a ThreadSanitizer build.
-void handOver([[maybe_unused]] QThread* thread) {
-#if defined(__SANITIZE_THREAD__)
-  __tsan_release(thread);
-#endif
-}
-void takeOver([[maybe_unused]] QThread* thread) {
-#if defined(__SANITIZE_THREAD__)
-  __tsan_acquire(thread);
-#endif
-}
-
-}  // namespace
 
 SimulationController::SimulationController(QObject* parent)
     : QObject(parent),

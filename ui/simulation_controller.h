@@ -41,6 +41,8 @@ class SimulationController : public QObject {
   void snapshotPublished();
 
  private:
+  // Tests hold the physics thread busy through post(), as a very long batch of steps would.
+  friend class SimulationControllerTestAccess;
   void post(std::function<void()> call);
 
   SnapshotExchange exchange_;

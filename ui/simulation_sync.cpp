@@ -7,13 +7,13 @@
 
 namespace carom::ui {
 
-SimulationSync::SimulationSync(SceneDocument* document, SimulationController* simulation,
+SimulationSync::SimulationSync(editor::SceneDocument* document, SimulationController* simulation,
                                QObject* parent)
     : QObject(parent), document_(document), simulation_(simulation) {
-  connect(document_, &SceneDocument::sceneChanged, this, &SimulationSync::documentChanged);
+  connect(document_, &editor::SceneDocument::sceneChanged, this, &SimulationSync::documentChanged);
 }
 
-void SimulationSync::documentChanged(const SceneChange& change) {
+void SimulationSync::documentChanged(const editor::SceneChange& change) {
   if (!change.objectsChanged()) {
     // World settings change live, from the running state on; the simulation decides what that
     // rebuilds.
@@ -30,7 +30,7 @@ void SimulationSync::documentChanged(const SceneChange& change) {
 
 // The edited scene, with every ball the edit left alone where the running simulation has it.
 // When that state would overlap what the edit added, the edited scene as it is.
-Scene SimulationSync::withRunningState(const SceneChange& change) {
+Scene SimulationSync::withRunningState(const editor::SceneChange& change) {
   const Scene& edited = document_->scene();
   // The run's state in the order of the scene before this change. A snapshot of an older start
   // (the worker has not yet answered the last restart) is of no use: that start is, then.
@@ -45,7 +45,7 @@ Scene SimulationSync::withRunningState(const SceneChange& change) {
       velocities.push_back(ball.velocity);
     }
   }
-  const Scene start = withRunningBalls(edited, change, positions, velocities);
+  const Scene start = editor::withRunningBalls(edited, change, positions, velocities);
   if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty()) {
     emit message(
         tr("The edit does not fit the running state (%1): restarted from the edited scene.")

@@ -12,16 +12,18 @@
 #include <cstdint>
 #include <memory>
 
+namespace carom::editor {
+class SceneDocument;
+struct SceneChange;
+}  // namespace carom::editor
 namespace carom::ui {
 
-class SceneDocument;
 class SimulationController;
-struct SceneChange;
 
 class SimulationSync : public QObject {
   Q_OBJECT
  public:
-  SimulationSync(SceneDocument* document, SimulationController* simulation,
+  SimulationSync(editor::SceneDocument* document, SimulationController* simulation,
                  QObject* parent = nullptr);
 
   void setApplyToRunningState(bool on) { applyToRunningState_ = on; }
@@ -34,10 +36,10 @@ class SimulationSync : public QObject {
   void message(const QString& text);
 
  private:
-  void documentChanged(const SceneChange& change);
-  Scene withRunningState(const SceneChange& change);
+  void documentChanged(const editor::SceneChange& change);
+  Scene withRunningState(const editor::SceneChange& change);
 
-  SceneDocument* document_;
+  editor::SceneDocument* document_;
   SimulationController* simulation_;
   bool applyToRunningState_ = false;
   std::shared_ptr<const Scene> start_;

@@ -1,7 +1,7 @@
 #include "ui/status_readout.h"
 
 #include "ui/simulation_snapshot.h"
-#include "ui/sound/sound_board.h"
+#include "ui/sound_thread.h"
 
 #include <QEvent>
 
@@ -9,7 +9,7 @@
 
 namespace carom::ui {
 
-StatusReadout::StatusReadout(const sound::SoundBoard* sound, QWidget* parent)
+StatusReadout::StatusReadout(const SoundThread* sound, QWidget* parent)
     : QLabel(parent), sound_(sound) {
   fpsClock_.start();
   refreshTimer_.setSingleShot(true);

@@ -10,18 +10,15 @@
 #include <cstdint>
 #include <memory>
 
-namespace carom::sound {
-class SoundBoard;
-}
-
 namespace carom::ui {
 
+class SoundThread;
 struct SimulationSnapshot;
 
 class StatusReadout : public QLabel {
   Q_OBJECT
  public:
-  explicit StatusReadout(const sound::SoundBoard* sound, QWidget* parent = nullptr);
+  explicit StatusReadout(const SoundThread* sound, QWidget* parent = nullptr);
 
   // Each snapshot the window shows; the line follows within kRefreshMilliseconds.
   void showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot);
@@ -43,7 +40,7 @@ class StatusReadout : public QLabel {
   // The collision rate is taken over at least this much simulated time.
   static constexpr double kRateSeconds = 0.5;
 
-  const sound::SoundBoard* sound_;
+  const SoundThread* sound_;
   QTimer refreshTimer_;
   std::shared_ptr<const SimulationSnapshot> latest_;
   int framesRendered_ = 0;

@@ -3,6 +3,7 @@
 #include "app/cli/bench.h"
 #include "app/cli/cli_arguments.h"
 #include "app/cli/run_report.h"
+#include "app/cli/study.h"
 #include "sim/io/scene_file.h"
 #include "sim/validation.h"
 
@@ -76,6 +77,13 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
     }
     case Command::Bench:
       return runBench(command.bench, out, err);
+    case Command::Study: {
+      RunOptions load;
+      load.scenePath = command.study.scenePath;
+      const std::optional<Scene> scene = prepareScene(load, err);
+      if (!scene) return kBadInput;
+      return runStudy(*scene, command.study, out, err);
+    }
   }
   return kInternalError;
 }

@@ -18,14 +18,22 @@ struct RunOptions {
   bool json = false;
 };
 
+// The Speed vs accuracy study of a scene, as the window runs it, for timing its thread pool.
+struct StudyOptions {
+  QString scenePath;
+  double duration = 5.0;       // simulated seconds per run, the window's default
+  std::optional<int> threads;  // empty: one per core
+};
+
 struct BenchOptions {
   bool quick = false;  // small sizes, for a smoke test
 };
 
 struct Command {
-  enum Kind { Help, Version, Run, Validate, Bench } kind = Help;
+  enum Kind { Help, Version, Run, Validate, Bench, Study } kind = Help;
   RunOptions run;      // Run; Validate uses run.scenePath
   BenchOptions bench;  // Bench
+  StudyOptions study;  // Study
 };
 
 struct ParseResult {

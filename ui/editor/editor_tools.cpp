@@ -12,7 +12,7 @@
 #include <numbers>
 #include <utility>
 
-namespace carom::ui {
+namespace carom::editor {
 namespace {
 
 constexpr double kClickSlopPixels = 4.0;  // a press and release closer than this is a click
@@ -331,4 +331,4 @@ void EditorTools::place(const QPointF& position) {
   if (!error.isEmpty()) emit refused(tr("Cannot place it there: %1").arg(error));
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

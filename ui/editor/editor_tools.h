@@ -17,7 +17,7 @@ namespace carom::render {
 class SceneView;
 }
 
-namespace carom::ui {
+namespace carom::editor {
 
 class SceneDocument;
 
@@ -93,4 +93,4 @@ class EditorTools : public QObject {
   bool refusedDuringDrag_ = false;
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -3,7 +3,7 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
-namespace carom::ui {
+namespace carom::editor {
 
 QLocale numberLocale() {
   QLocale locale;
@@ -38,4 +38,4 @@ ParsedNumber parseNumber(const QString& typed) {
           QCoreApplication::translate("NumberText", "“%1” is not a number").arg(text)};
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-namespace carom::ui {
+namespace carom::editor {
 
 // The user's locale without group separators.
 QLocale numberLocale();
@@ -27,4 +27,4 @@ struct ParsedNumber {
 // "inf" read as numbers: whoever checks the value says why they are refused.
 ParsedNumber parseNumber(const QString& typed);
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-namespace carom::ui {
+namespace carom::editor {
 
 Selection normalized(Selection selection) {
   std::sort(selection.begin(), selection.end());
@@ -212,4 +212,4 @@ void insert(Scene& scene, const Selection& selection, const Scene& objects) {
   insertIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

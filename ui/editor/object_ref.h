@@ -8,7 +8,7 @@
 #include <compare>
 #include <vector>
 
-namespace carom::ui {
+namespace carom::editor {
 
 enum class ObjectKind { Ball, Plane, Cylinder };
 
@@ -51,4 +51,4 @@ void remove(Scene& scene, const Selection& selection);
 // The reverse of remove(): `objects`, as extract() took them, go back to the selected places.
 void insert(Scene& scene, const Selection& selection, const Scene& objects);
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-namespace carom::ui {
+namespace carom::editor {
 namespace {
 
 // Children carry their group's number plus one; groups carry 0.
@@ -255,4 +255,4 @@ void OutlineDock::selectionEdited() {
   document_->setSelection(selection);
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -13,7 +13,7 @@
 
 class QTreeView;
 
-namespace carom::ui {
+namespace carom::editor {
 
 class SceneDocument;
 struct SceneChange;
@@ -75,4 +75,4 @@ class OutlineDock : public QDockWidget {
   bool showingSelection_ = false;
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

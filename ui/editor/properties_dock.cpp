@@ -19,7 +19,7 @@
 #include <bit>
 #include <optional>
 
-namespace carom::ui {
+namespace carom::editor {
 
 // A field for a number: six significant digits to read, as the toolbar's boxes show them, and
 // the shortest text that reads back as the same value while it is edited and in its tooltip. A
@@ -492,4 +492,4 @@ void PropertiesDock::pickColor() {
   dialog->open();
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

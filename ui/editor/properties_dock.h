@@ -21,7 +21,7 @@ class QLabel;
 class QLineEdit;
 class QToolButton;
 
-namespace carom::ui {
+namespace carom::editor {
 
 class NumberField;
 class SceneDocument;
@@ -125,4 +125,4 @@ class PropertiesDock : public QDockWidget {
   QComboBox* integrator_ = nullptr;
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

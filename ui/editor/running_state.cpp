@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace carom::ui {
+namespace carom::editor {
 namespace {
 
 std::vector<int> ballIndices(const Selection& refs) {
@@ -41,4 +41,4 @@ Scene withRunningBalls(const Scene& edited, const SceneChange& change,
   return start;
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace carom::ui {
+namespace carom::editor {
 
 // `edited` (the scene after `change`), with each ball the change left alone at the run's
 // `positions` and `velocities`, given in the order of the scene before the change. The balls
@@ -15,4 +15,4 @@ namespace carom::ui {
 Scene withRunningBalls(const Scene& edited, const SceneChange& change,
                        const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities);
 
-}  // namespace carom::ui
+}  // namespace carom::editor

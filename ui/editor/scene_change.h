@@ -3,7 +3,7 @@
 
 #include "ui/editor/object_ref.h"
 
-namespace carom::ui {
+namespace carom::editor {
 
 // What one change did to the scene, for observers that update only what changed. Removals
 // come first, by their places in the scene before; then insertions, by their places after;
@@ -21,4 +21,4 @@ struct SceneChange {
   bool countsChanged() const { return replaced || !removed.empty() || !inserted.empty(); }
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

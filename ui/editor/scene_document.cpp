@@ -8,7 +8,7 @@
 #include <optional>
 #include <utility>
 
-namespace carom::ui {
+namespace carom::editor {
 
 namespace {
 
@@ -213,4 +213,4 @@ void SceneDocument::changed(const SceneChange& change, const Selection& selectio
   if (selectionChanged) emit this->selectionChanged();
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

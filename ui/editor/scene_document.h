@@ -10,7 +10,7 @@
 #include <QString>
 #include <QUndoStack>
 
-namespace carom::ui {
+namespace carom::editor {
 
 class SceneDocument : public QObject {
   Q_OBJECT
@@ -63,7 +63,7 @@ class SceneDocument : public QObject {
 
  signals:
   // After every change of the scene: an edit, undo, redo or reset.
-  void sceneChanged(const carom::ui::SceneChange& change);
+  void sceneChanged(const carom::editor::SceneChange& change);
   void selectionChanged();
   // The file name or the title changed, and with them displayName().
   void displayNameChanged();
@@ -84,4 +84,4 @@ class SceneDocument : public QObject {
   int lastGesture_ = 0;
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -13,7 +13,7 @@
 
 #include <algorithm>
 
-namespace carom::ui {
+namespace carom::editor {
 namespace {
 
 QString pathOf(const QString& id, const char* suffix) {
@@ -112,4 +112,4 @@ void SceneRecovery::discard(const Orphan& orphan) {
     QFile::remove(pathOf(orphan.id, suffix));
 }
 
-}  // namespace carom::ui
+}  // namespace carom::editor

@@ -15,7 +15,7 @@
 
 #include <memory>
 
-namespace carom::ui {
+namespace carom::editor {
 
 class SceneDocument;
 
@@ -61,4 +61,4 @@ class SceneRecovery : public QObject {
   bool changedSinceCopy_ = false;
 };
 
-}  // namespace carom::ui
+}  // namespace carom::editor

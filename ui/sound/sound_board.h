@@ -7,6 +7,7 @@
 #include <QObject>
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -72,11 +73,12 @@ class SoundBoard : public QObject {
   std::array<std::int64_t, SoundCount> lastStartMs_;
   std::deque<std::int64_t> recentStartsMs_;  // starts within the last second, oldest first
   QElapsedTimer clock_;
-  bool muted_ = false;
-  bool available_ = false;
+  // Atomic: ui::SoundThread reads them from the GUI thread.
+  std::atomic<bool> muted_ = false;
+  std::atomic<bool> available_ = false;
   bool loadFailed_ = false;
-  int played_ = 0;
-  int dropped_ = 0;
+  std::atomic<int> played_ = 0;
+  std::atomic<int> dropped_ = 0;
 };
 
 }  // namespace carom::sound

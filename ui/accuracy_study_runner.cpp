@@ -1,0 +1,134 @@
+#include "ui/accuracy_study_runner.h"
+
+#include "ui/call_queue.h"
+#include "ui/thread_handover.h"
+
+#include <QPointer>
+#include <QThread>
+
+#include <algorithm>
+#include <atomic>
+
+namespace carom::ui {
+
+namespace {
+
+// QThreadPool hands each task (and all its captures) to a thread through Qt's own lock, which
+// ThreadSanitizer cannot see (Debian's Qt is not built with it). So every start() says that
+// what came before it is handed over, and every task takes it over before it reads a capture:
+// on this address, which a task can name without reading one.
+char poolHandOver;
+
+}  // namespace
+
+// What the tasks share.
+struct AccuracyStudyRunner::Study {
+  carom::Scene scene;
+  std::vector<StudyCase> cases;
+  double duration = 0.0;
+  std::vector<Vec3> reference;  // written by the reference task before it queues the cases
+  std::atomic<bool> cancel{false};
+};
+
+AccuracyStudyRunner::AccuracyStudyRunner(QObject* parent)
+    : QObject(parent), calls_(new CallQueue(this)) {
+  pool_.setMaxThreadCount(QThread::idealThreadCount());
+}
+
+AccuracyStudyRunner::~AccuracyStudyRunner() {
+  if (study_) study_->cancel = true;
+  // The tasks only post calls to this object, never wait for it, so the GUI thread can wait
+  // here; calls posted and not yet run die with the queue, a child deleted after this.
+  pool_.waitForDone();
+}
+
+void AccuracyStudyRunner::setMaxThreadCount(int threads) {
+  pool_.setMaxThreadCount(std::max(1, threads));
+}
+
+void AccuracyStudyRunner::start(const carom::Scene& scene, const std::vector<StudyCase>& cases,
+                                double duration) {
+  if (study_) return;
+  auto study = std::make_shared<Study>();
+  study->scene = scene;
+  study->cases = cases;
+  study->duration = duration;
+  study_ = study;
+  summary_ = StudySummary{};
+  summary_.threads = std::min(pool_.maxThreadCount(), std::max(1, int(cases.size())));
+  referenceDone_ = false;
+  casesLeft_ = 0;
+  wallClock_.start();
+
+  // The reference first, as a task of its own; it queues the cases once they can use it. Every
+  // task keeps `study` alive and reports to `this`, which outlives them (the destructor waits).
+  handOver(&poolHandOver);
+  pool_.start([this, study] {
+    takeOver(&poolHandOver);
+    const double start = threadCpuSeconds();
+    study->reference = exactFinalPositions(study->scene, study->duration, &study->cancel);
+    const double seconds = threadCpuSeconds() - start;
+    const bool queueCases = !study->cancel;
+    // Posted before the cases are queued, so it arrives before any of their results. The calls
+    // cross to the runner's thread under CallQueue's lock, which ThreadSanitizer sees.
+    calls_->post([this, study, seconds, queueCases] { referenceDone(study, seconds, queueCases); });
+    if (!queueCases) return;
+    for (std::size_t i = 0; i < study->cases.size(); ++i) {
+      handOver(&poolHandOver);
+      pool_.start([this, study, i] {
+        takeOver(&poolHandOver);
+        std::optional<StudyResult> result;
+        if (!study->cancel) {
+          result = runStudyCase(study->scene, study->cases[i], study->duration, study->reference,
+                                &study->cancel);
+          // A run cut short is no measure of anything.
+          if (study->cancel) result.reset();
+        }
+        calls_->post([this, study, result] { caseDone(study, result); });
+      });
+    }
+  });
+}
+
+void AccuracyStudyRunner::cancel() {
+  if (!study_) return;
+  study_->cancel = true;
+  summary_.cancelled = true;
+}
+
+void AccuracyStudyRunner::referenceDone(const std::shared_ptr<Study>& study, double computeSeconds,
+                                        bool casesQueued) {
+  if (study != study_) return;
+  referenceDone_ = true;
+  summary_.referenceSeconds = computeSeconds;
+  casesLeft_ = casesQueued ? study->cases.size() : 0;
+  if (!summary_.cancelled) {
+    const QPointer<AccuracyStudyRunner> alive(this);
+    emit referenceReady();
+    if (!alive) return;  // a receiver deleted the runner
+  }
+  finishIfDone();
+}
+
+void AccuracyStudyRunner::caseDone(const std::shared_ptr<Study>& study,
+                                   const std::optional<StudyResult>& result) {
+  if (study != study_) return;
+  --casesLeft_;
+  if (result && !summary_.cancelled) {
+    ++summary_.runs;
+    summary_.computeSeconds += result->computeSeconds;
+    const QPointer<AccuracyStudyRunner> alive(this);
+    emit resultReady(*result);
+    if (!alive) return;  // a receiver deleted the runner
+  }
+  finishIfDone();
+}
+
+void AccuracyStudyRunner::finishIfDone() {
+  if (!study_ || !referenceDone_ || casesLeft_ > 0) return;
+  summary_.wallSeconds = wallClock_.nsecsElapsed() * 1e-9;
+  study_.reset();
+  emit finished(summary_);
+}
+
+}  // namespace carom::ui
