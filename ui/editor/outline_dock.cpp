@@ -71,9 +71,16 @@ void OutlineModel::sync(const SceneChange& change) {
       emit dataChanged(group, group);  // its count
     }
   }
-  for (const ObjectRef& ref : change.edited) {
-    const QModelIndex row = indexOf(ref);
-    if (row.isValid()) emit dataChanged(row, row);
+  // Runs of neighbours as one range each: Use Current State edits every ball.
+  const Selection& edited = change.edited;
+  for (std::size_t first = 0; first < edited.size();) {
+    std::size_t last = first;
+    while (last + 1 < edited.size() && edited[last + 1].kind == edited[first].kind &&
+           edited[last + 1].index == edited[last].index + 1)
+      ++last;
+    const QModelIndex top = indexOf(edited[first]), bottom = indexOf(edited[last]);
+    if (top.isValid() && bottom.isValid()) emit dataChanged(top, bottom);
+    first = last + 1;
   }
 }
 
