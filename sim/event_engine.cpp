@@ -52,16 +52,12 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   tracks_.resize(n);
   predictions_.resize(n);
   restSpeed_.resize(n);
-  burstFlight_.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& p = particles_[i];
     p.resting = state[i].resting;
     tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
                   bodies.radius[i]};
     restSpeed_[i] = restSpeed(gravity_, bodies.radius[i]);
-    burstFlight_[i] = restSpeed_[i] > 0.0
-                          ? tolerance::kBurstFlightFraction * bodies.radius[i] / restSpeed_[i]
-                          : 0.0;
   }
   buildGrid(state);
   buildStaticLists();
@@ -417,6 +413,7 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
+  const double speed = m.velocity.norm();
   const bool pressed = gravity_.dot(n) < 0.0;
   const double rest = restSpeed_[i];
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
@@ -433,8 +430,11 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
   resolveAgainstSurface(m.velocity, n, restitution, minimum);
   changed(i);
-  // A cycle of contacts that lets time advance by round-off only must not hang the run.
-  if (now_ - p.lastSurfaceCollision <= burstFlight_[i]) {
+  // A cycle of contacts that lets time advance by round-off only must not hang the run. The
+  // flight since the last contact is negligible by the ball's own measure, its speed times the
+  // time against its size, so a fast ball crossing a box is never taken for a wedged one.
+  if ((now_ - p.lastSurfaceCollision) * speed <=
+      tolerance::kBurstTravelFraction * bodies_.radius[i]) {
     if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) putToRest(i, stats);
   } else {
     p.collisionsInBurst = 0;

@@ -134,7 +134,6 @@ class EventEngine {
   };
   std::vector<Prediction> predictions_;
   std::vector<double> restSpeed_;
-  std::vector<double> burstFlight_;  // a flight shorter than this is negligible (tolerances.h)
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell

@@ -52,8 +52,9 @@ inline constexpr double kSupportSlope = 1e-6;
 // flight of the last, is put to rest: the last guard against a cycle of contacts that lets time
 // advance by mere round-off (a ball wedged between shapes).
 inline constexpr int kMaxCollisionsInBurst = 64;
-// A flight is negligible when shorter than this fraction of the time the rest speed takes to
-// cross the ball's radius.
-inline constexpr double kBurstFlightFraction = 1e-6;
+// A flight is negligible when the ball, at its speed when it arrives, travelled less than this
+// fraction of its radius. It acts on a ball wedged in a gap narrower than that (test_rest), and
+// not on a ball of any speed that crosses its container (tested up to 1e10 m/s).
+inline constexpr double kBurstTravelFraction = 1e-6;
 
 }  // namespace carom::tolerance
