@@ -103,6 +103,7 @@ class EventEngine {
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
   // n pointing to the ball.
   void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats);
+  void leaveTouchingStatics(int i, RunStats& stats);
   void changed(int i);
   void putToRest(int i, RunStats& stats);
   void wake(int i, RunStats& stats);

@@ -52,9 +52,13 @@ inline constexpr double kSupportSlope = 1e-6;
 // flight of the last, is put to rest: the last guard against a cycle of contacts that lets time
 // advance by mere round-off (a ball wedged between shapes).
 inline constexpr int kMaxCollisionsInBurst = 64;
-// A flight is negligible when the ball, at its speed when it arrives, travelled less than this
-// fraction of its radius. It acts on a ball wedged in a gap narrower than that (test_rest), and
-// not on a ball of any speed that crosses its container (tested up to 1e10 m/s).
-inline constexpr double kBurstTravelFraction = 1e-6;
+// A flight is negligible when the ball, at its speed when it arrives, travelled no further than
+// touching distance (kTouchFraction of its radius). It acts on a ball jammed in a gap no wider
+// than that (test_rest), and not on a ball of any speed that crosses its container (tested up
+// to 1e10 m/s) or bounces down a wedge.
+inline constexpr double kBurstTravelFraction = kTouchFraction;
+// A ball touching several static shapes at once reflects off them in one event, at most this
+// many times (a wedge of angle θ takes about π/θ; see EventEngine::leaveTouchingStatics).
+inline constexpr long kMaxSimultaneousReflections = 10'000'000;
 
 }  // namespace carom::tolerance
