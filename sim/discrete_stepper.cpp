@@ -6,6 +6,7 @@
 #include "sim/broad_phase.h"
 #include "sim/integrator.h"
 #include "sim/response.h"
+#include "sim/step_clock.h"
 #include "sim/stepper.h"
 
 #include <algorithm>
@@ -17,7 +18,7 @@ class DiscreteStepper final : public Stepper {
  public:
   DiscreteStepper(const Bodies& bodies, const StepperSettings& settings,
                   const std::vector<BallState>& state, double now)
-      : bodies_(bodies), settings_(settings), now_(now) {
+      : bodies_(bodies), settings_(settings), clock_(now, settings.timeStep) {
     for (const BallState& s : state) {
       positions_.push_back(s.position);
       velocities_.push_back(s.velocity);
@@ -25,9 +26,13 @@ class DiscreteStepper final : public Stepper {
   }
 
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
-    now_ = stepUntil(now_, end, settings_.timeStep, [&](double h) { step(h, stats, log); });
+    clock_.advanceTo(end, [&](double h, double stepEnd) { step(h, stepEnd, stats, log); });
   }
-  double now() const override { return now_; }
+  void advanceSteps(std::uint64_t count, RunStats& stats,
+                    std::vector<CollisionRecord>* log) override {
+    clock_.advanceSteps(count, [&](double h, double stepEnd) { step(h, stepEnd, stats, log); });
+  }
+  double now() const override { return clock_.now(); }
   std::vector<BallState> state() const override {
     std::vector<BallState> state(positions_.size());
     for (std::size_t i = 0; i < state.size(); ++i)
@@ -41,7 +46,7 @@ class DiscreteStepper final : public Stepper {
   }
 
  private:
-  void step(double h, RunStats& stats, std::vector<CollisionRecord>* log) {
+  void step(double h, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     const KickSplit split = kickSplit(settings_.integrator);
     const Vec3 before = (pendingKick_ + split.before * h) * settings_.gravity;
     pendingKick_ = split.after * h;
@@ -50,11 +55,9 @@ class DiscreteStepper final : public Stepper {
       velocities_[i] += before;
       positions_[i] += h * velocities_[i];
     }
-    const double time = now_ + h;
     for (int i = 0; i < n; ++i) resolveStatics(i, time, stats, log);
     bins_.build(positions_, 2.0 * bodies_.maxRadius);
     bins_.forEachCandidatePair([&](int i, int j) { resolvePair(i, j, time, stats, log); });
-    now_ = time;
     ++stats.steps;
     stats.ballSteps += n;
   }
@@ -120,7 +123,7 @@ class DiscreteStepper final : public Stepper {
 
   const Bodies& bodies_;
   StepperSettings settings_;
-  double now_;
+  StepClock clock_;
   double pendingKick_ = 0.0;
   std::vector<Vec3> positions_;
   std::vector<Vec3> velocities_;

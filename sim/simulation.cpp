@@ -44,6 +44,14 @@ void Simulation::advance(double duration) {
                       logCollisions_ ? &collisionLog_ : nullptr);
 }
 
+void Simulation::advanceTo(double time) {
+  stepper_->advanceTo(time, stats_, logCollisions_ ? &collisionLog_ : nullptr);
+}
+
+void Simulation::step() {
+  stepper_->advanceSteps(1, stats_, logCollisions_ ? &collisionLog_ : nullptr);
+}
+
 double Simulation::time() const {
   return stepper_->now();
 }

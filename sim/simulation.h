@@ -24,10 +24,16 @@ class Simulation {
 
   // Advances simulated time by `duration` (>= 0). `exact` goes from event to event and lands on
   // the target exactly; `swept` and `discrete` take steps of the world's time step, the last one
-  // shortened so that the target is met.
+  // shortened so that the target is met. Their steps are counted from the time the world was
+  // last set, so a target within rounding of a step's end takes whole steps only, however the
+  // run is cut into calls (stepper.h, StepClock).
   void advance(double duration);
-  // One step of the world's time step.
-  void step() { advance(world_.timeStep); }
+  // Advances to simulated time `time` (no-op when not after time()), as advance() does. Callers
+  // cutting a run into pieces should give each piece's end here rather than its length, so
+  // that the pieces' ends are not sums.
+  void advanceTo(double time);
+  // One whole step of the world's time step (`exact`: that much time).
+  void step();
 
   double time() const;
   const World& world() const { return world_; }

@@ -5,6 +5,7 @@
 #include "sim/bodies.h"
 #include "sim/run_stats.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ class Stepper {
   virtual ~Stepper() = default;
   // Advances to time `end` >= now(); `log`, when given, receives every collision.
   virtual void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) = 0;
+  // Advances by `count` whole time steps (`exact`: by that much time).
+  virtual void advanceSteps(std::uint64_t count, RunStats& stats,
+                            std::vector<CollisionRecord>* log) = 0;
   virtual double now() const = 0;
   virtual std::vector<BallState> state() const = 0;
   // What this method models, one short phrase each.
@@ -36,17 +40,5 @@ std::unique_ptr<Stepper> makeSweptStepper(const Bodies& bodies, const StepperSet
                                           const std::vector<BallState>& state, double now);
 std::unique_ptr<Stepper> makeDiscreteStepper(const Bodies& bodies, const StepperSettings& settings,
                                              const std::vector<BallState>& state, double now);
-
-// Splits [now, end] into steps of `timeStep`, the last one shortened, and calls step(h) for each.
-template <typename StepFunction>
-double stepUntil(double now, double end, double timeStep, StepFunction&& step) {
-  while (now < end) {
-    const double remaining = end - now;
-    const bool last = remaining <= timeStep * (1.0 + 1e-12);
-    step(last ? remaining : timeStep);
-    now = last ? end : now + timeStep;
-  }
-  return now;
-}
 
 }  // namespace carom

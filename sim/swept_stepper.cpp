@@ -4,6 +4,7 @@
 
 #include "sim/event_engine.h"
 #include "sim/integrator.h"
+#include "sim/step_clock.h"
 #include "sim/stepper.h"
 
 namespace carom {
@@ -14,21 +15,17 @@ class SweptStepper final : public Stepper {
   SweptStepper(const Bodies& bodies, const StepperSettings& settings,
                const std::vector<BallState>& state, double now)
       : settings_(settings),
-        engine_(bodies, state, now, settings.gravity, Vec3::Zero(), settings.collapseSpeed) {}
+        engine_(bodies, state, now, settings.gravity, Vec3::Zero(), settings.collapseSpeed),
+        clock_(now, settings.timeStep) {}
 
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
-    const KickSplit split = kickSplit(settings_.integrator);
-    stepUntil(engine_.now(), end, settings_.timeStep, [&](double h) {
-      engine_.setHorizon(engine_.now() + h);
-      // The previous step's trailing kick and this step's leading one are given together.
-      kick(pendingKick_ + split.before * h);
-      pendingKick_ = split.after * h;
-      engine_.advanceTo(engine_.now() + h, stats, log);
-      ++stats.steps;
-      stats.ballSteps += engine_.ballCount();
-    });
+    clock_.advanceTo(end, [&](double h, double stepEnd) { step(h, stepEnd, stats, log); });
   }
-  double now() const override { return engine_.now(); }
+  void advanceSteps(std::uint64_t count, RunStats& stats,
+                    std::vector<CollisionRecord>* log) override {
+    clock_.advanceSteps(count, [&](double h, double stepEnd) { step(h, stepEnd, stats, log); });
+  }
+  double now() const override { return clock_.now(); }
   std::vector<BallState> state() const override {
     std::vector<BallState> state = engine_.state();
     for (BallState& s : state)
@@ -42,6 +39,17 @@ class SweptStepper final : public Stepper {
   }
 
  private:
+  void step(double h, double stepEnd, RunStats& stats, std::vector<CollisionRecord>* log) {
+    const KickSplit split = kickSplit(settings_.integrator);
+    engine_.setHorizon(stepEnd);
+    // The previous step's trailing kick and this step's leading one are given together.
+    kick(pendingKick_ + split.before * h);
+    pendingKick_ = split.after * h;
+    engine_.advanceTo(stepEnd, stats, log);
+    ++stats.steps;
+    stats.ballSteps += engine_.ballCount();
+  }
+
   void kick(double seconds) {
     std::vector<Vec3> velocities(engine_.ballCount());
     for (int i = 0; i < engine_.ballCount(); ++i)
@@ -51,6 +59,7 @@ class SweptStepper final : public Stepper {
 
   StepperSettings settings_;
   EventEngine engine_;
+  StepClock clock_;
   double pendingKick_ = 0.0;  // seconds of gravity owed to the velocities since the last step
 };
 

@@ -13,8 +13,17 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QElapsedTimer>
+#include <QThread>
+
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+
+#include <fcntl.h>
+#include <pty.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 // A run must end by itself, without crashing, with the given exit code.
 #define VERIFY_EXIT(run, code)                                                                 \
@@ -148,6 +157,79 @@ QList<QByteArray> nonEmptyLines(const QByteArray& text) {
   for (const QByteArray& line : text.split('\n'))
     if (!line.trimmed().isEmpty()) lines << line;
   return lines;
+}
+
+// A run stopped with Ctrl+C: the process is started, given `waitMs` to get going, sent SIGINT
+// and then given `timeoutMs` to print its report and end. When `terminal` is set, its standard
+// error is a pseudo-terminal, read into `err`, as in an interactive shell.
+CliRun interruptCli(const QStringList& arguments, int waitMs, bool terminal = false) {
+  CliRun run;
+  run.arguments = arguments;
+  int master = -1;
+  int slave = -1;
+  if (terminal && ::openpty(&master, &slave, nullptr, nullptr, nullptr) != 0) {
+    run.processError = "openpty failed";
+    return run;
+  }
+  QProcess process;
+  process.setProgram(QStringLiteral(CAROM_CLI_PATH));
+  process.setArguments(arguments);
+  process.setStandardInputFile(QProcess::nullDevice());
+  if (terminal) process.setChildProcessModifier([slave] { ::dup2(slave, STDERR_FILENO); });
+  process.start();
+  if (terminal) {
+    ::close(slave);
+    ::fcntl(master, F_SETFL, ::fcntl(master, F_GETFL) | O_NONBLOCK);
+  }
+  const auto readTerminal = [&] {
+    char buffer[4096];
+    ssize_t n = 0;
+    while (terminal && (n = ::read(master, buffer, sizeof buffer)) > 0) run.err.append(buffer, n);
+  };
+  QElapsedTimer waited;
+  waited.start();
+  while (waited.elapsed() < waitMs && process.state() != QProcess::NotRunning) {
+    process.waitForFinished(50);
+    readTerminal();
+  }
+  if (process.state() != QProcess::NotRunning) ::kill(pid_t(process.processId()), SIGINT);
+  QElapsedTimer ending;
+  ending.start();
+  while (!(run.finished = process.waitForFinished(50)) && ending.elapsed() < kTimeoutMs)
+    readTerminal();
+  readTerminal();
+  if (!run.finished) {
+    run.processError = "did not end after SIGINT";
+    process.kill();
+    process.waitForFinished(5000);
+  }
+  if (terminal) ::close(master);
+  run.status = process.exitStatus();
+  run.exitCode = process.exitCode();
+  run.out = process.readAllStandardOutput();
+  if (!terminal) run.err = process.readAllStandardError();
+  return run;
+}
+
+// A scene of mixed sizes whose set-up (first prediction, overlap checks) costs far more than a
+// short run: one large ball next to a lattice of 4,096 small ones, all in one cell of a grid
+// sized for the large one.
+QByteArray mixedSizeScene() {
+  QByteArrayList balls{R"({"position": [40, 0, 0], "radius": 10})"};
+  constexpr int kSide = 16;
+  for (int i = 0; i < kSide; ++i)
+    for (int j = 0; j < kSide; ++j)
+      for (int k = 0; k < kSide; ++k)
+        balls << QString(R"({"position": [%1, %2, %3], "velocity": [%4, %5, 0], "radius": 0.01})")
+                     .arg(i * 0.05)
+                     .arg(j * 0.05)
+                     .arg(k * 0.05)
+                     .arg(((i * 7 + j * 3 + k) % 5 - 2) * 0.1)
+                     .arg(((i + j * 5 + k * 3) % 5 - 2) * 0.1)
+                     .toUtf8();
+  return R"({"format": "carom-scene", "version": 1, "world": {"gravity": [0, 0, 0]},
+ "balls": [)" +
+         balls.join(",\n") + "]}\n";
 }
 
 }  // namespace
@@ -332,9 +414,9 @@ class TestCli : public QObject {
   void runMethods_data() {
     QTest::addColumn<QString>("method");
     QTest::addColumn<QString>("integrator");
-    for (const char* method : {"exact", "swept", "discrete"})
-      for (const char* integrator : {"explicit-euler", "symplectic-euler", "velocity-verlet"})
-        QTest::addRow("%s %s", method, integrator) << QString(method) << QString(integrator);
+    for (const QString method : {"exact", "swept", "discrete"})
+      for (const QString integrator : {"explicit-euler", "symplectic-euler", "velocity-verlet"})
+        QTest::newRow(qPrintable(method + ' ' + integrator)) << method << integrator;
   }
   void runMethods() {
     QFETCH(QString, method);
@@ -668,6 +750,13 @@ class TestCli : public QObject {
         "planes": [{"point": [0, 0, 0], "normal": [0, 1, 0]}],
         "balls": [{"position": [0, -0.1, 0], "radius": 0.1}])")
                                          << QStringList{"balls[0].position", "planes[0]", "behind"};
+    QTest::newRow("duplicate top-level key")
+        << QByteArray(R"({"format": "carom-scene", "version": 1, "version": 1})")
+        << QStringList{"version: duplicate key"};
+    QTest::newRow("duplicate key in a ball") << sceneText(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [1, 0, 0], "radius": 0.1},
+        {"position": [2, 0, 0], "radius": 0.1, "radius": 0.2}])")
+                                             << QStringList{"balls[2].radius: duplicate key"};
     QTest::newRow("ball inside a cylinder")
         << sceneText(R"(
         "cylinders": [{"point": [0, 0, 0], "axis": [0, 1, 0], "radius": 1}],
@@ -708,6 +797,161 @@ class TestCli : public QObject {
         runCli({"run", magicRoom(), "--duration", "1", "--json"}, kTimeoutMs, "/dev/full");
     QVERIFY2(run.finished && run.status == QProcess::NormalExit, qPrintable(run.describe()));
     QVERIFY2(run.exitCode != 0, qPrintable(run.describe()));
+  }
+
+  // --- issue 12: the runner counts honestly ---
+
+  // --trajectory reports every step but must not change the steps: 10,000 asked, 10,000 taken
+  // with and without it, and the same final state to the last bit.
+  void trajectoryKeepsTheSteps_data() {
+    QTest::addColumn<QString>("method");
+    for (const char* method : {"exact", "swept", "discrete"}) QTest::newRow(method) << method;
+  }
+  void trajectoryKeepsTheSteps() {
+    QFETCH(QString, method);
+    const QStringList arguments{"run",  magicRoom(), "--duration", "100",   "--dt",
+                                "0.01", "--method",  method,       "--json"};
+    const CliRun plain = runCli(arguments);
+    VERIFY_EXIT(plain, 0);
+    const QString csv = dir_.filePath(rowFileName() + "-steps.csv");
+    const CliRun traced = runCli(arguments + QStringList{"--trajectory", csv});
+    VERIFY_EXIT(traced, 0);
+    const double stepsAsked = method == "exact" ? 0.0 : 10000.0;
+    for (const CliRun* run : {&plain, &traced}) {
+      const QJsonObject report = QJsonDocument::fromJson(run->out).object();
+      QVERIFY2(report["steps"].toDouble(-1) == stepsAsked, qPrintable(run->describe()));
+      QVERIFY2(report["simulatedTime"].toDouble() == 100.0, qPrintable(run->describe()));
+    }
+    QCOMPARE(rawArray(traced.out, "balls"), rawArray(plain.out, "balls"));
+  }
+
+  // wallSeconds is all the work (set-up, run, measurements), within the process's own time;
+  // setupSeconds is the loading, checking, building and first prediction, part of it.
+  void wallSecondsCountsAllTheWork_data() {
+    QTest::addColumn<QString>("method");
+    for (const char* method : {"exact", "swept", "discrete"}) QTest::newRow(method) << method;
+  }
+  void wallSecondsCountsAllTheWork() {
+    QFETCH(QString, method);
+    const QString scene = writeFile("mixed-sizes.json", mixedSizeScene());
+    QVERIFY(!scene.isEmpty());
+    QElapsedTimer process;
+    process.start();
+    const CliRun run = runCli({"run", scene, "--duration", "0.01", "--method", method, "--json"});
+    const double processSeconds = process.nsecsElapsed() * 1e-9;
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    const double wall = report["wallSeconds"].toDouble(-1.0);
+    const QString figures = QString("wallSeconds %1, setupSeconds %2, process %3 s")
+                                .arg(wall)
+                                .arg(report["setupSeconds"].toDouble(-1.0))
+                                .arg(processSeconds);
+    QVERIFY2(wall >= 0.6 * processSeconds && wall <= processSeconds, qPrintable(figures));
+    QVERIFY2(report["setupSeconds"].isDouble(), qPrintable(run.describe()));
+    const double setup = report["setupSeconds"].toDouble();
+    QVERIFY2(setup > 0.0 && setup <= wall, qPrintable(figures));
+
+    const CliRun text = runCli({"run", scene, "--duration", "0.01", "--method", method});
+    VERIFY_EXIT(text, 0);
+    bool setupLine = false;
+    for (const QByteArray& line : text.out.split('\n'))
+      setupLine = setupLine || (line.startsWith("wall:") && line.contains("set-up"));
+    QVERIFY2(setupLine, text.out.constData());
+  }
+
+  // 1e12 s at 1e-12 s is 1e24 steps: refused at once, not run with no sign of life. `exact`
+  // takes no steps, but its trajectory would take a row a step.
+  void absurdStepCountIsRefused_data() {
+    QTest::addColumn<QStringList>("options");
+    QTest::newRow("swept") << QStringList{"--method", "swept"};
+    QTest::newRow("discrete") << QStringList{"--method", "discrete"};
+    QTest::newRow("exact with a trajectory")
+        << QStringList{"--method", "exact", "--trajectory", dir_.filePath("absurd.csv")};
+  }
+  void absurdStepCountIsRefused() {
+    QFETCH(QStringList, options);
+    const CliRun run = runCli(
+        QStringList{"run", magicRoom(), "--duration", "1e12", "--dt", "1e-12"} + options, 10000);
+    VERIFY_REFUSED(run);
+    QVERIFY2(run.err.contains("1e+24 steps"), qPrintable(run.describe()));
+    QVERIFY(!QFileInfo::exists(dir_.filePath("absurd.csv")));
+  }
+
+  // Ctrl+C stops a run and still prints the report so far, marked as interrupted, with the
+  // shell's exit code for SIGINT, 130.
+  void ctrlCPrintsTheReportSoFar_data() {
+    QTest::addColumn<QString>("method");
+    QTest::addColumn<bool>("json");
+    for (const QString method : {"exact", "swept", "discrete"}) {
+      QTest::newRow(qPrintable(method + ", json")) << method << true;
+      QTest::newRow(qPrintable(method + ", text")) << method << false;
+    }
+  }
+  void ctrlCPrintsTheReportSoFar() {
+    QFETCH(QString, method);
+    QFETCH(bool, json);
+    QStringList arguments{"run", magicRoom(), "--duration", "1e9", "--method", method};
+    if (json) arguments << "--json";
+    const CliRun run = interruptCli(arguments, 1500);
+    VERIFY_EXIT(run, 130);
+    if (json) {
+      const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+      QVERIFY2(report["interrupted"].toBool(), qPrintable(run.describe()));
+      const double simulated = report["simulatedTime"].toDouble(-1.0);
+      QVERIFY2(simulated > 0.0 && simulated < 1e9, qPrintable(run.describe()));
+      QCOMPARE(report["balls"].toArray().size(), 10);
+      QVERIFY2(report["wallSeconds"].toDouble() > 0.5, qPrintable(run.describe()));
+    } else {
+      QVERIFY2(run.out.startsWith("method:"), qPrintable(run.describe()));
+      QVERIFY2(run.out.contains("interrupted"), qPrintable(run.describe()));
+    }
+    QVERIFY2(run.err.contains("interrupted"), qPrintable(run.describe()));
+  }
+
+  // On a terminal a long run shows a progress bar with an estimate of the time left.
+  void progressBarOnATerminal_data() {
+    QTest::addColumn<QString>("method");
+    for (const char* method : {"exact", "swept", "discrete"}) QTest::newRow(method) << method;
+  }
+  void progressBarOnATerminal() {
+    QFETCH(QString, method);
+    const CliRun run = interruptCli(
+        {"run", magicRoom(), "--duration", "1e9", "--method", method, "--json"}, 2500, true);
+    VERIFY_EXIT(run, 130);
+    QVERIFY2(run.err.contains('%') && run.err.contains("left") && run.err.contains('\r'),
+             qPrintable(run.describe()));
+    QVERIFY2(QJsonDocument::fromJson(run.out).isObject(), qPrintable(run.describe()));
+  }
+
+  // Not on a terminal a long run prints a plain line every 10 s, and a short one nothing (the
+  // other tests check that stderr stays empty).
+  void progressLinesWithoutATerminal() {
+    const CliRun run = interruptCli({"run", magicRoom(), "--duration", "1e9", "--json"}, 11500);
+    VERIFY_EXIT(run, 130);
+    const QList<QByteArray> lines = nonEmptyLines(run.err);
+    QVERIFY2(lines.size() == 2, qPrintable(run.describe()));
+    QVERIFY2(lines[0].startsWith("carom-cli: progress:") && lines[0].contains("left"),
+             qPrintable(run.describe()));
+    QVERIFY2(!run.err.contains('\r'), qPrintable(run.describe()));
+  }
+
+  // A FIFO with no writer would block a read forever: anything but a regular file is refused
+  // at once, before it is opened.
+  void nonRegularFileIsRefused_data() {
+    QTest::addColumn<QString>("command");
+    QTest::newRow("validate") << "validate";
+    QTest::newRow("run") << "run";
+  }
+  void nonRegularFileIsRefused() {
+    QFETCH(QString, command);
+    const QString fifo = dir_.filePath(rowFileName() + ".fifo");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    const CliRun run = runCli({command, fifo}, 10000);
+    VERIFY_REFUSED(run);
+    QVERIFY2(run.err.contains(fifo.toUtf8() + ": not a regular file"), qPrintable(run.describe()));
+    const CliRun device = runCli({command, "/dev/null"}, 10000);
+    VERIFY_REFUSED(device);
+    QVERIFY2(device.err.contains("/dev/null: not a regular file"), qPrintable(device.describe()));
   }
 };
 

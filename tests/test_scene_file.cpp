@@ -214,6 +214,25 @@ class SceneFileTest : public QObject {
         "planes[0].restitution: expected a number, got a string");
     row("cylinder not an object", document(R"("cylinders": [null])"),
         "cylinders[0]: expected an object, got null");
+    // Issue 12: QJsonDocument keeps the last of repeated keys; the loader refuses them.
+    const QString duplicate = ": duplicate key: a key may appear once in an object";
+    row("duplicate top-level key", R"({"format": "carom-scene", "version": 1, "version": 1})",
+        "version" + duplicate);
+    row("duplicate key in the world",
+        document(R"("world": {"timeStep": 0.01, "method": "exact", "timeStep": 0.02})"),
+        "world.timeStep" + duplicate);
+    row("duplicate key in the third ball", document(R"("balls": [
+        {"position": [0, 0, 0], "radius": 0.1}, {"position": [1, 0, 0], "radius": 0.1},
+        {"position": [2, 0, 0], "radius": 0.1, "radius": 0.2}])"),
+        "balls[2].radius" + duplicate);
+    row("duplicate key spelt with an escape",
+        document(R"("balls": [{"position": [0, 0, 0], "radius": 0.1, "r\u0061dius": 0.2}])"),
+        "balls[0].radius" + duplicate);
+    row("duplicate unknown key", document(R"("world": {"units": "m", "units": "cm"})"),
+        "world.units" + duplicate);
+    row("duplicate key inside an unknown key",
+        document(R"("extra": [{"a": 1}, {"b": {"c": [1, "c", {"d": 1, "d": 2}]}}])"),
+        "extra[1].b.c[2].d" + duplicate);
     row("ball radius string",
         document(R"("balls": [{"position": [0,0,0], "radius": 1},)"
                  R"( {"position": [3,0,0], "radius": 1},)"
@@ -569,11 +588,24 @@ class SceneFileTest : public QObject {
              missing + ": cannot open the file: No such file or directory");
     QCOMPARE(carom::io::loadSceneFile(dir.path()).error,
              dir.path() + ": cannot open the file: file to open is a directory");
+    // Issue 12: a device (and a FIFO, whose read would wait for a writer forever; see test_cli)
+    // is refused before it is opened.
+    QCOMPARE(carom::io::loadSceneFile("/dev/null").error,
+             "/dev/null: not a regular file (a FIFO, device or socket); scene files are read "
+             "from regular files only");
 
     const QString broken = dir.filePath("broken.json");
     QVERIFY(writeAll(broken, "{\"format\": \"carom-scene\",\n\"version\": 1,\n\"balls\": [}"));
     QCOMPARE(carom::io::loadSceneFile(broken).error,
              broken + ": invalid JSON at line 3, column 12: object is missing after a comma");
+
+    // The same keys in different objects are no duplicates, and keys that differ are kept.
+    const QString twoBalls = dir.filePath("two-balls.json");
+    QVERIFY(writeAll(twoBalls, document(R"("balls": [{"position": [0, 0, 0], "radius": 0.1},
+        {"position": [1, 0, 0], "radius": 0.1, "Radius": 2, "radius ": 3}])")));
+    const carom::io::SceneLoadResult loaded = carom::io::loadSceneFile(twoBalls);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QCOMPARE(loaded.scene->balls.size(), std::size_t(2));
   }
 
   void unreadableFile() {

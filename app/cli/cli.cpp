@@ -8,6 +8,7 @@
 #include "sim/validation.h"
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 
 #include <exception>
 
@@ -71,9 +72,11 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
       return kOk;
     }
     case Command::Run: {
+      QElapsedTimer started;  // the report's wall time includes loading and checking the scene
+      started.start();
       const std::optional<Scene> scene = prepareScene(command.run, err);
       if (!scene) return kBadInput;
-      return runScene(*scene, command.run, out, err);
+      return runScene(*scene, command.run, started, out, err);
     }
     case Command::Bench:
       return runBench(command.bench, out, err);

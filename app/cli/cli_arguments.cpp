@@ -145,7 +145,9 @@ QString usageText() {
       "      long (default 5), its runs side by side on N threads (default: one per core).\n"
       "      Prints each run, then the wall time, the summed computing time and the speed-up.\n"
       "  carom-cli --help | --version\n"
-      "Exit codes: 0 success, 2 bad input, 1 internal failure.\n");
+      "A run shows progress on standard error (a bar on a terminal, a line every 10 s\n"
+      "otherwise); Ctrl+C stops it and prints the report so far, marked as interrupted.\n"
+      "Exit codes: 0 success, 2 bad input, 1 internal failure, 130 interrupted by Ctrl+C.\n");
 }
 
 }  // namespace carom::cli

@@ -11,7 +11,12 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
+#include <cstdint>
+
+#include <unistd.h>
 
 namespace carom::cli {
 namespace {
@@ -19,6 +24,120 @@ namespace {
 // Overlaps are measured over the whole state this many times during a run, besides at every
 // contact, so that a missed collision shows up in the report.
 constexpr int kOverlapCheckpoints = 100;
+// Runs that would take more steps than this (or trajectory rows, a row a step) are refused: at a
+// hundred million steps a second it would take three hours, and 1e24 would never end.
+constexpr double kMaxSteps = 1e12;
+// A run goes in slices between which it checks for Ctrl+C and shows progress; slices grow or
+// shrink by whole steps to take about this long.
+constexpr double kSliceSeconds = 0.05;
+// Progress on a terminal: a bar redrawn this often once the run has taken the first interval.
+constexpr double kBarDelaySeconds = 0.5;
+constexpr double kBarIntervalSeconds = 0.2;
+// Progress elsewhere (a log, a pipe): a plain line this often, so short runs print none.
+constexpr double kLineIntervalSeconds = 10.0;
+
+// Set by SIGINT (Ctrl+C); the run loop stops at its next slice.
+std::atomic<bool> interruptRequested{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+void requestInterrupt(int) {
+  interruptRequested.store(true);
+}
+
+// Catches Ctrl+C for the length of a run. The handler resets itself, so a second Ctrl+C ends
+// the process at once as usual.
+class InterruptCatcher {
+ public:
+  InterruptCatcher() {
+    interruptRequested.store(false);
+    struct sigaction action {};
+    action.sa_handler = requestInterrupt;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    installed_ = sigaction(SIGINT, &action, &previous_) == 0;
+  }
+  ~InterruptCatcher() {
+    if (installed_) sigaction(SIGINT, &previous_, nullptr);
+  }
+  InterruptCatcher(const InterruptCatcher&) = delete;
+  InterruptCatcher& operator=(const InterruptCatcher&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+  bool installed_ = false;
+};
+
+// "42 s", "7 min", "3.5 h", "12 days", "3e+05 years": an estimate, two digits at most.
+QString roughDuration(double seconds) {
+  const auto figure = [](double x, const char* unit) {
+    return QString::number(x, 'g', x < 10 ? 2 : (x < 1e5 ? int(std::log10(x)) + 1 : 2)) + ' ' +
+           unit;
+  };
+  if (seconds < 90) return figure(std::max(0.0, std::round(seconds)), "s");
+  if (seconds < 90 * 60) return figure(std::round(seconds / 60), "min");
+  if (seconds < 48 * 3600) return figure(seconds / 3600, "h");
+  if (seconds < 730 * 86400) return figure(std::round(seconds / 86400), "days");
+  return figure(seconds / (365.25 * 86400), "years");
+}
+
+// Progress of a run on standard error: on a terminal a bar with an estimate of the time left,
+// redrawn in place and erased at the end; otherwise a plain line every kLineIntervalSeconds.
+class Progress {
+ public:
+  Progress(QTextStream& err, double duration)
+      : err_(err),
+        duration_(duration),
+        terminal_(err.device() != nullptr && isatty(STDERR_FILENO) == 1) {
+    timer_.start();
+  }
+
+  bool terminal() const { return terminal_; }
+
+  void update(double simulated) {
+    const double wall = timer_.nsecsElapsed() * 1e-9;
+    const double fraction = duration_ > 0.0 ? std::clamp(simulated / duration_, 0.0, 1.0) : 1.0;
+    const QString left =
+        fraction > 0.0 ? "about " + roughDuration(wall * (1.0 - fraction) / fraction) + " left"
+                       : QString("time left not known yet");
+    const QString figures = QString("%1 of %2 s simulated (%3%) in %4, %5")
+                                .arg(QString::number(simulated, 'g', 4))
+                                .arg(QString::number(duration_, 'g', 4))
+                                .arg(QString::number(100.0 * fraction, 'f', 1))
+                                .arg(roughDuration(wall))
+                                .arg(left);
+    if (terminal_) {
+      if (wall < kBarDelaySeconds || wall - shownAt_ < kBarIntervalSeconds) return;
+      constexpr int kWidth = 24;
+      const int filled = static_cast<int>(fraction * kWidth);
+      const QString bar =
+          '[' + QString(filled, '#') + QString(kWidth - filled, '.') + "] " + figures;
+      // Spaces cover the rest of a longer previous bar.
+      err_ << '\r' << bar << QString(std::max<qsizetype>(0, shownWidth_ - bar.size()), ' ');
+      shownWidth_ = bar.size();
+    } else {
+      if (wall - shownAt_ < kLineIntervalSeconds) return;
+      err_ << "carom-cli: progress: " << figures << '\n';
+    }
+    shownAt_ = wall;
+    err_.flush();
+  }
+
+  // Erases the bar, so that what follows starts on a clean line.
+  void finish() {
+    if (!terminal_ || shownWidth_ == 0) return;
+    err_ << '\r' << QString(shownWidth_, ' ') << '\r';
+    err_.flush();
+    shownWidth_ = 0;
+  }
+
+ private:
+  QTextStream& err_;
+  double duration_;
+  bool terminal_;
+  QElapsedTimer timer_;
+  double shownAt_ = 0.0;
+  qsizetype shownWidth_ = 0;
+};
 
 QJsonArray vectorJson(const Vec3& v) {
   return {v.x(), v.y(), v.z()};
@@ -27,7 +146,12 @@ QJsonArray vectorJson(const Vec3& v) {
 struct RunResult {
   double initialEnergy = 0.0;
   double finalEnergy = 0.0;
-  double wallSeconds = 0.0;
+  double wallSeconds = 0.0;     // all the work, from before loading the scene to the report
+  double setupSeconds = 0.0;    // loading, checking, building the simulation, first prediction
+  double runSeconds = 0.0;      // advancing the simulation
+  double measureSeconds = 0.0;  // overlap checks, energies and trajectory rows
+  bool interrupted = false;     // stopped by Ctrl+C before the duration asked for
+  double durationAsked = 0.0;
   double maxPenetration = 0.0;
   int escaped = 0;
   int resting = 0;
@@ -70,6 +194,10 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
       {"timeStep", world.timeStep},
       {"simulatedTime", sim.time()},
       {"wallSeconds", result.wallSeconds},
+      {"setupSeconds", result.setupSeconds},
+      {"runSeconds", result.runSeconds},
+      {"measureSeconds", result.measureSeconds},
+      {"interrupted", result.interrupted},
       {"collisions", collisions},
       {"energy", QJsonObject{{"initial", result.initialEnergy}, {"final", result.finalEnergy}}},
       {"maxPenetration", result.maxPenetration},
@@ -95,6 +223,10 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
     out << " (" << QString::fromUtf8(integratorName(world.integrator)) << ", dt " << world.timeStep
         << " s)";
   out << "\nsimulated: " << sim.time() << " s in " << result.wallSeconds << " s wall\n";
+  if (result.interrupted)
+    out << "interrupted: by Ctrl+C at " << sim.time() << " of " << result.durationAsked << " s\n";
+  out << "wall: " << result.wallSeconds << " s: set-up " << result.setupSeconds << " s, run "
+      << result.runSeconds << " s, measurements " << result.measureSeconds << " s\n";
   out << "collisions: ball-ball " << stats.collisions.ballBall << ", ball-plane "
       << stats.collisions.ballPlane << ", ball-cylinder " << stats.collisions.ballCylinder << "\n";
   const double drift = result.initialEnergy != 0.0 ? (result.finalEnergy - result.initialEnergy) /
@@ -115,7 +247,25 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
 
 }  // namespace
 
-int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QTextStream& err) {
+int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer& started,
+             QTextStream& out, QTextStream& err) {
+  // `swept` and `discrete` take a step, and a trajectory writes a row, every time step. `exact`
+  // without a trajectory takes none: its run is cut at ticks no shorter than the time step and
+  // no more than kMaxSteps of them.
+  const double dt = scene.world.timeStep;
+  const double stepsAsked = options.duration / dt;
+  if ((scene.world.method != Method::Exact || options.trajectoryPath) && stepsAsked > kMaxSteps) {
+    err << "carom-cli: --duration " << options.duration << " s at a time step of " << dt << " s is "
+        << stepsAsked << " steps, more than the " << kMaxSteps
+        << " a run may take; give a shorter duration or a longer --dt\n";
+    return kBadInput;
+  }
+  const double tick = std::max(dt, options.duration / kMaxSteps);
+  const std::uint64_t ticks =
+      options.duration > 0.0
+          ? std::max<std::uint64_t>(1, std::uint64_t(std::ceil(options.duration / tick - 1e-9)))
+          : 0;
+
   QFile trajectory;
   if (options.trajectoryPath) {
     trajectory.setFileName(*options.trajectoryPath);
@@ -126,50 +276,90 @@ int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QT
     }
   }
 
-  Simulation sim(scene);
+  const InterruptCatcher interruptCatcher;
+  Progress progress(err, options.duration);
+  if (progress.terminal() && scene.balls.size() > 1000) {
+    err << "carom-cli: setting up " << scene.balls.size() << " balls...";
+    err.flush();
+  }
+  Simulation sim(scene);  // builds the grid and predicts every ball's first event
+  if (progress.terminal() && scene.balls.size() > 1000) {
+    err << "\r\x1b[K";
+    err.flush();
+  }
   RunResult result;
+  result.durationAsked = options.duration;
+  result.setupSeconds = started.nsecsElapsed() * 1e-9;
+
+  QElapsedTimer measuring;
+  measuring.start();
   result.initialEnergy = sim.totalEnergy();
   if (trajectory.isOpen() && (trajectory.write("time,ball,x,y,z,vx,vy,vz\n") < 0 ||
                               !writeTrajectoryRows(trajectory, 0.0, sim.state())))
     return trajectoryFailed(trajectory, err);
+  result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
 
-  // Chunks are whole time steps so that `swept` and `discrete` take the same steps as one call.
-  const double dt = scene.world.timeStep;
-  const double chunk =
-      trajectory.isOpen()
-          ? dt
-          : std::max(dt, std::ceil(options.duration / kOverlapCheckpoints / dt) * dt);
-  QElapsedTimer timer;
-  timer.start();
-  double measured = 0.0;
-  // Chunk ends come from a counter, not a running sum, and a step that divides the duration up
-  // to rounding gives no extra sliver of a chunk at the end.
-  const double chunks = std::max(1.0, std::ceil(options.duration / chunk - 1e-9));
-  for (double k = 1; sim.time() < options.duration; ++k) {
-    sim.advance((k >= chunks ? options.duration : std::min(options.duration, k * chunk)) -
-                sim.time());
-    const double before = timer.nsecsElapsed() * 1e-9;
-    const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
-    result.maxPenetration = std::max(result.maxPenetration, overlaps.maxPenetration);
-    if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
-      return trajectoryFailed(trajectory, err);
-    measured += timer.nsecsElapsed() * 1e-9 - before;
+  // Every piece of the run ends on a whole tick, counted by index (k * tick, never a sum), so
+  // that the stepping methods take the same whole steps however the run is cut: with or without
+  // a trajectory, and whatever the slices. The last piece ends on the duration itself.
+  const auto tickTime = [&](std::uint64_t k) {
+    return k >= ticks ? options.duration : static_cast<double>(k) * tick;
+  };
+  const std::uint64_t checkpointTicks =
+      trajectory.isOpen() ? 1
+                          : std::max<std::uint64_t>(
+                                1, std::uint64_t(std::ceil(double(ticks) / kOverlapCheckpoints)));
+  std::uint64_t done = 0;
+  std::uint64_t sliceTicks = 1;
+  while (done < ticks) {
+    if (interruptRequested.load()) {
+      result.interrupted = true;
+      break;
+    }
+    const std::uint64_t nextCheckpoint =
+        std::min(ticks, (done / checkpointTicks + 1) * checkpointTicks);
+    const std::uint64_t next = std::min(nextCheckpoint, done + sliceTicks);
+    QElapsedTimer slice;
+    slice.start();
+    sim.advanceTo(tickTime(next));
+    const double sliceSeconds = slice.nsecsElapsed() * 1e-9;
+    result.runSeconds += sliceSeconds;
+    done = next;
+    if (sliceSeconds < 0.5 * kSliceSeconds && sliceTicks < (std::uint64_t{1} << 62))
+      sliceTicks *= 2;
+    else if (sliceSeconds > 2.0 * kSliceSeconds && sliceTicks > 1)
+      sliceTicks /= 2;
+    if (done == nextCheckpoint) {
+      measuring.restart();
+      const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
+      result.maxPenetration = std::max(result.maxPenetration, overlaps.maxPenetration);
+      if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
+        return trajectoryFailed(trajectory, err);
+      result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
+    }
+    progress.update(sim.time());
   }
-  result.wallSeconds = timer.nsecsElapsed() * 1e-9 - measured;
+  progress.finish();
 
+  measuring.restart();
   const OverlapReport final = measureOverlaps(sim.bodies(), sim.positions());
   result.maxPenetration =
       std::max({result.maxPenetration, final.maxPenetration, sim.stats().maxPenetration});
   result.escaped = final.escaped;
   result.finalEnergy = sim.totalEnergy();
   for (const BallState& s : sim.state()) result.resting += s.resting ? 1 : 0;
-
   if (trajectory.isOpen() && !trajectory.flush()) return trajectoryFailed(trajectory, err);
+  result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
+  result.wallSeconds = started.nsecsElapsed() * 1e-9;
+
   if (options.json)
     out << QJsonDocument(reportJson(sim, result)).toJson(QJsonDocument::Compact) << "\n";
   else
     printText(out, sim, result);
-  return kOk;
+  if (!result.interrupted) return kOk;
+  err << "carom-cli: interrupted at " << sim.time() << " of " << options.duration
+      << " s; the report covers the run so far\n";
+  return kInterrupted;
 }
 
 }  // namespace carom::cli

@@ -4,10 +4,15 @@
 #include "app/cli/cli_arguments.h"
 #include "sim/scene.h"
 
+#include <QElapsedTimer>
 #include <QTextStream>
 
 namespace carom::cli {
 
-int runScene(const Scene& scene, const RunOptions& options, QTextStream& out, QTextStream& err);
+// `started` was started before the scene was loaded: the report's wall time is all the work,
+// its set-up part included. Returns kInterrupted, after the report so far, when Ctrl+C stopped
+// the run.
+int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer& started,
+             QTextStream& out, QTextStream& err);
 
 }  // namespace carom::cli

@@ -4,17 +4,20 @@
 #include "sim/validation.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <QJsonValue>
 #include <QSaveFile>
+#include <QSet>
 #include <QStringList>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -373,6 +376,65 @@ qint64 valueBound(const QByteArray& json) {
   return commas + 1;
 }
 
+// The path of the first key that appears twice in one object, such as "balls[2].radius".
+// QJsonDocument keeps the last of repeated keys without a word; a scene that says two things
+// about one field is refused instead. `json` is valid JSON here, so the scan only follows
+// containers, commas, colons and strings.
+std::optional<QString> duplicateKeyPath(const QByteArray& json) {
+  struct Container {
+    bool object = false;
+    QString path;
+    QSet<QString> keys;  // objects: keys seen so far
+    QString key;         // objects: the key whose value comes next
+    bool expectingKey = true;
+    qsizetype index = 0;  // arrays: the element that comes next
+  };
+  std::vector<Container> open;
+  const auto valuePath = [&]() -> QString {
+    if (open.empty()) return QString();
+    const Container& parent = open.back();
+    return parent.object ? member(parent.path, parent.key) : element(parent.path, parent.index);
+  };
+  for (qsizetype i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '{' || c == '[') {
+      Container container;
+      container.object = c == '{';
+      container.path = valuePath();
+      open.push_back(std::move(container));
+    } else if (c == '}' || c == ']') {
+      open.pop_back();
+    } else if (c == ',' && !open.empty()) {
+      if (open.back().object)
+        open.back().expectingKey = true;
+      else
+        ++open.back().index;
+    } else if (c == ':' && !open.empty()) {
+      open.back().expectingKey = false;
+    } else if (c == '"') {
+      const qsizetype start = i;
+      bool escapes = false;
+      for (++i; json[i] != '"'; ++i) {
+        if (json[i] == '\\') {
+          escapes = true;
+          ++i;
+        }
+      }
+      if (open.empty() || !open.back().object || !open.back().expectingKey) continue;
+      const QByteArray token = json.mid(start, i - start + 1);
+      // Escapes (\u0061 is "a") are decoded by the JSON parser itself, one string at a time.
+      const QString key = escapes
+                              ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
+                              : QString::fromUtf8(token.mid(1, token.size() - 2));
+      Container& object = open.back();
+      if (object.keys.contains(key)) return member(object.path, key);
+      object.keys.insert(key);
+      object.key = key;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
@@ -391,6 +453,9 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
   }
   if (!document.isObject())
     return {std::nullopt, sourceName + ": expected a JSON object at the top, got an array"};
+  if (const std::optional<QString> path = duplicateKeyPath(json))
+    return {std::nullopt,
+            errorLine(sourceName, *path, "duplicate key: a key may appear once in an object")};
 
   Scene scene;
   try {
@@ -405,6 +470,13 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
 }
 
 SceneLoadResult loadSceneFile(const QString& fileName) {
+  // Reading a FIFO with no writer, or a terminal, would wait forever: only regular files are
+  // opened. A directory keeps the message opening it gives.
+  const QFileInfo info(fileName);
+  if (info.exists() && !info.isFile() && !info.isDir())
+    return {std::nullopt, fileName +
+                              ": not a regular file (a FIFO, device or socket); scene "
+                              "files are read from regular files only"};
   QFile file(fileName);
   if (!file.open(QIODevice::ReadOnly))
     return {std::nullopt, fileName + ": cannot open the file: " + file.errorString()};
