@@ -383,24 +383,24 @@ qint64 valueBound(const QByteArray& json) {
 std::optional<QString> duplicateKeyPath(const QByteArray& json) {
   struct Container {
     bool object = false;
-    QString path;
     QSet<QString> keys;  // objects: keys seen so far
     QString key;         // objects: the key whose value comes next
     bool expectingKey = true;
     qsizetype index = 0;  // arrays: the element that comes next
   };
   std::vector<Container> open;
-  const auto valuePath = [&]() -> QString {
-    if (open.empty()) return QString();
-    const Container& parent = open.back();
-    return parent.object ? member(parent.path, parent.key) : element(parent.path, parent.index);
+  // Paths are spelled only for the answer: a large scene has a container per ball and vector.
+  const auto pathTo = [&open](std::size_t depth) {
+    QString path;
+    for (std::size_t d = 0; d < depth; ++d)
+      path = open[d].object ? member(path, open[d].key) : element(path, open[d].index);
+    return path;
   };
   for (qsizetype i = 0; i < json.size(); ++i) {
     const char c = json[i];
     if (c == '{' || c == '[') {
       Container container;
       container.object = c == '{';
-      container.path = valuePath();
       open.push_back(std::move(container));
     } else if (c == '}' || c == ']') {
       open.pop_back();
@@ -427,7 +427,7 @@ std::optional<QString> duplicateKeyPath(const QByteArray& json) {
                               ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
                               : QString::fromUtf8(token.mid(1, token.size() - 2));
       Container& object = open.back();
-      if (object.keys.contains(key)) return member(object.path, key);
+      if (object.keys.contains(key)) return member(pathTo(open.size() - 1), key);
       object.keys.insert(key);
       object.key = key;
     }

@@ -160,6 +160,11 @@ void insertIndices(std::vector<T>& items, const Selection& selection, ObjectKind
   for (const ObjectRef& ref : selection)
     if (ref.kind == kind) places.push_back(ref.index);
   if (places.empty()) return;
+  if (places.front() >= static_cast<int>(items.size())) {
+    // All after the last (an addition redone): appended, without rebuilding the array.
+    items.insert(items.end(), values.begin(), values.end());
+    return;
+  }
   std::vector<T> merged;
   merged.reserve(items.size() + values.size());
   std::size_t kept = 0, inserted = 0;
