@@ -40,7 +40,8 @@ void gridBounds(const Bodies& bodies, const std::vector<BallState>& state, Vec3&
 }  // namespace
 
 EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& state, double now,
-                         const Vec3& gravity, const Vec3& pathAcceleration, double collapseSpeed)
+                         const Vec3& gravity, const Vec3& pathAcceleration, double collapseSpeed,
+                         double stepSpeed)
     : bodies_(bodies),
       gravity_(gravity),
       pathAcceleration_(pathAcceleration),
@@ -57,7 +58,10 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     p.resting = state[i].resting;
     tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
                   bodies.radius[i]};
-    restSpeed_[i] = restSpeed(gravity_, bodies.radius[i]);
+    // A stepped method cannot resolve bounces slower than a step's kick: below that, the
+    // integrator's own error (explicit Euler gains g²h²/2 a step) would keep a resting ball
+    // hopping and pump energy into it.
+    restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
   buildGrid(state);
   buildStaticLists();

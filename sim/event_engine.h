@@ -24,9 +24,12 @@ namespace carom {
 class EventEngine {
  public:
   // `pathAcceleration` is what balls follow between events: gravity for `exact`, zero for the
-  // straight sweeps of `swept`. `gravity` drives the rest policy in both.
+  // straight sweeps of `swept`. `gravity` drives the rest policy in both. `stepSpeed` is the
+  // speed one time step's kick of gravity gives under `swept` (0 for `exact`): a contact no
+  // faster than that is as slow as a stepped method can tell, and counts as a resting one.
   EventEngine(const Bodies& bodies, const std::vector<BallState>& state, double now,
-              const Vec3& gravity, const Vec3& pathAcceleration, double collapseSpeed);
+              const Vec3& gravity, const Vec3& pathAcceleration, double collapseSpeed,
+              double stepSpeed = 0.0);
 
   // Processes every event up to and including time `end`, then stands at `end`.
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log);

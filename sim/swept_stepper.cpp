@@ -15,7 +15,8 @@ class SweptStepper final : public Stepper {
   SweptStepper(const Bodies& bodies, const StepperSettings& settings,
                const std::vector<BallState>& state, double now)
       : settings_(settings),
-        engine_(bodies, state, now, settings.gravity, Vec3::Zero(), settings.collapseSpeed),
+        engine_(bodies, state, now, settings.gravity, Vec3::Zero(), settings.collapseSpeed,
+                settings.gravity.norm() * settings.timeStep),
         clock_(now, settings.timeStep) {}
 
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
