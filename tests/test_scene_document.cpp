@@ -70,7 +70,8 @@ class TestSceneDocument : public QObject {
     QCOMPARE(document_.scene().balls[7].mass, 5.0);
     QCOMPARE(int(log.changes.size()), 1);
     QCOMPARE(log.changes[0].edited, refs);
-    QVERIFY(!log.changes[0].world && !log.changes[0].countsChanged());
+    QVERIFY(!log.changes[0].world && !log.changes[0].replaced);
+    QVERIFY(log.changes[0].removed.empty() && log.changes[0].inserted.empty());
     document_.undoStack()->undo();
     QVERIFY(document_.scene() == rowOfBalls());
     QCOMPARE(log.changes.back().edited, refs);

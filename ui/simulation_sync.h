@@ -27,8 +27,6 @@ class SimulationSync : public QObject {
                  QObject* parent = nullptr);
 
   void setApplyToRunningState(bool on) { applyToRunningState_ = on; }
-  // The scene the simulation last started from.
-  std::shared_ptr<const Scene> start() const { return start_; }
 
  signals:
   // The simulation restarted from `start` (the view draws its objects).
@@ -42,7 +40,7 @@ class SimulationSync : public QObject {
   editor::SceneDocument* document_;
   SimulationController* simulation_;
   bool applyToRunningState_ = false;
-  std::shared_ptr<const Scene> start_;
+  std::shared_ptr<const Scene> start_;  // the scene the simulation last started from
   std::uint64_t startNumber_ = 0;  // the controller's number for start_
 };
 

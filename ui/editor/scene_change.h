@@ -18,7 +18,6 @@ struct SceneChange {
   bool objectsChanged() const {
     return replaced || !removed.empty() || !inserted.empty() || !edited.empty();
   }
-  bool countsChanged() const { return replaced || !removed.empty() || !inserted.empty(); }
 };
 
 }  // namespace carom::editor
