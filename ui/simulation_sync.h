@@ -41,7 +41,7 @@ class SimulationSync : public QObject {
   SimulationController* simulation_;
   bool applyToRunningState_ = false;
   std::shared_ptr<const Scene> start_;  // the scene the simulation last started from
-  std::uint64_t startNumber_ = 0;  // the controller's number for start_
+  std::uint64_t startNumber_ = 0;       // the controller's number for start_
 };
 
 }  // namespace carom::ui
