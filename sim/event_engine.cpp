@@ -336,20 +336,8 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       moveTo(i, now_);
       const Motion& m = tracks_[i].motion;
       const double r = bodies_.radius[i];
-      Vec3 n;
-      double gap, restitution;
-      if (event.kind == EventKind::Plane) {
-        const PlaneShape& plane = bodies_.planes[event.other];
-        n = plane.normal;
-        gap = plane.gap(m.position, r);
-        restitution = std::min(bodies_.restitution[i], bodies_.planeRestitution[event.other]);
-      } else {
-        const CylinderShape& cylinder = bodies_.cylinders[event.other];
-        n = cylinder.perpendicular(m.position - cylinder.point);
-        gap = n.norm() - cylinder.radius - r;
-        n.normalize();
-        restitution = std::min(bodies_.restitution[i], bodies_.cylinderRestitution[event.other]);
-      }
+      const auto [n, gap, restitution] =
+          staticContact(i, {event.kind == EventKind::Cylinder, event.other});
       notePenetration(-gap, stats);
       const double approach = -m.velocity.dot(n);
       collideWithSurface(i, n, restitution, stats);
@@ -447,6 +435,21 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   p.lastSurfaceCollision = now_;
 }
 
+EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref) const {
+  const Vec3& position = tracks_[i].motion.position;
+  const double r = bodies_.radius[i];
+  if (ref.cylinder) {
+    const CylinderShape& cylinder = bodies_.cylinders[ref.index];
+    Vec3 n = cylinder.perpendicular(position - cylinder.point);
+    const double gap = n.norm() - cylinder.radius - r;
+    n.normalize();
+    return {n, gap, std::min(bodies_.restitution[i], bodies_.cylinderRestitution[ref.index])};
+  }
+  const PlaneShape& plane = bodies_.planes[ref.index];
+  return {plane.normal, plane.gap(position, r),
+          std::min(bodies_.restitution[i], bodies_.planeRestitution[ref.index])};
+}
+
 // A ball touching several static shapes at once (the bottom of a narrow wedge) leaves them all
 // in the one event: it reflects off each shape it still moves into, in turn, as events at the
 // same instant would, until it moves into none. In a wedge of angle θ that takes about π/θ
@@ -462,20 +465,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
     bool reflected = false;
     for (int s = p.staticBegin; s < p.staticEnd; ++s) {
       const StaticRef ref = statics_[s];
-      Vec3 n;
-      double gap, restitution;
-      if (ref.cylinder) {
-        const CylinderShape& cylinder = bodies_.cylinders[ref.index];
-        n = cylinder.perpendicular(m.position - cylinder.point);
-        gap = n.norm() - cylinder.radius - r;
-        n.normalize();
-        restitution = std::min(bodies_.restitution[i], bodies_.cylinderRestitution[ref.index]);
-      } else {
-        const PlaneShape& plane = bodies_.planes[ref.index];
-        n = plane.normal;
-        gap = plane.gap(m.position, r);
-        restitution = std::min(bodies_.restitution[i], bodies_.planeRestitution[ref.index]);
-      }
+      const auto [n, gap, restitution] = staticContact(i, ref);
       if (gap > touching || m.velocity.dot(n) >= 0.0) continue;
       // No minimum separation here: in a wedge opening slower than the rest speed it would
       // send the ball from one wall into the other for ever. An inelastic ball slows down in

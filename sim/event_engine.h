@@ -84,6 +84,15 @@ class EventEngine {
     int index;
   };
 
+  // Ball i (at its last stored position) against a plane or cylinder: the unit normal towards
+  // the ball, the gap between their surfaces and the contact's restitution.
+  struct StaticContact {
+    Vec3 normal;
+    double gap;
+    double restitution;
+  };
+  StaticContact staticContact(int i, StaticRef ref) const;
+
   void buildGrid(const std::vector<BallState>& state);
   void buildStaticLists();
   void noteStatics(int i);
