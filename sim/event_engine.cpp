@@ -1,9 +1,12 @@
 #include "sim/event_engine.h"
 
+#include "sim/contact_forces.h"
 #include "sim/contact_time.h"
 #include "sim/response.h"
 #include "sim/rest_policy.h"
 #include "sim/tolerances.h"
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +56,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   tracks_.resize(n);
   predictions_.resize(n);
   restSpeed_.resize(n);
+  slideSpeed_.resize(n);
   for (int i = 0; i < n; ++i) {
     Particle& p = particles_[i];
     p.resting = state[i].resting;
@@ -62,7 +66,11 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     // integrator's own error (explicit Euler gains g²h²/2 a step) would keep a resting ball
     // hopping and pump energy into it.
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
+    slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
+  for (const PlaneShape& plane : bodies.planes)
+    slideAcceleration_.push_back(pathAcceleration_ -
+                                 pathAcceleration_.dot(plane.normal) * plane.normal);
   buildGrid(state);
   buildStaticLists();
   for (int i = 0; i < n; ++i) noteStatics(i);
@@ -179,8 +187,10 @@ void EventEngine::predict(int i) {
 void EventEngine::findStaticContact(int i, const BallPath& path) {
   Contact& best = predictions_[i].contact;
   const double r = bodies_.radius[i];
+  const int slidePlane = particles_[i].slidePlane;
   for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
+    if (!ref.cylinder && ref.index == slidePlane) continue;  // it slides along, never into it
     const double horizon = std::min(best.time, horizon_) - now_;
     const double t = ref.cylinder
                          ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
@@ -340,8 +350,12 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
           staticContact(i, {event.kind == EventKind::Cylinder, event.other});
       notePenetration(-gap, stats);
       const double approach = -m.velocity.dot(n);
-      collideWithSurface(i, n, restitution, stats);
-      if (!particles_[i].resting) leaveTouchingStatics(i, stats);
+      collideWithSurface(i, n, restitution, stats,
+                         event.kind == EventKind::Plane ? event.other : -1);
+      if (!particles_[i].resting) {
+        leaveTouchingStatics(i, stats);
+        updateSlide(i, stats);
+      }
       if (event.kind == EventKind::Plane)
         ++stats.collisions.ballPlane;
       else
@@ -387,12 +401,20 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
     // Too gentle to move a resting ball: it acts as an immovable surface.
     collideWithSurface(i, -n, restitution, stats);
+    if (!a.resting) updateSlide(i, stats);
   } else {
     if (b.resting) wake(j, stats);
+    // A pair that gravity presses together (a falling ball on a sliding one) separates at no
+    // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h).
+    const bool pressed = (accelerationOf(j) - accelerationOf(i)).dot(n) < 0.0;
+    const double minimum =
+        pressed ? std::max(collapseSpeed_, std::min(restSpeed_[i], restSpeed_[j])) : collapseSpeed_;
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
-                    restitution, collapseSpeed_);
+                    restitution, minimum);
     changed(i);
     changed(j);
+    updateSlide(i, stats);
+    updateSlide(j, stats);
   }
   ++stats.collisions.ballBall;
   if (log)
@@ -402,7 +424,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (!b.resting) predict(j);
 }
 
-void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats) {
+void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
+                                     int plane) {
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
@@ -419,10 +442,21 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
       return;
     }
   }
-  const double minimum = pressed ? rest : collapseSpeed_;
-  if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
-  resolveAgainstSurface(m.velocity, n, restitution, minimum);
-  changed(i);
+  if (plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]) {
+    startSliding(i, plane);
+    // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
+    if (m.velocity.norm() < settle && supported(i)) {
+      putToRest(i, stats);
+      return;
+    }
+  } else {
+    // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
+    // slides instead (above), and so bounces in finitely many events.
+    const double minimum = pressed ? (plane >= 0 ? 0.0 : rest) : collapseSpeed_;
+    if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
+    resolveAgainstSurface(m.velocity, n, restitution, minimum);
+    changed(i);
+  }
   // A cycle of contacts that lets time advance by round-off only must not hang the run. The
   // flight since the last contact is negligible by the ball's own measure, its speed times the
   // time against its size, so a fast ball crossing a box is never taken for a wedged one.
@@ -435,8 +469,8 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   p.lastSurfaceCollision = now_;
 }
 
-EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref) const {
-  const Vec3& position = tracks_[i].motion.position;
+EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
+                                                      const Vec3& position) const {
   const double r = bodies_.radius[i];
   if (ref.cylinder) {
     const CylinderShape& cylinder = bodies_.cylinders[ref.index];
@@ -465,6 +499,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
     bool reflected = false;
     for (int s = p.staticBegin; s < p.staticEnd; ++s) {
       const StaticRef ref = statics_[s];
+      if (!ref.cylinder && ref.index == p.slidePlane) continue;  // see updateSlide
       const auto [n, gap, restitution] = staticContact(i, ref);
       if (gap > touching || m.velocity.dot(n) >= 0.0) continue;
       // No minimum separation here: in a wedge opening slower than the rest speed it would
@@ -484,6 +519,38 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
     }
   }
   putToRest(i, stats);
+}
+
+void EventEngine::startSliding(int i, int plane) {
+  particles_[i].slidePlane = plane;
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::updateSlide(int i, RunStats& stats) {
+  Particle& p = particles_[i];
+  if (p.slidePlane < 0) return;
+  Motion& m = tracks_[i].motion;
+  const Vec3& n = bodies_.planes[p.slidePlane].normal;
+  if (m.velocity.dot(n) < 0.0) {
+    // Pushed into the plane by another contact at this instant: the plane answers as a contact.
+    resolveAgainstSurface(m.velocity, n, staticContact(i, {false, p.slidePlane}).restitution, 0.0);
+    ++stats.collisions.ballPlane;
+  }
+  if (m.velocity.dot(n) > slideSpeed_[i]) p.slidePlane = -1;  // it leaves the plane
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::keepOnPlane(int i) {
+  const Particle& p = particles_[i];
+  if (p.slidePlane < 0) return;
+  const PlaneShape& plane = bodies_.planes[p.slidePlane];
+  Motion& m = tracks_[i].motion;
+  // Both corrections are round-off, but they would build up over a long slide: the normal
+  // speed left is below a bounce of touching height (slideSpeed_), a lost energy of that order.
+  m.position -= plane.gap(m.position, bodies_.radius[i]) * plane.normal;
+  m.velocity -= m.velocity.dot(plane.normal) * plane.normal;
 }
 
 void EventEngine::changed(int i) {
@@ -531,33 +598,53 @@ void EventEngine::wake(int i, RunStats& stats) {
   }
 }
 
-// Resting balls and balls slower than the rest speed count as supports: neighbours leaning on
-// each other in a pile must be able to come to rest one after the other.
+// Ball i can rest when pushes alone at its contacts hold it against gravity. Its supports are
+// the static shapes, resting balls and slow balls (slower than the rest speed: neighbours leaning
+// on each other in a pile come to rest one after the other) within kSupportGapFraction, the
+// height of the hops that rule 1 gives a slow ball; and the supports that carry its weight must
+// be ones it can touch all at once by moving no further than that. A ball hopping in a corner or
+// in the groove between resting balls rests; one falling between walls that meet far below it
+// (a narrow wedge) does not.
 bool EventEngine::supported(int i) const {
-  const Particle& p = particles_[i];
   const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
   const double r = bodies_.radius[i];
   const double reach = tolerance::kSupportGapFraction * r;
-  std::vector<Vec3> normals;
+  std::vector<ClusterContact> contacts;
+  std::vector<double> gaps;
+  const Particle& p = particles_[i];
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const StaticRef ref = statics_[s];
-    if (ref.cylinder) {
-      const CylinderShape& cylinder = bodies_.cylinders[ref.index];
-      if (cylinder.gap(centre, r) <= reach)
-        normals.push_back(cylinder.perpendicular(centre - cylinder.point).normalized());
-    } else {
-      const PlaneShape& plane = bodies_.planes[ref.index];
-      if (plane.gap(centre, r) <= reach) normals.push_back(plane.normal);
-    }
+    const auto [n, gap, restitution] = staticContact(i, statics_[s], centre);
+    if (gap > reach) continue;
+    contacts.push_back({0, -1, n});
+    gaps.push_back(gap);
   }
   forEachNeighbour(i, [&](int k) {
-    const Particle& q = particles_[k];
-    const Motion& mq = tracks_[k].motion;
-    if (!q.resting && mq.velocityAt(now_, pathAcceleration_).norm() >= restSpeed_[i]) return;
-    const Vec3 d = centre - mq.positionAt(now_, accelerationOf(k));
-    if (d.norm() - r - bodies_.radius[k] <= reach) normals.push_back(d.normalized());
+    const Motion& mk = tracks_[k].motion;
+    if (!particles_[k].resting && mk.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i])
+      return;
+    const Vec3 d = centre - mk.positionAt(now_, accelerationOf(k));
+    const double gap = d.norm() - r - bodies_.radius[k];
+    if (gap > reach) return;
+    contacts.push_back({0, -1, d.normalized()});
+    gaps.push_back(gap);
   });
-  return holdsAgainstGravity(gravity_, normals);
+  std::vector<bool> carries;
+  if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, contacts, tolerance::kForceBalance,
+                            &carries))
+    return false;
+  // The smallest move that closes the gaps of the supports carrying the weight (to first order:
+  // n . d = -gap for each).
+  std::vector<int> carrying;
+  for (int c = 0; c < static_cast<int>(contacts.size()); ++c)
+    if (carries[c]) carrying.push_back(c);
+  Eigen::MatrixXd normals(static_cast<Eigen::Index>(carrying.size()), 3);
+  Eigen::VectorXd closing(static_cast<Eigen::Index>(carrying.size()));
+  for (std::size_t k = 0; k < carrying.size(); ++k) {
+    normals.row(k) = contacts[carrying[k]].normal.transpose();
+    closing[k] = -gaps[carrying[k]];
+  }
+  const Eigen::Vector3d move = normals.completeOrthogonalDecomposition().solve(closing);
+  return move.norm() <= reach && (normals * move - closing).norm() <= reach;
 }
 
 void EventEngine::notePenetration(double overlap, RunStats& stats) const {
@@ -591,7 +678,13 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
     Particle& p = particles_[i];
     if (p.resting) continue;
     moveTo(i, now_);
-    tracks_[i].motion.velocity = velocities[i];
+    Motion& m = tracks_[i].motion;
+    m.velocity = velocities[i];
+    if (p.slidePlane >= 0) {
+      // A kick of gravity into the plane is held by the plane; a kick away from it lets go.
+      if (m.velocity.dot(bodies_.planes[p.slidePlane].normal) > slideSpeed_[i]) p.slidePlane = -1;
+      keepOnPlane(i);
+    }
     changed(i);
   }
   predictAll();

@@ -64,6 +64,7 @@ class EventEngine {
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
+    int slidePlane = -1;  // the plane the ball slides on, or -1 in flight
     bool resting = false;
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
@@ -84,14 +85,17 @@ class EventEngine {
     int index;
   };
 
-  // Ball i (at its last stored position) against a plane or cylinder: the unit normal towards
-  // the ball, the gap between their surfaces and the contact's restitution.
+  // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
+  // normal towards the ball, the gap between their surfaces and the contact's restitution.
   struct StaticContact {
     Vec3 normal;
     double gap;
     double restitution;
   };
-  StaticContact staticContact(int i, StaticRef ref) const;
+  StaticContact staticContact(int i, StaticRef ref, const Vec3& position) const;
+  StaticContact staticContact(int i, StaticRef ref) const {
+    return staticContact(i, ref, tracks_[i].motion.position);
+  }
 
   void buildGrid(const std::vector<BallState>& state);
   void buildStaticLists();
@@ -114,7 +118,19 @@ class EventEngine {
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
   // n pointing to the ball.
-  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats);
+  // `plane` is the plane's index when the surface is one: a slow enough contact with a plane
+  // that gravity presses the ball against turns into sliding along it.
+  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
+                          int plane = -1);
+  // Sliding (docs/physics.md, "Sliding"): the ball keeps touching the plane and follows
+  // gravity's component along it, an exact path, until a contact sends it off faster than a
+  // bounce of round-off height.
+  void startSliding(int i, int plane);
+  // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
+  // one that now leaves it flies.
+  void updateSlide(int i, RunStats& stats);
+  // Puts a sliding ball back on its plane exactly, undoing round-off drift off it.
+  void keepOnPlane(int i);
   void leaveTouchingStatics(int i, RunStats& stats);
   void changed(int i);
   void putToRest(int i, RunStats& stats);
@@ -123,9 +139,15 @@ class EventEngine {
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
     // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).
-    return straightPaths_ || particles_[i].resting ? zero_ : pathAcceleration_;
+    if (straightPaths_) return zero_;
+    const Particle& p = particles_[i];
+    if (p.resting) return zero_;
+    return p.slidePlane < 0 ? pathAcceleration_ : slideAcceleration_[p.slidePlane];
   }
-  void moveTo(int i, double t) { tracks_[i].motion.moveTo(t, accelerationOf(i)); }
+  void moveTo(int i, double t) {
+    tracks_[i].motion.moveTo(t, accelerationOf(i));
+    if (particles_[i].slidePlane >= 0) keepOnPlane(i);
+  }
   void notePenetration(double overlap, RunStats& stats) const;
   template <typename F>
   void forEachNeighbour(int i, F&& f) const;
@@ -147,6 +169,10 @@ class EventEngine {
   };
   std::vector<Prediction> predictions_;
   std::vector<double> restSpeed_;
+  // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
+  // touching distance, or one step's kick of gravity under `swept`.
+  std::vector<double> slideSpeed_;
+  std::vector<Vec3> slideAcceleration_;  // path acceleration along each plane
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell

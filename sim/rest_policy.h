@@ -16,16 +16,14 @@
 
 #include "sim/scene.h"
 
-#include <vector>
-
 namespace carom {
 
 double restSpeed(const Vec3& gravity, double radius);
 
-double collapseSpeed(double initialRmsSpeed);
+// The speed of a bounce no higher than touching distance (kTouchFraction of the radius): a
+// contact with a plane slower than that is a slide.
+double slideSpeed(const Vec3& gravity, double radius);
 
-// True when forces along the given unit support normals (each pointing from the support towards
-// the ball, each able only to push) can balance gravity.
-bool holdsAgainstGravity(const Vec3& gravity, const std::vector<Vec3>& supportNormals);
+double collapseSpeed(double initialRmsSpeed);
 
 }  // namespace carom

@@ -44,9 +44,10 @@ inline constexpr std::size_t kMaxCylinders = 10'000;
 
 namespace carom::tolerance {
 
-// Supports hold a ball when gravity's direction lies in the cone of their normals to within this
-// distance (a slope shallower than about this many radians counts as level).
-inline constexpr double kSupportSlope = 1e-6;
+// Contacts hold a ball (or a cluster of balls) when pushes at them balance gravity on each ball
+// to within this fraction of its weight: round-off of the solve. A ramp of 1e-6 rad
+// is not level (test_rest).
+inline constexpr double kForceBalance = 1e-12;
 
 // A ball that takes part in more surface collisions than this in a row, each within a negligible
 // flight of the last, is put to rest: the last guard against a cycle of contacts that lets time
