@@ -19,8 +19,10 @@ inline constexpr double kRestHeightFraction = 1e-3;
 // settles, and does not wake its neighbours.
 inline constexpr double kSettleSpeedFactor = 2.0;
 
-// Gap (as a fraction of the radius) within which a slow ball is considered supported by a
-// surface when deciding whether it can be put to rest.
+// Gap (as a fraction of the radius) within which a slow ball's contacts count when deciding
+// whether it can be put to rest: the height of the rest-speed hops. The contacts that carry
+// its weight must also be closable together by a move no longer than this (a ball between
+// walls meeting far below it is not supported; test_rest).
 inline constexpr double kSupportGapFraction = 1e-2;
 
 // Without gravity there is no rest speed from a bounce height; collisions slower than this
