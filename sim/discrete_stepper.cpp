@@ -23,6 +23,11 @@ class DiscreteStepper final : public Stepper {
       positions_.push_back(s.position);
       velocities_.push_back(s.velocity);
     }
+    if (!settings_.gravity.isZero()) {
+      energy_.resize(positions_.size());
+      energyExcess_.assign(positions_.size(), 0.0);
+      for (int i = 0; i < static_cast<int>(positions_.size()); ++i) recordEnergy(i);
+    }
   }
 
   void advanceTo(double end, RunStats& stats, std::vector<CollisionRecord>* log) override {
@@ -87,9 +92,13 @@ class DiscreteStepper final : public Stepper {
                int other, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     stats.maxPenetration = std::max(stats.maxPenetration, overlap);
     positions_[i] += overlap * n;
+    toStepEnd(i);
+    restoreEnergy(i);
     const double approach = -velocities_[i].dot(n);
+    if (approach > 0.0) resolveAgainstSurface(velocities_[i], n, restitution, 0.0);
+    recordEnergy(i);
+    fromStepEnd(i);
     if (approach <= 0.0) return;
-    resolveAgainstSurface(velocities_[i], n, restitution, 0.0);
     if (kind == ContactKind::BallPlane)
       ++stats.collisions.ballPlane;
     else
@@ -111,18 +120,50 @@ class DiscreteStepper final : public Stepper {
     const double wi = bodies_.inverseMass[i] / (bodies_.inverseMass[i] + bodies_.inverseMass[j]);
     positions_[i] -= (overlap * wi) * n;
     positions_[j] += (overlap * (1.0 - wi)) * n;
+    toStepEnd(i);
+    toStepEnd(j);
+    restoreEnergy(i);
+    restoreEnergy(j);
     const double approach = (velocities_[i] - velocities_[j]).dot(n);
+    if (approach > 0.0)
+      resolveBallBall(velocities_[i], velocities_[j], bodies_.inverseMass[i],
+                      bodies_.inverseMass[j], n,
+                      std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
+    recordEnergy(i);
+    recordEnergy(j);
+    fromStepEnd(i);
+    fromStepEnd(j);
     if (approach <= 0.0) return;
-    resolveBallBall(velocities_[i], velocities_[j], bodies_.inverseMass[i], bodies_.inverseMass[j],
-                    n, std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
     ++stats.collisions.ballBall;
     if (log)
       log->push_back(
           {time, ContactKind::BallBall, i, j, positions_[i] + bodies_.radius[i] * n, approach});
   }
 
+  // As in `swept` (EventEngine::restoreEnergy): a contact first gives each ball back the energy
+  // it had after its last contact, which the integrator's steps and the push out of the overlap
+  // do not keep, so that their errors never outlive one flight. Gravity's potential makes them
+  // matter; without gravity nothing is restored.
+  void recordEnergy(int i) {
+    if (energy_.empty()) return;
+    energy_[i] = 0.5 * velocities_[i].squaredNorm() - settings_.gravity.dot(positions_[i]) -
+                 energyExcess_[i];
+    energyExcess_[i] = 0.0;
+  }
+  void restoreEnergy(int i) {
+    if (energy_.empty()) return;
+    energyExcess_[i] =
+        restoreSpecificEnergy(velocities_[i], positions_[i], settings_.gravity, energy_[i]);
+  }
+  // Contacts act on the velocity at the step's end, with the kick still owed (the one state()
+  // reports), so that their energy is counted as it will be reported.
+  void toStepEnd(int i) { velocities_[i] += pendingKick_ * settings_.gravity; }
+  void fromStepEnd(int i) { velocities_[i] -= pendingKick_ * settings_.gravity; }
+
   const Bodies& bodies_;
   StepperSettings settings_;
+  std::vector<double> energy_;        // per unit mass, after each ball's last contact
+  std::vector<double> energyExcess_;  // not yet taken back (restoreSpecificEnergy)
   StepClock clock_;
   double pendingKick_ = 0.0;
   std::vector<Vec3> positions_;

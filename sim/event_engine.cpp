@@ -71,6 +71,13 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   for (const PlaneShape& plane : bodies.planes)
     slideAcceleration_.push_back(pathAcceleration_ -
                                  pathAcceleration_.dot(plane.normal) * plane.normal);
+  // Straight sweeps under gravity are the only paths that are not the true ones.
+  restoresEnergy_ = straightPaths_ && !gravity_.isZero();
+  if (restoresEnergy_) {
+    energy_.resize(n);
+    energyExcess_.assign(n, 0.0);
+    for (int i = 0; i < n; ++i) recordEnergy(i);
+  }
   buildGrid(state);
   buildStaticLists();
   for (int i = 0; i < n; ++i) noteStatics(i);
@@ -344,6 +351,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::Plane:
     case EventKind::Cylinder: {
       moveTo(i, now_);
+      restoreEnergy(i);
       const Motion& m = tracks_[i].motion;
       const double r = bodies_.radius[i];
       const auto [n, gap, restitution] =
@@ -365,6 +373,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
             {now_,
              event.kind == EventKind::Plane ? ContactKind::BallPlane : ContactKind::BallCylinder, i,
              event.other, m.position - r * n, approach});
+      recordEnergy(i);
       if (!particles_[i].resting) predict(i);
       return;
     }
@@ -386,6 +395,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   Particle& b = particles_[j];
   moveTo(i, now_);
   moveTo(j, now_);
+  if (!a.resting) restoreEnergy(i);
+  if (!b.resting) restoreEnergy(j);
   Motion& ma = tracks_[i].motion;
   Motion& mb = tracks_[j].motion;
   Vec3 n = mb.position - ma.position;
@@ -420,6 +431,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (log)
     log->push_back(
         {now_, ContactKind::BallBall, i, j, ma.position + bodies_.radius[i] * n, approach});
+  recordEnergy(i);
+  recordEnergy(j);
   if (!a.resting) predict(i);
   if (!b.resting) predict(j);
 }
@@ -553,6 +566,19 @@ void EventEngine::keepOnPlane(int i) {
   m.velocity -= m.velocity.dot(plane.normal) * plane.normal;
 }
 
+void EventEngine::recordEnergy(int i) {
+  if (!restoresEnergy_) return;
+  const Motion& m = tracks_[i].motion;
+  energy_[i] = 0.5 * m.velocity.squaredNorm() - gravity_.dot(m.position) - energyExcess_[i];
+  energyExcess_[i] = 0.0;
+}
+
+void EventEngine::restoreEnergy(int i) {
+  if (!restoresEnergy_) return;
+  Motion& m = tracks_[i].motion;
+  energyExcess_[i] = restoreSpecificEnergy(m.velocity, m.position, gravity_, energy_[i]);
+}
+
 void EventEngine::changed(int i) {
   ++particles_[i].counter;
 }
@@ -581,6 +607,7 @@ void EventEngine::wake(int i, RunStats& stats) {
     Particle& p = particles_[k];
     ++stats.wakes;
     tracks_[k].motion.since = now_;  // starts to fall from here
+    recordEnergy(k);
     p.collisionsInBurst = 0;
     changed(k);
     forEachNeighbour(k, [&](int m) {

@@ -45,4 +45,22 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
   return addedEnergy;
 }
 
+double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy) {
+  const Vec3 down = gravity.normalized();
+  const double along = v.dot(down);
+  const Vec3 across = v - along * down;
+  const double twiceKinetic = 2.0 * (energy + gravity.dot(position));
+  const double along2 = twiceKinetic - across.squaredNorm();
+  if (along2 >= 0.0) {
+    v = across + std::copysign(std::sqrt(along2), along) * down;
+    return 0.0;
+  }
+  if (twiceKinetic > 0.0) {
+    v = across * std::sqrt(twiceKinetic / across.squaredNorm());
+    return 0.0;
+  }
+  v.setZero();
+  return -0.5 * twiceKinetic;  // higher than its energy allows: the excess stays
+}
+
 }  // namespace carom

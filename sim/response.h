@@ -24,4 +24,12 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
 // Returns true when it had to add energy (the ball was too slow in every direction).
 bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation);
 
+// Sets velocity `v` of a ball at `position` so that its energy per unit mass,
+// |v|²/2 - gravity . position, is `energy`: the errors of a stepped method (integrator kicks, a
+// straight chord below the parabola, an overlap pushed out) are along gravity, so the velocity
+// along gravity takes the change; only when that is not enough does the sideways motion slow
+// down. A ball higher than `energy` allows stops, and the excess it still has is returned
+// (else 0), to be taken at its next contact.
+double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy);
+
 }  // namespace carom
