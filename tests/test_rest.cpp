@@ -249,16 +249,21 @@ class TestRest : public QObject {
   // it falls, down to where the wedge holds it, and back up. It used to be put to rest 1 m above
   // that, because a wall within 1 % of its radius counted as a support.
   void ballFallingBetweenCloseWallsIsNotFrozen_data() {
+    QTest::addColumn<int>("method");
     QTest::addColumn<double>("angle");
     QTest::addColumn<double>("sideways");
-    for (double angle : {1e-6, 1e-4})
-      for (double sideways : {1e-3, 0.1})
-        QTest::addRow("%g rad, %g m/s", angle, sideways) << angle << sideways;
+    for (int method : {int(Method::Exact), int(Method::Swept), int(Method::Discrete)})
+      for (double angle : {1e-6, 1e-4})
+        for (double sideways : {1e-3, 0.1})
+          QTest::addRow("%s %g rad, %g m/s", methodName(Method(method)).data(), angle, sideways)
+              << method << angle << sideways;
   }
   void ballFallingBetweenCloseWallsIsNotFrozen() {
+    QFETCH(int, method);
     QFETCH(double, angle);
     QFETCH(double, sideways);
     Scene s;
+    s.world.method = Method(method);
     const double r = 0.1, g = 9.81, drop = 1.0;
     // The apex is placed so that the ball starts near the origin: at 2e5 m from it (where a
     // 1e-6 rad wedge holds the ball) positions alone are rounded to 3e-11 m.
@@ -275,7 +280,10 @@ class TestRest : public QObject {
     sim.advance(0.25);  // a quarter of the way down, in flight between the walls
     QCOMPARE(sim.stats().restings, std::uint64_t{0});
     QVERIFY(sim.stats().collisions.ballPlane > 0);
-    QVERIFY2(std::abs(energy() - before) <= 1e-9 * before,
+    // `exact` keeps the energy to round-off; the stepped methods to their integrator's error in
+    // one flight (symplectic Euler, 1/60 s, a ball falling at 2.5 m/s: about 2 %).
+    const double tolerance = Method(method) == Method::Exact ? 1e-9 : 0.05;
+    QVERIFY2(std::abs(energy() - before) <= tolerance * before,
              qPrintable(QString::number((energy() - before) / before)));
     QVERIFY2(sim.positions()[0].y() - jam < drop - 0.2,
              qPrintable(QString::number(sim.positions()[0].y() - jam)));
