@@ -79,7 +79,8 @@ double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSu
   const Vec3 u0 = b.position - a.position;
   const Vec3 u1 = b.velocity - a.velocity;
   const Vec3 u2 = 0.5 * (b.acceleration - a.acceleration);
-  // Free balls share gravity, so relative paths are straight unless one of them rests.
+  // Free balls share gravity, so relative paths are straight unless one of them rests or
+  // slides.
   if (u2.squaredNorm() == 0.0) return straightEntry(u0, u1, radiusSum, horizon);
   return firstEntry(squaredLengthMinus(u0, u1, u2, radiusSum), horizon);
 }

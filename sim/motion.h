@@ -1,7 +1,8 @@
 #pragma once
 // A ball's path between events: constant acceleration from a reference time, so a parabola under
 // gravity and a straight line without it. Positions are evaluated lazily at any later time. The
-// acceleration is not stored: every free ball shares gravity and a resting one has none.
+// acceleration is not stored: every free ball shares gravity, a ball sliding on a plane has
+// gravity's component along it (one per plane), and a resting one has none.
 
 #include "sim/scene.h"
 
