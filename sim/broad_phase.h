@@ -32,6 +32,21 @@ class BallBins {
     }
   }
 
+  // Calls f(j) for every other ball j in ball i's cell or the adjacent ones.
+  template <typename F>
+  void forEachCandidateOf(int i, F&& f) const {
+    const int c = cellOfBall_[i];
+    const int cx = c % counts_[0], cy = (c / counts_[0]) % counts_[1],
+              cz = c / (counts_[0] * counts_[1]);
+    for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, counts_[2] - 1); ++z)
+      for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, counts_[1] - 1); ++y)
+        for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, counts_[0] - 1); ++x) {
+          const int cell = (z * counts_[1] + y) * counts_[0] + x;
+          for (int s = start_[cell]; s < start_[cell + 1]; ++s)
+            if (order_[s] != i) f(order_[s]);
+        }
+  }
+
  private:
   int counts_[3] = {1, 1, 1};
   std::vector<int> cellOfBall_;

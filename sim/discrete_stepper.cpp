@@ -8,6 +8,7 @@
 #include "sim/response.h"
 #include "sim/step_clock.h"
 #include "sim/stepper.h"
+#include "sim/tolerances.h"
 
 #include <algorithm>
 
@@ -60,9 +61,28 @@ class DiscreteStepper final : public Stepper {
       velocities_[i] += before;
       positions_[i] += h * velocities_[i];
     }
+    pushed_.assign(n, 0);
+    pushedList_.clear();
     for (int i = 0; i < n; ++i) resolveStatics(i, time, stats, log);
     bins_.build(positions_, 2.0 * bodies_.maxRadius);
     bins_.forEachCandidatePair([&](int i, int j) { resolvePair(i, j, time, stats, log); });
+    // A push out of one overlap can make another (a column of balls on a floor: the pair above
+    // pushes the bottom ball back into the floor, and a single pass a step let the column sink
+    // through it). Further passes look again at the balls pushed, until none is.
+    for (int pass = 1; pass < tolerance::kMaxOverlapPasses && !pushedList_.empty(); ++pass) {
+      std::vector<int> again;
+      again.swap(pushedList_);
+      std::sort(again.begin(), again.end());  // the same order whatever pushed them first
+      // pushed_ tells which balls this pass looks at, so that a pair of two is seen once.
+      for (int i : again) pushed_[i] = kLookedAt;
+      for (int i : again) resolveStatics(i, time, stats, log);
+      for (int i : again)
+        bins_.forEachCandidateOf(i, [&](int j) {
+          const bool lookedAt = pushed_[j] == kLookedAt || pushed_[j] == kLookedAgain;
+          if (!lookedAt || i < j) resolvePair(i, j, time, stats, log);
+        });
+      for (int i : again) pushed_[i] = pushed_[i] == kLookedAgain ? kPushed : kNotPushed;
+    }
     ++stats.steps;
     stats.ballSteps += n;
   }
@@ -92,6 +112,7 @@ class DiscreteStepper final : public Stepper {
                int other, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     stats.maxPenetration = std::max(stats.maxPenetration, overlap);
     positions_[i] += overlap * n;
+    notePush(i, overlap);
     toStepEnd(i);
     restoreEnergy(i);
     const double approach = -velocities_[i].dot(n);
@@ -120,6 +141,8 @@ class DiscreteStepper final : public Stepper {
     const double wi = bodies_.inverseMass[i] / (bodies_.inverseMass[i] + bodies_.inverseMass[j]);
     positions_[i] -= (overlap * wi) * n;
     positions_[j] += (overlap * (1.0 - wi)) * n;
+    notePush(i, overlap * wi);
+    notePush(j, overlap * (1.0 - wi));
     toStepEnd(i);
     toStepEnd(j);
     restoreEnergy(i);
@@ -138,6 +161,18 @@ class DiscreteStepper final : public Stepper {
     if (log)
       log->push_back(
           {time, ContactKind::BallBall, i, j, positions_[i] + bodies_.radius[i] * n, approach});
+  }
+
+  // A push further than touching distance may have made a new overlap: look at the ball again.
+  void notePush(int i, double distance) {
+    if (distance <= tolerance::kTouchFraction * bodies_.radius[i]) return;
+    if (pushed_[i] == kNotPushed) {
+      pushed_[i] = kPushed;
+      pushedList_.push_back(i);
+    } else if (pushed_[i] == kLookedAt) {
+      pushed_[i] = kLookedAgain;
+      pushedList_.push_back(i);
+    }
   }
 
   // As in `swept` (EventEngine::restoreEnergy): a contact first gives each ball back the energy
@@ -168,6 +203,11 @@ class DiscreteStepper final : public Stepper {
   double pendingKick_ = 0.0;
   std::vector<Vec3> positions_;
   std::vector<Vec3> velocities_;
+  // Each ball's part in the current pass: pushed (to be looked at again), looked at in this
+  // pass, or both.
+  enum : char { kNotPushed, kPushed, kLookedAt, kLookedAgain };
+  std::vector<char> pushed_;
+  std::vector<int> pushedList_;  // the balls pushed, for the next pass
   BallBins bins_;
 };
 

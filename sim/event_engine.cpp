@@ -68,9 +68,11 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
     slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
-  for (const PlaneShape& plane : bodies.planes)
+  for (const PlaneShape& plane : bodies.planes) {
     slideAcceleration_.push_back(pathAcceleration_ -
                                  pathAcceleration_.dot(plane.normal) * plane.normal);
+    slideGravity_.push_back(gravity_ - gravity_.dot(plane.normal) * plane.normal);
+  }
   // Straight sweeps under gravity are the only paths that are not the true ones.
   restoresEnergy_ = straightPaths_ && !gravity_.isZero();
   if (restoresEnergy_) {
@@ -416,10 +418,13 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   } else {
     if (b.resting) wake(j, stats);
     // A pair that gravity presses together (a falling ball on a sliding one) separates at no
-    // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h).
-    const bool pressed = (accelerationOf(j) - accelerationOf(i)).dot(n) < 0.0;
-    const double minimum =
-        pressed ? std::max(collapseSpeed_, std::min(restSpeed_[i], restSpeed_[j])) : collapseSpeed_;
+    // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h). Only an
+    // inelastic pair can collapse: an elastic one parts at the slide speed, which it needs only
+    // when it meets at no speed (balls placed touching, a frictionless pyramid).
+    const bool pressed = (gravityOn(j) - gravityOn(i)).dot(n) < 0.0;
+    const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
+                                                 : std::min(restSpeed_[i], restSpeed_[j]);
+    const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
                     restitution, minimum);
     changed(i);
@@ -465,7 +470,10 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   } else {
     // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
     // slides instead (above), and so bounces in finitely many events.
-    const double minimum = pressed ? (plane >= 0 ? 0.0 : rest) : collapseSpeed_;
+    // An elastic contact cannot collapse either: it needs a minimum only to part when it meets
+    // at no speed, and takes the slide speed's.
+    const double pressedMinimum = plane >= 0 ? 0.0 : restitution >= 1.0 ? slideSpeed_[i] : rest;
+    const double minimum = pressed ? pressedMinimum : collapseSpeed_;
     if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
     resolveAgainstSurface(m.velocity, n, restitution, minimum);
     changed(i);
@@ -633,6 +641,10 @@ void EventEngine::wake(int i, RunStats& stats) {
 // in the groove between resting balls rests; one falling between walls that meet far below it
 // (a narrow wedge) does not.
 bool EventEngine::supported(int i) const {
+  return heldAlone(i) && clusterHolds(i);
+}
+
+bool EventEngine::heldAlone(int i) const {
   const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
   const double r = bodies_.radius[i];
   const double reach = tolerance::kSupportGapFraction * r;
@@ -672,6 +684,56 @@ bool EventEngine::supported(int i) const {
   }
   const Eigen::Vector3d move = normals.completeOrthogonalDecomposition().solve(closing);
   return move.norm() <= reach && (normals * move - closing).norm() <= reach;
+}
+
+// Ball i's cluster: i and the slow balls (slower than a settling ball, not yet resting) that
+// touch it within the support gap, and theirs, breadth first up to kMaxClusterBalls. They are
+// solved together, loads included: three slow balls in a frictionless pyramid are not held,
+// though each alone would be. Resting balls, and balls past the limit, count as fixed, as
+// statics do: a settled pile is rigid to a newcomer unless a hit wakes it (rule 4).
+bool EventEngine::clusterHolds(int i) const {
+  std::vector<int> members{i};
+  std::vector<Vec3> centres{tracks_[i].motion.positionAt(now_, accelerationOf(i))};
+  const auto memberIndex = [&](int k) {
+    const auto found = std::find(members.begin(), members.end(), k);
+    return found == members.end() ? -1 : static_cast<int>(found - members.begin());
+  };
+  std::vector<ClusterContact> contacts;
+  for (std::size_t c = 0; c < members.size(); ++c) {
+    const int k = members[c];
+    const double rk = bodies_.radius[k];
+    const Particle& p = particles_[k];
+    for (int s = p.staticBegin; s < p.staticEnd; ++s) {
+      const auto [n, gap, restitution] = staticContact(k, statics_[s], centres[c]);
+      if (gap <= tolerance::kSupportGapFraction * rk)
+        contacts.push_back({static_cast<int>(c), -1, n});
+    }
+    forEachNeighbour(k, [&](int m) {
+      const int known = memberIndex(m);
+      if (known >= 0 && known < static_cast<int>(c)) return;  // that contact is listed already
+      const Particle& q = particles_[m];
+      const Motion& mm = tracks_[m].motion;
+      const bool slow = !q.resting && mm.velocityAt(now_, accelerationOf(m)).norm() <
+                                          tolerance::kSettleSpeedFactor * restSpeed_[m];
+      if (!q.resting && !slow) return;
+      const Vec3 centre = known >= 0 ? centres[known] : mm.positionAt(now_, accelerationOf(m));
+      const Vec3 d = centres[c] - centre;
+      if (d.norm() - rk - bodies_.radius[m] >
+          tolerance::kSupportGapFraction * std::min(rk, bodies_.radius[m]))
+        return;
+      int other = known;
+      if (other < 0 && slow && static_cast<int>(members.size()) < tolerance::kMaxClusterBalls) {
+        other = static_cast<int>(members.size());
+        members.push_back(m);
+        centres.push_back(centre);
+      }
+      contacts.push_back({static_cast<int>(c), other, d.normalized()});
+    });
+  }
+  if (members.size() == 1) return true;  // alone among fixed supports: heldAlone decided it
+  std::vector<double> masses(members.size());
+  for (std::size_t c = 0; c < members.size(); ++c) masses[c] = bodies_.mass[members[c]];
+  return contactForcesBalance(gravity_, masses, contacts, tolerance::kForceBalance);
 }
 
 void EventEngine::notePenetration(double overlap, RunStats& stats) const {

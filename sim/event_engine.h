@@ -142,7 +142,11 @@ class EventEngine {
   void restoreEnergy(int i);
   void putToRest(int i, RunStats& stats);
   void wake(int i, RunStats& stats);
+  // Rule 3 of rest_policy.h: ball i's contacts hold it (heldAlone, the balls it touches fixed)
+  // and so do its cluster's (clusterHolds, the balls free).
   bool supported(int i) const;
+  bool heldAlone(int i) const;
+  bool clusterHolds(int i) const;
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
     // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).
@@ -150,6 +154,13 @@ class EventEngine {
     const Particle& p = particles_[i];
     if (p.resting) return zero_;
     return p.slidePlane < 0 ? pathAcceleration_ : slideAcceleration_[p.slidePlane];
+  }
+  // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
+  // (a pair that gravity presses together), the same under `exact` and `swept`.
+  Vec3 gravityOn(int i) const {
+    const Particle& p = particles_[i];
+    if (p.resting) return Vec3::Zero();
+    return p.slidePlane < 0 ? gravity_ : slideGravity_[p.slidePlane];
   }
   void moveTo(int i, double t) {
     tracks_[i].motion.moveTo(t, accelerationOf(i));
@@ -184,6 +195,7 @@ class EventEngine {
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
   std::vector<Vec3> slideAcceleration_;  // path acceleration along each plane
+  std::vector<Vec3> slideGravity_;       // gravity along each plane
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell

@@ -3,13 +3,15 @@
 // ever lower and ever faster; an event-driven solver would stall on those bounces. The policy
 // (docs/physics.md, "Resting contact", where the rules are numbered as here):
 //  1. A contact that gravity presses together (cylinder top, a resting ball below, a falling
-//     ball on a sliding one) separates at no less than the rest speed: the speed of a bounce
-//     kRestHeightFraction of the ball's radius high.
+//     ball on a sliding one) separates at no less than the rest speed, the speed of a bounce
+//     kRestHeightFraction of the ball's radius high, when inelastic; an elastic one, which
+//     cannot collapse, at no less than the slide speed (it parts when met at no speed).
 //  2. A contact with a plane that gravity presses the ball against, bouncing no faster than the
 //     slide speed, becomes sliding along the plane (EventEngine).
 //  3. A ball that meets a surface slower than twice the rest speed in every direction, while
-//     pushes at the contacts it can close hold it against gravity (contact_forces.h), is put to
-//     rest: it stops and is no longer scheduled.
+//     pushes at the contacts it can close hold it against gravity (contact_forces.h), alone and
+//     together with the slow balls of its cluster, is put to rest: it stops and is no longer
+//     scheduled.
 //  4. A resting ball hit at twice the rest speed or faster wakes, and so does every resting ball
 //     that touches it from above (it may rest on it). A gentler hit treats it as immovable.
 //  5. Without gravity, collisions separate at no less than kCollapseSpeedFraction of the scene's

@@ -50,6 +50,15 @@ namespace carom::tolerance {
 // to within this fraction of its weight: round-off of the solve. A ramp of 1e-6 rad
 // is not level (test_rest).
 inline constexpr double kForceBalance = 1e-12;
+// `discrete` resolves each step's overlaps in up to this many passes, each looking again at the
+// balls the one before pushed further than touching distance: a column of touching balls on a
+// floor needs about one pass a ball to push out (test_rest), a gas one or two.
+inline constexpr int kMaxOverlapPasses = 32;
+
+// The most balls whose contact forces are solved together when a ball comes to rest on others
+// (its cluster, breadth first); balls further away count as fixed. Piles wider than this rest
+// on their outer balls as on walls.
+inline constexpr int kMaxClusterBalls = 8;
 
 // A ball that takes part in more surface collisions than this in a row, each within a negligible
 // flight of the last, is put to rest: the last guard against a cycle of contacts that lets time
