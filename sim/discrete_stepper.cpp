@@ -10,10 +10,53 @@
 #include "sim/stepper.h"
 #include "sim/tolerances.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
+#include <optional>
 
 namespace carom {
 namespace {
+
+struct StaticOverlap {
+  Vec3 normal;  // out of the shape, towards the ball
+  double depth;
+  double restitution;
+  ContactKind kind;
+  int other;
+};
+
+// The smallest move d with n·d >= depth for every overlap, when the overlaps are few (a ball in
+// a V or a corner): the best over each set of them taken as touching exactly, d a non-negative
+// combination of their normals. Empty when there are too many or no move clears them all.
+std::optional<Vec3> smallestMoveOut(const std::vector<StaticOverlap>& overlaps) {
+  const int count = static_cast<int>(overlaps.size());
+  if (count > 4) return std::nullopt;
+  std::optional<Vec3> best;
+  for (unsigned subset = 1; subset < (1u << count); ++subset) {
+    std::vector<int> active;
+    for (int k = 0; k < count; ++k)
+      if (subset & (1u << k)) active.push_back(k);
+    const int size = static_cast<int>(active.size());
+    Eigen::MatrixXd normals(size, 3);
+    Eigen::VectorXd depths(size);
+    for (int a = 0; a < size; ++a) {
+      normals.row(a) = overlaps[active[a]].normal.transpose();
+      depths[a] = overlaps[active[a]].depth;
+    }
+    const Eigen::MatrixXd gram = normals * normals.transpose();
+    const Eigen::VectorXd weights = gram.colPivHouseholderQr().solve(depths);
+    // A V of angle θ makes the system as ill-conditioned as 1/θ²: whether the move clears every
+    // overlap (to a part in a million, which the next pass takes) is what decides.
+    if (!weights.allFinite() || weights.minCoeff() < 0.0) continue;
+    const Vec3 move = normals.transpose() * weights;
+    bool clears = true;
+    for (const StaticOverlap& o : overlaps)
+      clears = clears && o.normal.dot(move) >= o.depth * (1.0 - 1e-6);
+    if (clears && (!best || move.norm() < best->norm())) best = move;
+  }
+  return best;
+}
 
 class DiscreteStepper final : public Stepper {
  public:
@@ -89,12 +132,14 @@ class DiscreteStepper final : public Stepper {
 
   void resolveStatics(int i, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     const double r = bodies_.radius[i];
+    overlaps_.clear();
     for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k) {
       const PlaneShape& plane = bodies_.planes[k];
       const double gap = plane.gap(positions_[i], r);
       if (gap >= 0.0) continue;
-      pushOut(i, plane.normal, -gap, std::min(bodies_.restitution[i], bodies_.planeRestitution[k]),
-              ContactKind::BallPlane, k, time, stats, log);
+      overlaps_.push_back({plane.normal, -gap,
+                           std::min(bodies_.restitution[i], bodies_.planeRestitution[k]),
+                           ContactKind::BallPlane, k});
     }
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
       const CylinderShape& cylinder = bodies_.cylinders[k];
@@ -103,9 +148,51 @@ class DiscreteStepper final : public Stepper {
       if (gap >= 0.0) continue;
       const Vec3 n = out.norm() > 0.0 ? Vec3(out.normalized())
                                       : cylinder.perpendicular(Vec3::UnitX()).normalized();
-      pushOut(i, n, -gap, std::min(bodies_.restitution[i], bodies_.cylinderRestitution[k]),
-              ContactKind::BallCylinder, k, time, stats, log);
+      overlaps_.push_back({n, -gap,
+                           std::min(bodies_.restitution[i], bodies_.cylinderRestitution[k]),
+                           ContactKind::BallCylinder, k});
     }
+    if (overlaps_.size() > 1 && pushOutOfSeveral(i, time, stats, log)) return;
+    for (const StaticOverlap& o : overlaps_)
+      pushOut(i, o.normal, o.depth, o.restitution, o.kind, o.other, time, stats, log);
+  }
+
+  // A ball in several static shapes at once (the bottom of a narrow V, a corner) moves by the
+  // smallest move that clears them all, and reflects off each it still moves into, in turn, as
+  // EventEngine::leaveTouchingStatics does. Pushed out of one after the other instead, a ball in
+  // a V of 1e-4 rad went from wall to wall a little higher each pass and stayed stuck below its
+  // jam. False when no such move is found (the shapes leave the ball no room).
+  bool pushOutOfSeveral(int i, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
+    const std::optional<Vec3> move = smallestMoveOut(overlaps_);
+    if (!move) return false;
+    for (const StaticOverlap& o : overlaps_)
+      stats.maxPenetration = std::max(stats.maxPenetration, o.depth);
+    positions_[i] += *move;
+    notePush(i, move->norm());
+    toStepEnd(i);
+    restoreEnergy(i);
+    Vec3& v = velocities_[i];
+    for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
+      bool reflected = false;
+      for (const StaticOverlap& o : overlaps_) {
+        const double approach = -v.dot(o.normal);
+        if (approach <= 0.0) continue;
+        resolveAgainstSurface(v, o.normal, o.restitution, 0.0);
+        if (o.kind == ContactKind::BallPlane)
+          ++stats.collisions.ballPlane;
+        else
+          ++stats.collisions.ballCylinder;
+        if (log)
+          log->push_back(
+              {time, o.kind, i, o.other, positions_[i] - bodies_.radius[i] * o.normal, approach});
+        reflected = true;
+        ++reflections;
+      }
+      if (!reflected) break;
+    }
+    recordEnergy(i);
+    fromStepEnd(i);
+    return true;
   }
 
   void pushOut(int i, const Vec3& n, double overlap, double restitution, ContactKind kind,
@@ -197,8 +284,9 @@ class DiscreteStepper final : public Stepper {
 
   const Bodies& bodies_;
   StepperSettings settings_;
-  std::vector<double> energy_;        // per unit mass, after each ball's last contact
-  std::vector<double> energyExcess_;  // not yet taken back (restoreSpecificEnergy)
+  std::vector<StaticOverlap> overlaps_;  // of the ball being resolved
+  std::vector<double> energy_;           // per unit mass, after each ball's last contact
+  std::vector<double> energyExcess_;     // not yet taken back (restoreSpecificEnergy)
   StepClock clock_;
   double pendingKick_ = 0.0;
   std::vector<Vec3> positions_;

@@ -460,7 +460,12 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
       return;
     }
   }
-  if (plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]) {
+  // In a crease (touching another static shape that it moves into or that gravity presses it
+  // against, the bottom of a narrow V) the ball is not captured: projecting its velocity onto one
+  // plane after the other would take the speed it falls with, where reflections
+  // (leaveTouchingStatics) keep it.
+  if (plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i] &&
+      !touchesAnotherStatic(i, plane)) {
     startSliding(i, plane);
     // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
     if (m.velocity.norm() < settle && supported(i)) {
@@ -540,6 +545,22 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
     }
   }
   putToRest(i, stats);
+}
+
+bool EventEngine::touchesAnotherStatic(int i, int plane) const {
+  const Particle& p = particles_[i];
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
+    const StaticRef ref = statics_[s];
+    if (!ref.cylinder && ref.index == plane) continue;
+    const StaticContact contact = staticContact(i, ref);
+    // A wall the ball only touches, neither moving into it nor pressed against it, leaves the
+    // slide alone (a ball sliding along a floor beside a wall).
+    if (contact.gap <= touching && (tracks_[i].motion.velocity.dot(contact.normal) < 0.0 ||
+                                    gravity_.dot(contact.normal) < 0.0))
+      return true;
+  }
+  return false;
 }
 
 void EventEngine::startSliding(int i, int plane) {

@@ -126,6 +126,9 @@ class EventEngine {
   // gravity's component along it, an exact path, until a contact sends it off faster than a
   // bounce of round-off height.
   void startSliding(int i, int plane);
+  // Whether ball i is in a crease: it touches a static shape other than `plane` that it moves
+  // into or that gravity presses it against.
+  bool touchesAnotherStatic(int i, int plane) const;
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);

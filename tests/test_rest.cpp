@@ -214,12 +214,17 @@ class TestRest : public QObject {
   // it comes back to its height with its energy. As events at one instant, those reflections
   // used to trip the burst guard and leave it at rest with its energy gone.
   void ballDroppedIntoANarrowWedgeComesBackUp_data() {
+    QTest::addColumn<int>("method");
     QTest::addColumn<double>("angle");
-    for (double angle : {1e-4, 1e-3, 0.02, 0.3}) QTest::addRow("%g rad", angle) << angle;
+    for (int method : {int(Method::Exact), int(Method::Swept), int(Method::Discrete)})
+      for (double angle : {1e-5, 1e-4, 1e-3, 0.02, 0.3})
+        QTest::addRow("%s %g rad", methodName(Method(method)).data(), angle) << method << angle;
   }
   void ballDroppedIntoANarrowWedgeComesBackUp() {
+    QFETCH(int, method);
     QFETCH(double, angle);
     Scene s;
+    s.world.method = Method(method);
     const double r = 0.1, g = 9.81, drop = 1.0;
     s.planes.push_back(
         carom::testing::makePlane(Vec3::Zero(), Vec3(std::cos(angle / 2), std::sin(angle / 2), 0)));
@@ -240,9 +245,11 @@ class TestRest : public QObject {
       if (k > 100) highest = std::max(highest, sim.positions()[0].y() - jam);
     }
     QCOMPARE(sim.stats().restings, std::uint64_t{0});
-    QVERIFY2(std::abs(energy() - before) <= 1e-9 * before,
+    // The stepped methods keep the energy to their integrator's error over the fall.
+    const bool exact = Method(method) == Method::Exact;
+    QVERIFY2(std::abs(energy() - before) <= (exact ? 1e-9 : 0.02) * before,
              qPrintable(QString::number((energy() - before) / before)));
-    QVERIFY2(highest > 0.999 * drop, qPrintable(QString::number(highest)));
+    QVERIFY2(highest > (exact ? 0.999 : 0.95) * drop, qPrintable(QString::number(highest)));
   }
 
   // In a wedge too narrow to see, an elastic ball moving sideways bounces from wall to wall as
