@@ -73,6 +73,8 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
                                  pathAcceleration_.dot(plane.normal) * plane.normal);
     slideGravity_.push_back(gravity_ - gravity_.dot(plane.normal) * plane.normal);
   }
+  creaseLine_.resize(n);
+  creaseAcceleration_.resize(n);
   // Straight sweeps under gravity are the only paths that are not the true ones.
   restoresEnergy_ = straightPaths_ && !gravity_.isZero();
   if (restoresEnergy_) {
@@ -196,10 +198,10 @@ void EventEngine::predict(int i) {
 void EventEngine::findStaticContact(int i, const BallPath& path) {
   Contact& best = predictions_[i].contact;
   const double r = bodies_.radius[i];
-  const int slidePlane = particles_[i].slidePlane;
+  const Particle& p = particles_[i];
   for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (!ref.cylinder && ref.index == slidePlane) continue;  // it slides along, never into it
+    if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // it slides along, never into it
     const double horizon = std::min(best.time, horizon_) - now_;
     const double t = ref.cylinder
                          ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
@@ -455,21 +457,21 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
   const double settle = tolerance::kSettleSpeedFactor * rest;
   if (approach < settle) {
     const Vec3 tangential = m.velocity + approach * n;
-    if (tangential.norm() < settle && supported(i)) {
-      putToRest(i, stats);
+    if (Vec3 onSupports; tangential.norm() < settle && supported(i, &onSupports)) {
+      putToRest(i, stats, onSupports);
       return;
     }
   }
-  // In a crease (touching another static shape that it moves into or that gravity presses it
-  // against, the bottom of a narrow V) the ball is not captured: projecting its velocity onto one
-  // plane after the other would take the speed it falls with, where reflections
-  // (leaveTouchingStatics) keep it.
-  if (plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i] &&
-      !touchesAnotherStatic(i, plane)) {
+  const int capture =
+      plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]
+          ? slideCapture(i, plane)
+          : kNoCapture;
+  if (capture != kNoCapture) {
     startSliding(i, plane);
+    if (capture != kAlone) startCrease(i, capture);
     // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
-    if (m.velocity.norm() < settle && supported(i)) {
-      putToRest(i, stats);
+    if (Vec3 onSupports; m.velocity.norm() < settle && supported(i, &onSupports)) {
+      putToRest(i, stats, onSupports);
       return;
     }
   } else {
@@ -525,7 +527,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
     bool reflected = false;
     for (int s = p.staticBegin; s < p.staticEnd; ++s) {
       const StaticRef ref = statics_[s];
-      if (!ref.cylinder && ref.index == p.slidePlane) continue;  // see updateSlide
+      if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // see updateSlide
       const auto [n, gap, restitution] = staticContact(i, ref);
       if (gap > touching || m.velocity.dot(n) >= 0.0) continue;
       // No minimum separation here: in a wedge opening slower than the rest speed it would
@@ -547,24 +549,64 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   putToRest(i, stats);
 }
 
-bool EventEngine::touchesAnotherStatic(int i, int plane) const {
+// A slow contact with a pressing plane becomes a slide on it, or, when the ball also touches one
+// other plane that it moves into or that gravity along the first presses it against, a slide
+// along the crease line of the two. Only when what the capture takes (the velocity across the
+// crease) is no faster than the slide speed: at the bottom of a narrow V a ball falling at
+// metres a second meets each wall at a grazing angle, and reflections (leaveTouchingStatics)
+// keep its speed where projecting it onto one wall after the other took all of it. A ball
+// touching a cylinder or two more planes bounces instead.
+int EventEngine::slideCapture(int i, int plane) const {
   const Particle& p = particles_[i];
+  const Vec3& v = tracks_[i].motion.velocity;
+  const Vec3& n = bodies_.planes[plane].normal;
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  int other = kAlone;
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
     if (!ref.cylinder && ref.index == plane) continue;
     const StaticContact contact = staticContact(i, ref);
+    if (contact.gap > touching) continue;
     // A wall the ball only touches, neither moving into it nor pressed against it, leaves the
     // slide alone (a ball sliding along a floor beside a wall).
-    if (contact.gap <= touching && (tracks_[i].motion.velocity.dot(contact.normal) < 0.0 ||
-                                    gravity_.dot(contact.normal) < 0.0))
-      return true;
+    if (v.dot(contact.normal) >= 0.0 && slideGravity_[plane].dot(contact.normal) >= 0.0) continue;
+    if (ref.cylinder || other != kAlone) return kNoCapture;
+    other = ref.index;
   }
-  return false;
+  if (other == kAlone) return kAlone;
+  const Vec3 line = n.cross(bodies_.planes[other].normal);
+  if (line.norm() <= tolerance::kTouchFraction) return kNoCapture;  // parallel planes
+  const Vec3 t = line.normalized();
+  const Vec3 onPlane = v - v.dot(n) * n;
+  const bool slow = (onPlane - onPlane.dot(t) * t).norm() <= slideSpeed_[i];
+  return slow && slideGravity_[plane].dot(bodies_.planes[other].normal) < 0.0 ? other : kNoCapture;
+}
+
+void EventEngine::startCrease(int i, int plane) {
+  Particle& p = particles_[i];
+  p.creasePlane = plane;
+  const Vec3 t =
+      bodies_.planes[p.slidePlane].normal.cross(bodies_.planes[plane].normal).normalized();
+  creaseLine_[i] = t;
+  creaseAcceleration_[i] = pathAcceleration_.dot(t) * t;
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::dropPlanesLeft(int i) {
+  Particle& p = particles_[i];
+  const Vec3& v = tracks_[i].motion.velocity;
+  if (p.creasePlane >= 0 && v.dot(bodies_.planes[p.creasePlane].normal) > slideSpeed_[i])
+    p.creasePlane = -1;
+  if (p.slidePlane >= 0 && v.dot(bodies_.planes[p.slidePlane].normal) > slideSpeed_[i]) {
+    p.slidePlane = p.creasePlane;
+    p.creasePlane = -1;
+  }
 }
 
 void EventEngine::startSliding(int i, int plane) {
   particles_[i].slidePlane = plane;
+  particles_[i].creasePlane = -1;
   keepOnPlane(i);
   changed(i);
 }
@@ -573,13 +615,22 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   Particle& p = particles_[i];
   if (p.slidePlane < 0) return;
   Motion& m = tracks_[i].motion;
-  const Vec3& n = bodies_.planes[p.slidePlane].normal;
-  if (m.velocity.dot(n) < 0.0) {
-    // Pushed into the plane by another contact at this instant: the plane answers as a contact.
-    resolveAgainstSurface(m.velocity, n, staticContact(i, {false, p.slidePlane}).restitution, 0.0);
-    ++stats.collisions.ballPlane;
+  // Pushed into its plane(s) by another contact at this instant: they answer as contacts, in
+  // turn while it still moves into one (a crease), as leaveTouchingStatics does.
+  const int planes[2] = {p.slidePlane, p.creasePlane};
+  for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
+    bool reflected = false;
+    for (const int k : planes) {
+      if (k < 0 || m.velocity.dot(bodies_.planes[k].normal) >= 0.0) continue;
+      resolveAgainstSurface(m.velocity, bodies_.planes[k].normal,
+                            staticContact(i, {false, k}).restitution, 0.0);
+      ++stats.collisions.ballPlane;
+      reflected = true;
+      ++reflections;
+    }
+    if (!reflected) break;
   }
-  if (m.velocity.dot(n) > slideSpeed_[i]) p.slidePlane = -1;  // it leaves the plane
+  dropPlanesLeft(i);
   keepOnPlane(i);
   changed(i);
 }
@@ -589,10 +640,22 @@ void EventEngine::keepOnPlane(int i) {
   if (p.slidePlane < 0) return;
   const PlaneShape& plane = bodies_.planes[p.slidePlane];
   Motion& m = tracks_[i].motion;
-  // Both corrections are round-off, but they would build up over a long slide: the normal
-  // speed left is below a bounce of touching height (slideSpeed_), a lost energy of that order.
-  m.position -= plane.gap(m.position, bodies_.radius[i]) * plane.normal;
-  m.velocity -= m.velocity.dot(plane.normal) * plane.normal;
+  const double r = bodies_.radius[i];
+  // The corrections are round-off, but they would build up over a long slide: the normal speed
+  // left is below a bounce of touching height (slideSpeed_), a lost energy of that order.
+  if (p.creasePlane < 0) {
+    m.position -= plane.gap(m.position, r) * plane.normal;
+    m.velocity -= m.velocity.dot(plane.normal) * plane.normal;
+    return;
+  }
+  // On the crease line: the move in the span of both normals that closes both gaps.
+  const PlaneShape& other = bodies_.planes[p.creasePlane];
+  const double c = plane.normal.dot(other.normal);
+  const double gap = plane.gap(m.position, r), otherGap = other.gap(m.position, r);
+  const double denominator = 1.0 - c * c;
+  m.position += ((-gap + c * otherGap) / denominator) * plane.normal +
+                ((-otherGap + c * gap) / denominator) * other.normal;
+  m.velocity = m.velocity.dot(creaseLine_[i]) * creaseLine_[i];
 }
 
 void EventEngine::recordEnergy(int i) {
@@ -612,9 +675,11 @@ void EventEngine::changed(int i) {
   ++particles_[i].counter;
 }
 
-void EventEngine::putToRest(int i, RunStats& stats) {
+void EventEngine::putToRest(int i, RunStats& stats, const Vec3& settle) {
   Particle& p = particles_[i];
   moveTo(i, now_);
+  if (!settle.isZero() && clearAt(i, tracks_[i].motion.position + settle))
+    tracks_[i].motion.position += settle;
   tracks_[i].motion.velocity.setZero();
   p.resting = true;
   changed(i);
@@ -661,50 +726,94 @@ void EventEngine::wake(int i, RunStats& stats) {
 // be ones it can touch all at once by moving no further than that. A ball hopping in a corner or
 // in the groove between resting balls rests; one falling between walls that meet far below it
 // (a narrow wedge) does not.
-bool EventEngine::supported(int i) const {
-  return heldAlone(i) && clusterHolds(i);
+bool EventEngine::supported(int i, Vec3* settle) const {
+  return heldAlone(i, settle) && clusterHolds(i);
 }
 
-bool EventEngine::heldAlone(int i) const {
+// The gap and unit normal (towards ball i at `centre`) of a support: a static shape (its slot in
+// statics_) or another ball.
+EventEngine::SupportGap EventEngine::supportGap(int i, const Support& support,
+                                                const Vec3& centre) const {
+  if (support.ball < 0) {
+    const StaticContact contact = staticContact(i, statics_[support.staticSlot], centre);
+    return {contact.normal, contact.gap};
+  }
+  const int k = support.ball;
+  const Vec3 d = centre - tracks_[k].motion.positionAt(now_, accelerationOf(k));
+  const double distance = d.norm();
+  return {d / distance, distance - bodies_.radius[i] - bodies_.radius[k]};
+}
+
+bool EventEngine::heldAlone(int i, Vec3* settle) const {
   const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
   const double r = bodies_.radius[i];
   const double reach = tolerance::kSupportGapFraction * r;
+  std::vector<Support> supports;
   std::vector<ClusterContact> contacts;
   std::vector<double> gaps;
-  const Particle& p = particles_[i];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const auto [n, gap, restitution] = staticContact(i, statics_[s], centre);
-    if (gap > reach) continue;
+  const auto consider = [&](const Support& support) {
+    const auto [n, gap] = supportGap(i, support, centre);
+    if (gap > reach) return;
+    supports.push_back(support);
     contacts.push_back({0, -1, n});
     gaps.push_back(gap);
-  }
+  };
+  const Particle& p = particles_[i];
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1});
   forEachNeighbour(i, [&](int k) {
     const Motion& mk = tracks_[k].motion;
     if (!particles_[k].resting && mk.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i])
       return;
-    const Vec3 d = centre - mk.positionAt(now_, accelerationOf(k));
-    const double gap = d.norm() - r - bodies_.radius[k];
-    if (gap > reach) return;
-    contacts.push_back({0, -1, d.normalized()});
-    gaps.push_back(gap);
+    consider({-1, k});
   });
   std::vector<bool> carries;
   if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, contacts, tolerance::kForceBalance,
                             &carries))
     return false;
-  // The smallest move that closes the gaps of the supports carrying the weight (to first order:
-  // n . d = -gap for each).
-  std::vector<int> carrying;
-  for (int c = 0; c < static_cast<int>(contacts.size()); ++c)
-    if (carries[c]) carrying.push_back(c);
-  Eigen::MatrixXd normals(static_cast<Eigen::Index>(carrying.size()), 3);
-  Eigen::VectorXd closing(static_cast<Eigen::Index>(carrying.size()));
-  for (std::size_t k = 0; k < carrying.size(); ++k) {
-    normals.row(k) = contacts[carrying[k]].normal.transpose();
-    closing[k] = -gaps[carrying[k]];
+  std::vector<Support> carrying;
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    if (carries[c]) carrying.push_back(supports[c]);
+  // The smallest move that closes the gaps of the supports carrying the weight, to first order
+  // (n . d = -gap for each), then refined by Newton's method so that they touch to round-off.
+  const auto closingStep = [&](const Vec3& at, double* residual) {
+    const auto rows = static_cast<Eigen::Index>(carrying.size());
+    Eigen::MatrixXd normals(rows, 3);
+    Eigen::VectorXd closing(rows);
+    for (Eigen::Index k = 0; k < rows; ++k) {
+      const auto [n, gap] = supportGap(i, carrying[k], at);
+      normals.row(k) = n.transpose();
+      closing[k] = -gap;
+    }
+    const Vec3 step = normals.completeOrthogonalDecomposition().solve(closing);
+    *residual = (normals * step - closing).norm();
+    return step;
+  };
+  double residual = 0.0;
+  Vec3 move = closingStep(centre, &residual);
+  if (move.norm() > reach || residual > reach) return false;
+  if (settle) {
+    for (int newton = 0; newton < 3; ++newton) move += closingStep(centre + move, &residual);
+    bool touching = true;
+    for (const Support& support : carrying)
+      touching = touching && std::abs(supportGap(i, support, centre + move).gap) <=
+                                 tolerance::kTouchFraction * r;
+    *settle = touching ? move : Vec3::Zero();
   }
-  const Eigen::Vector3d move = normals.completeOrthogonalDecomposition().solve(closing);
-  return move.norm() <= reach && (normals * move - closing).norm() <= reach;
+  return true;
+}
+
+bool EventEngine::clearAt(int i, const Vec3& centre) const {
+  const double r = bodies_.radius[i];
+  const double touching = tolerance::kTouchFraction * r;
+  const Particle& p = particles_[i];
+  for (int s = p.staticBegin; s < p.staticEnd; ++s)
+    if (staticContact(i, statics_[s], centre).gap < -touching) return false;
+  bool clear = true;
+  forEachNeighbour(i, [&](int k) {
+    const Vec3 d = centre - tracks_[k].motion.positionAt(now_, accelerationOf(k));
+    clear = clear && d.norm() - r - bodies_.radius[k] >= -touching;
+  });
+  return clear;
 }
 
 // Ball i's cluster: i and the slow balls (slower than a settling ball, not yet resting) that
@@ -792,7 +901,7 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
     m.velocity = velocities[i];
     if (p.slidePlane >= 0) {
       // A kick of gravity into the plane is held by the plane; a kick away from it lets go.
-      if (m.velocity.dot(bodies_.planes[p.slidePlane].normal) > slideSpeed_[i]) p.slidePlane = -1;
+      dropPlanesLeft(i);
       keepOnPlane(i);
     }
     changed(i);

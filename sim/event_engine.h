@@ -64,7 +64,8 @@ class EventEngine {
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
-    int slidePlane = -1;  // the plane the ball slides on, or -1 in flight
+    int slidePlane = -1;   // the plane the ball slides on, or -1 in flight
+    int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
@@ -126,9 +127,17 @@ class EventEngine {
   // gravity's component along it, an exact path, until a contact sends it off faster than a
   // bounce of round-off height.
   void startSliding(int i, int plane);
-  // Whether ball i is in a crease: it touches a static shape other than `plane` that it moves
-  // into or that gravity presses it against.
-  bool touchesAnotherStatic(int i, int plane) const;
+  // What a slow contact of ball i with pressing plane `plane` becomes: kAlone (a slide on it),
+  // another plane's index (a slide along their crease), or kNoCapture (a bounce).
+  static constexpr int kAlone = -1;
+  static constexpr int kNoCapture = -2;
+  int slideCapture(int i, int plane) const;
+  void startCrease(int i, int plane);
+  // Lets go of the planes that ball i's velocity leaves faster than the slide speed.
+  void dropPlanesLeft(int i);
+  static bool slidesOn(const Particle& p, int plane) {
+    return p.slidePlane == plane || p.creasePlane == plane;
+  }
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);
@@ -143,12 +152,26 @@ class EventEngine {
   // last event, by changing its speed along gravity, so the error never outlives one flight.
   void recordEnergy(int i);
   void restoreEnergy(int i);
-  void putToRest(int i, RunStats& stats);
+  // Stops ball i where it is, or moved by `settle` onto the supports that carry it (supported())
+  // when that overlaps nothing.
+  void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
+  bool clearAt(int i, const Vec3& centre) const;
   void wake(int i, RunStats& stats);
   // Rule 3 of rest_policy.h: ball i's contacts hold it (heldAlone, the balls it touches fixed)
   // and so do its cluster's (clusterHolds, the balls free).
-  bool supported(int i) const;
-  bool heldAlone(int i) const;
+  // `settle`, when given, receives the smallest move (at most kSupportGapFraction of the
+  // radius) that makes the supports carrying the ball touch it to round-off, or zero.
+  bool supported(int i, Vec3* settle = nullptr) const;
+  bool heldAlone(int i, Vec3* settle = nullptr) const;
+  struct Support {
+    int staticSlot;  // in statics_, or -1
+    int ball;        // or -1
+  };
+  struct SupportGap {
+    Vec3 normal;
+    double gap;
+  };
+  SupportGap supportGap(int i, const Support& support, const Vec3& centre) const;
   bool clusterHolds(int i) const;
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
@@ -156,14 +179,17 @@ class EventEngine {
     if (straightPaths_) return zero_;
     const Particle& p = particles_[i];
     if (p.resting) return zero_;
-    return p.slidePlane < 0 ? pathAcceleration_ : slideAcceleration_[p.slidePlane];
+    if (p.slidePlane < 0) return pathAcceleration_;
+    return p.creasePlane < 0 ? slideAcceleration_[p.slidePlane] : creaseAcceleration_[i];
   }
   // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
   // (a pair that gravity presses together), the same under `exact` and `swept`.
   Vec3 gravityOn(int i) const {
     const Particle& p = particles_[i];
     if (p.resting) return Vec3::Zero();
-    return p.slidePlane < 0 ? gravity_ : slideGravity_[p.slidePlane];
+    if (p.slidePlane < 0) return gravity_;
+    if (p.creasePlane < 0) return slideGravity_[p.slidePlane];
+    return gravity_.dot(creaseLine_[i]) * creaseLine_[i];
   }
   void moveTo(int i, double t) {
     tracks_[i].motion.moveTo(t, accelerationOf(i));
@@ -197,8 +223,10 @@ class EventEngine {
   // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
-  std::vector<Vec3> slideAcceleration_;  // path acceleration along each plane
-  std::vector<Vec3> slideGravity_;       // gravity along each plane
+  std::vector<Vec3> slideAcceleration_;   // path acceleration along each plane
+  std::vector<Vec3> slideGravity_;        // gravity along each plane
+  std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
+  std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
   CellGrid grid_;
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell
