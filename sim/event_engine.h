@@ -4,6 +4,8 @@
 // earliest is processed, only the balls it changed are predicted again, and predictions that
 // involved a ball changed since are dropped when their time comes (collision counters).
 //
+// Its sliding and its rest decisions are in engine_sliding.cpp and engine_resting.cpp.
+//
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
 
@@ -197,7 +199,13 @@ class EventEngine {
   }
   void notePenetration(double overlap, RunStats& stats) const;
   template <typename F>
-  void forEachNeighbour(int i, F&& f) const;
+  void forEachNeighbour(int i, F&& f) const {
+    grid_.forEachNeighbourCell(particles_[i].coords, [&](int cell) {
+      members_.forEachIn(cell, [&](int k) {
+        if (k != i) f(k);
+      });
+    });
+  }
 
   const Bodies& bodies_;
   Vec3 gravity_;

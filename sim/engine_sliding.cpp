@@ -1,0 +1,122 @@
+// EventEngine's sliding (docs/physics.md, rule 2 of "Resting contact"): a ball in lasting contact
+// with a plane, or with the crease of two, follows gravity's component along it on an exact path.
+
+#include "sim/event_engine.h"
+
+#include "sim/response.h"
+#include "sim/tolerances.h"
+
+#include <Eigen/Geometry>  // cross products
+
+namespace carom {
+
+// A slow contact with a pressing plane becomes a slide on it, or, when the ball also touches one
+// other plane that it moves into or that gravity along the first presses it against, a slide
+// along the crease line of the two. Only when what the capture takes (the velocity across the
+// crease) is no faster than the slide speed: at the bottom of a narrow V a ball falling at
+// metres a second meets each wall at a grazing angle, and reflections (leaveTouchingStatics)
+// keep its speed where projecting it onto one wall after the other took all of it. A ball
+// touching a cylinder or two more planes bounces instead.
+int EventEngine::slideCapture(int i, int plane) const {
+  const Particle& p = particles_[i];
+  const Vec3& v = tracks_[i].motion.velocity;
+  const Vec3& n = bodies_.planes[plane].normal;
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  int other = kAlone;
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
+    const StaticRef ref = statics_[s];
+    if (!ref.cylinder && ref.index == plane) continue;
+    const StaticContact contact = staticContact(i, ref);
+    if (contact.gap > touching) continue;
+    // A wall the ball only touches, neither moving into it nor pressed against it, leaves the
+    // slide alone (a ball sliding along a floor beside a wall).
+    if (v.dot(contact.normal) >= 0.0 && slideGravity_[plane].dot(contact.normal) >= 0.0) continue;
+    if (ref.cylinder || other != kAlone) return kNoCapture;
+    other = ref.index;
+  }
+  if (other == kAlone) return kAlone;
+  const Vec3 line = n.cross(bodies_.planes[other].normal);
+  if (line.norm() <= tolerance::kTouchFraction) return kNoCapture;  // parallel planes
+  const Vec3 t = line.normalized();
+  const Vec3 onPlane = v - v.dot(n) * n;
+  const bool slow = (onPlane - onPlane.dot(t) * t).norm() <= slideSpeed_[i];
+  return slow && slideGravity_[plane].dot(bodies_.planes[other].normal) < 0.0 ? other : kNoCapture;
+}
+
+void EventEngine::startCrease(int i, int plane) {
+  Particle& p = particles_[i];
+  p.creasePlane = plane;
+  const Vec3 t =
+      bodies_.planes[p.slidePlane].normal.cross(bodies_.planes[plane].normal).normalized();
+  creaseLine_[i] = t;
+  creaseAcceleration_[i] = pathAcceleration_.dot(t) * t;
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::dropPlanesLeft(int i) {
+  Particle& p = particles_[i];
+  const Vec3& v = tracks_[i].motion.velocity;
+  if (p.creasePlane >= 0 && v.dot(bodies_.planes[p.creasePlane].normal) > slideSpeed_[i])
+    p.creasePlane = -1;
+  if (p.slidePlane >= 0 && v.dot(bodies_.planes[p.slidePlane].normal) > slideSpeed_[i]) {
+    p.slidePlane = p.creasePlane;
+    p.creasePlane = -1;
+  }
+}
+
+void EventEngine::startSliding(int i, int plane) {
+  particles_[i].slidePlane = plane;
+  particles_[i].creasePlane = -1;
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::updateSlide(int i, RunStats& stats) {
+  Particle& p = particles_[i];
+  if (p.slidePlane < 0) return;
+  Motion& m = tracks_[i].motion;
+  // Pushed into its plane(s) by another contact at this instant: they answer as contacts, in
+  // turn while it still moves into one (a crease), as leaveTouchingStatics does.
+  const int planes[2] = {p.slidePlane, p.creasePlane};
+  for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
+    bool reflected = false;
+    for (const int k : planes) {
+      if (k < 0 || m.velocity.dot(bodies_.planes[k].normal) >= 0.0) continue;
+      resolveAgainstSurface(m.velocity, bodies_.planes[k].normal,
+                            staticContact(i, {false, k}).restitution, 0.0);
+      ++stats.collisions.ballPlane;
+      reflected = true;
+      ++reflections;
+    }
+    if (!reflected) break;
+  }
+  dropPlanesLeft(i);
+  keepOnPlane(i);
+  changed(i);
+}
+
+void EventEngine::keepOnPlane(int i) {
+  const Particle& p = particles_[i];
+  if (p.slidePlane < 0) return;
+  const PlaneShape& plane = bodies_.planes[p.slidePlane];
+  Motion& m = tracks_[i].motion;
+  const double r = bodies_.radius[i];
+  // The corrections are round-off, but they would build up over a long slide: the normal speed
+  // left is below a bounce of touching height (slideSpeed_), a lost energy of that order.
+  if (p.creasePlane < 0) {
+    m.position -= plane.gap(m.position, r) * plane.normal;
+    m.velocity -= m.velocity.dot(plane.normal) * plane.normal;
+    return;
+  }
+  // On the crease line: the move in the span of both normals that closes both gaps.
+  const PlaneShape& other = bodies_.planes[p.creasePlane];
+  const double c = plane.normal.dot(other.normal);
+  const double gap = plane.gap(m.position, r), otherGap = other.gap(m.position, r);
+  const double denominator = 1.0 - c * c;
+  m.position += ((-gap + c * otherGap) / denominator) * plane.normal +
+                ((-otherGap + c * gap) / denominator) * other.normal;
+  m.velocity = m.velocity.dot(creaseLine_[i]) * creaseLine_[i];
+}
+
+}  // namespace carom
