@@ -51,7 +51,7 @@ namespace carom::tolerance {
 // is not level (test_rest).
 inline constexpr double kForceBalance = 1e-12;
 // `discrete` resolves each step's overlaps in up to this many passes, each looking again at the
-// balls the one before pushed further than touching distance: a column of touching balls on a
+// balls the one before pushed out of two overlaps or more: a column of touching balls on a
 // floor needs about one pass a ball to push out (test_rest), a gas one or two.
 inline constexpr int kMaxOverlapPasses = 32;
 
