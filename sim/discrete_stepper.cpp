@@ -177,25 +177,17 @@ class DiscreteStepper final : public Stepper {
     notePush(i, move->norm(), 2);
     toStepEnd(i);
     restoreEnergy(i);
-    Vec3& v = velocities_[i];
-    for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
-      bool reflected = false;
-      for (const StaticOverlap& o : overlaps_) {
-        const double approach = -v.dot(o.normal);
-        if (approach <= 0.0) continue;
-        resolveAgainstSurface(v, o.normal, o.restitution, 0.0);
-        if (o.kind == ContactKind::BallPlane)
-          ++stats.collisions.ballPlane;
-        else
-          ++stats.collisions.ballCylinder;
-        if (log)
-          log->push_back(
-              {time, o.kind, i, o.other, positions_[i] - bodies_.radius[i] * o.normal, approach});
-        reflected = true;
-        ++reflections;
-      }
-      if (!reflected) break;
-    }
+    reflectOffEach(velocities_[i], overlaps_, tolerance::kMaxSimultaneousReflections,
+                   [&](std::size_t k, double approach) {
+                     const StaticOverlap& o = overlaps_[k];
+                     if (o.kind == ContactKind::BallPlane)
+                       ++stats.collisions.ballPlane;
+                     else
+                       ++stats.collisions.ballCylinder;
+                     if (log)
+                       log->push_back({time, o.kind, i, o.other,
+                                       positions_[i] - bodies_.radius[i] * o.normal, approach});
+                   });
     recordEnergy(i);
     fromStepEnd(i);
     return true;

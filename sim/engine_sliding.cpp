@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>  // cross products
 
+#include <span>
+
 namespace carom {
 
 // A slow contact with a pressing plane becomes a slide on it, or, when the ball also touches one
@@ -78,19 +80,18 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   Motion& m = tracks_[i].motion;
   // Pushed into its plane(s) by another contact at this instant: they answer as contacts, in
   // turn while it still moves into one (a crease), as leaveTouchingStatics does.
-  const int planes[2] = {p.slidePlane, p.creasePlane};
-  for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
-    bool reflected = false;
-    for (const int k : planes) {
-      if (k < 0 || m.velocity.dot(bodies_.planes[k].normal) >= 0.0) continue;
-      resolveAgainstSurface(m.velocity, bodies_.planes[k].normal,
-                            staticContact(i, {false, k}).restitution, 0.0);
-      ++stats.collisions.ballPlane;
-      reflected = true;
-      ++reflections;
-    }
-    if (!reflected) break;
-  }
+  struct Surface {
+    Vec3 normal;
+    double restitution;
+  };
+  Surface planes[2];
+  std::size_t count = 0;
+  for (const int k : {p.slidePlane, p.creasePlane})
+    if (k >= 0)
+      planes[count++] = {bodies_.planes[k].normal, staticContact(i, {false, k}).restitution};
+  reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
+                 tolerance::kMaxSimultaneousReflections,
+                 [&](std::size_t, double) { ++stats.collisions.ballPlane; });
   dropPlanesLeft(i);
   keepOnPlane(i);
   changed(i);

@@ -508,33 +508,29 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
 // about 3e-7 rad, or a ball jammed between parallel walls) the burst guard's rest applies.
 void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   const Particle& p = particles_[i];
-  Motion& m = tracks_[i].motion;
-  const double r = bodies_.radius[i];
-  const double touching = tolerance::kTouchFraction * r;
-  for (long reflections = 0; reflections < tolerance::kMaxSimultaneousReflections;) {
-    bool reflected = false;
-    for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-      const StaticRef ref = statics_[s];
-      if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // see updateSlide
-      const auto [n, gap, restitution] = staticContact(i, ref);
-      if (gap > touching || m.velocity.dot(n) >= 0.0) continue;
-      // No minimum separation here: in a wedge opening slower than the rest speed it would
-      // send the ball from one wall into the other for ever. An inelastic ball slows down in
-      // the loop instead, and then rests by the supports rule at its next contact.
-      resolveAgainstSurface(m.velocity, n, restitution, 0.0);
-      if (ref.cylinder)
-        ++stats.collisions.ballCylinder;
-      else
-        ++stats.collisions.ballPlane;
-      reflected = true;
-      ++reflections;
-    }
-    if (!reflected) {
-      changed(i);
-      return;
-    }
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  touchedStatics_.clear();
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
+    const StaticRef ref = statics_[s];
+    if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // see updateSlide
+    const auto [n, gap, restitution] = staticContact(i, ref);
+    if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.cylinder});
   }
-  putToRest(i, stats);
+  // No minimum separation here: in a wedge opening slower than the rest speed it would send
+  // the ball from one wall into the other for ever. An inelastic ball slows down in the loop
+  // instead, and then rests by the supports rule at its next contact.
+  const bool left =
+      reflectOffEach(tracks_[i].motion.velocity, touchedStatics_,
+                     tolerance::kMaxSimultaneousReflections, [&](std::size_t k, double) {
+                       if (touchedStatics_[k].cylinder)
+                         ++stats.collisions.ballCylinder;
+                       else
+                         ++stats.collisions.ballPlane;
+                     });
+  if (left)
+    changed(i);
+  else
+    putToRest(i, stats);
 }
 
 void EventEngine::recordEnergy(int i) {

@@ -223,6 +223,12 @@ class EventEngine {
     Crossing crossing;
   };
   std::vector<Prediction> predictions_;
+  struct TouchedStatic {
+    Vec3 normal;
+    double restitution;
+    bool cylinder;
+  };
+  std::vector<TouchedStatic> touchedStatics_;  // leaveTouchingStatics's, kept to save allocations
   bool restoresEnergy_ = false;
   std::vector<double> energy_;  // per unit mass, after each ball's last event (`swept`)
   // What a ball's restore could not take (it was higher than its energy allows), still owed.

@@ -3,6 +3,8 @@
 
 #include "sim/scene.h"
 
+#include <cstddef>
+
 namespace carom {
 
 // The speed at which a contact separates: restitution times the approach speed, but never less
@@ -23,6 +25,29 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
 // the tangential motion where it has enough, so the floor never adds energy in that case.
 // Returns true when it had to add energy (the ball was too slow in every direction).
 bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation);
+
+// Contacts with several immovable surfaces at one instant (the bottom of a narrow V, a crease):
+// reflects `v` off each of `surfaces` (items with a unit `normal` towards the ball and a
+// `restitution`) that it moves into, in turn and with no minimum separation, until it moves into
+// none. Calls reflected(k, approach) for each reflection off surfaces[k], with the approach
+// speed it met it at. False when `limit` reflections
+// did not suffice (a V of about π/limit rad or less, a ball jammed between parallel walls).
+template <typename Surfaces, typename OnReflect>
+bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& reflected) {
+  for (long reflections = 0; reflections < limit;) {
+    bool any = false;
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+      const double approach = -v.dot(surfaces[k].normal);
+      if (approach <= 0.0) continue;
+      resolveAgainstSurface(v, surfaces[k].normal, surfaces[k].restitution, 0.0);
+      reflected(k, approach);
+      any = true;
+      ++reflections;
+    }
+    if (!any) return true;
+  }
+  return false;
+}
 
 // Sets velocity `v` of a ball at `position` so that its energy per unit mass,
 // |v|²/2 - gravity . position, is `energy`: the errors of a stepped method (integrator kicks, a
