@@ -56,15 +56,19 @@ void EventEngine::wake(int i, RunStats& stats) {
   }
 }
 
-// Ball i can rest when pushes alone at its contacts hold it against gravity. Its supports are
-// the static shapes, resting balls and slow balls (slower than the rest speed: neighbours leaning
-// on each other in a pile come to rest one after the other) within kSupportGapFraction, the
-// height of the hops that rule 1 gives a slow ball; and the supports that carry its weight must
-// be ones it can touch all at once by moving no further than that. A ball hopping in a corner or
-// in the groove between resting balls rests; one falling between walls that meet far below it
-// (a narrow wedge) does not.
-bool EventEngine::supported(int i, Vec3* settle) const {
-  return heldAlone(i, settle) && clusterHolds(i);
+bool EventEngine::restsOnContact(int i, const Vec3& n, RunStats& stats) {
+  const Vec3& v = tracks_[i].motion.velocity;
+  const double settle = tolerance::kSettleSpeedFactor * restSpeed_[i];
+  const double approach = -v.dot(n);
+  if (approach >= settle || (v + approach * n).norm() >= settle) return false;
+  const RestCheck check = restCheck(i);
+  if (check.holds) putToRest(i, stats, check.settle);
+  return check.holds;
+}
+
+bool EventEngine::slow(int k) const {
+  return !particles_[k].resting && tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() <
+                                       tolerance::kSettleSpeedFactor * restSpeed_[k];
 }
 
 // The gap and unit normal (towards ball i at `centre`) of a support: a static shape (its slot in
@@ -81,83 +85,153 @@ EventEngine::SupportGap EventEngine::supportGap(int i, const Support& support,
   return {d / distance, distance - bodies_.radius[i] - bodies_.radius[k]};
 }
 
-bool EventEngine::heldAlone(int i, Vec3* settle) const {
-  const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
-  const double r = bodies_.radius[i];
-  const double reach = tolerance::kSupportGapFraction * r;
-  std::vector<Support> supports;
-  std::vector<ClusterContact> contacts;
-  std::vector<double> gaps;
-  const auto consider = [&](const Support& support) {
-    const auto [n, gap] = supportGap(i, support, centre);
-    if (gap > reach) return;
-    supports.push_back(support);
-    contacts.push_back({0, -1, n});
-    gaps.push_back(gap);
+EventEngine::NearContacts EventEngine::nearContacts(int i, const Vec3& centre) const {
+  const double reach = tolerance::kSupportGapFraction * bodies_.radius[i];
+  NearContacts near;
+  const auto consider = [&](const Support& support, bool moving) {
+    const SupportGap gap = supportGap(i, support, centre);
+    if (gap.gap > reach) return;
+    (moving ? near.moving : near.supports).push_back(support);
+    if (!moving) near.gaps.push_back(gap);
   };
   const Particle& p = particles_[i];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1});
-  std::vector<Support> moving;  // not supports, but the ball must not settle into them
+  for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1}, false);
   forEachNeighbour(i, [&](int k) {
-    const Motion& mk = tracks_[k].motion;
-    if (!particles_[k].resting && mk.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i]) {
-      if (supportGap(i, {-1, k}, centre).gap <= reach) moving.push_back({-1, k});
-      return;
-    }
-    consider({-1, k});
+    consider({-1, k},
+             !particles_[k].resting &&
+                 tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i]);
   });
+  return near;
+}
+
+// Rule 3 of "Resting contact". Ball i can rest when pushes alone at its contacts hold it against
+// gravity. Its supports are the static shapes, resting balls and slow balls (neighbours leaning
+// on each other in a pile come to rest one after the other) within kSupportGapFraction, the
+// height of the hops that rule 1 gives a slow ball; and the supports that carry its weight must
+// be ones it can touch all at once by moving no further than that. A ball hopping in a corner or
+// in the groove between resting balls rests; one falling between walls that meet far below it
+// (a narrow wedge) does not. Its cluster must hold too.
+EventEngine::RestCheck EventEngine::restCheck(int i) const {
+  RestCheck check;
+  const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
+  const NearContacts near = nearContacts(i, centre);
+  std::vector<ClusterContact> contacts;
+  for (const SupportGap& gap : near.gaps) contacts.push_back({0, -1, gap.normal});
   std::vector<bool> carries;
   if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, contacts, tolerance::kForceBalance,
                             &carries))
-    return false;
+    return check;
   std::vector<Support> carrying;
   for (std::size_t c = 0; c < contacts.size(); ++c)
-    if (carries[c]) carrying.push_back(supports[c]);
-  // The smallest move that closes the gaps of the supports carrying the weight, to first order
-  // (n . d = -gap for each), then refined by Newton's method so that they touch to round-off.
-  const auto closingStep = [&](const Vec3& at, double* residual) {
-    const auto rows = static_cast<Eigen::Index>(carrying.size());
-    Eigen::MatrixXd normals(rows, 3);
-    Eigen::VectorXd closing(rows);
-    for (Eigen::Index k = 0; k < rows; ++k) {
-      const auto [n, gap] = supportGap(i, carrying[k], at);
-      normals.row(k) = n.transpose();
-      closing[k] = -gap;
-    }
-    const Vec3 step = normals.completeOrthogonalDecomposition().solve(closing);
-    *residual = (normals * step - closing).norm();
-    return step;
-  };
+    if (carries[c]) carrying.push_back(near.supports[c]);
+  const std::optional<Vec3> move = closingMove(i, centre, carrying);
+  if (!move) return check;
+  if (!clusterHolds(i)) return check;
+  check.holds = true;
+  check.settle = settlingMove(i, centre, near, *move, std::move(carrying));
+  return check;
+}
+
+// The smallest move that closes the gaps of `carrying` from `centre`, to first order (n . d =
+// -gap for each); none when that is longer than kSupportGapFraction of the radius or cannot
+// close them all.
+std::optional<Vec3> EventEngine::closingMove(int i, const Vec3& centre,
+                                             const std::vector<Support>& carrying) const {
+  const double reach = tolerance::kSupportGapFraction * bodies_.radius[i];
   double residual = 0.0;
-  Vec3 move = closingStep(centre, &residual);
-  if (move.norm() > reach || residual > reach) return false;
-  // Settle onto them (Newton's method); a contact the move would overlap joins the ones to
-  // close, so that the ball ends touching it instead.
+  const Vec3 move = closingStep(i, centre, carrying, &residual);
+  if (move.norm() > reach || residual > reach) return std::nullopt;
+  return move;
+}
+
+Vec3 EventEngine::closingStep(int i, const Vec3& at, const std::vector<Support>& supports,
+                              double* residual) const {
+  const auto rows = static_cast<Eigen::Index>(supports.size());
+  Eigen::MatrixXd normals(rows, 3);
+  Eigen::VectorXd closing(rows);
+  for (Eigen::Index k = 0; k < rows; ++k) {
+    const auto [n, gap] = supportGap(i, supports[k], at);
+    normals.row(k) = n.transpose();
+    closing[k] = -gap;
+  }
+  const Vec3 step = normals.completeOrthogonalDecomposition().solve(closing);
+  *residual = (normals * step - closing).norm();
+  return step;
+}
+
+// Where a resting ball settles: onto the supports carrying it, so that they touch it to
+// round-off (Newton's method from the first-order move); a contact the move would overlap joins
+// the ones to close, so that the ball ends touching it instead. There, without overlapping
+// anything, the contacts it touches to round-off must hold it. Where that fails (the joined
+// contacts cannot all be touched at once), it settles into the lowest pocket within reach
+// (lowestPocket); failing that, it rests where it is, its supports within kSupportGapFraction.
+Vec3 EventEngine::settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
+                               std::vector<Support> carrying) const {
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  double residual = 0.0;
   for (int round = 0; round < 4; ++round) {
-    for (int newton = 0; newton < 3; ++newton) move += closingStep(centre + move, &residual);
+    for (int newton = 0; newton < 3; ++newton)
+      move += closingStep(i, centre + move, carrying, &residual);
     bool joined = false;
-    for (const std::vector<Support>* near : {&supports, &moving})
-      for (const Support& support : *near) {
-        if (supportGap(i, support, centre + move).gap >= -tolerance::kTouchFraction * r) continue;
+    for (const std::vector<Support>* list : {&near.supports, &near.moving})
+      for (const Support& support : *list) {
+        if (supportGap(i, support, centre + move).gap >= -touching) continue;
         carrying.push_back(support);
         joined = true;
       }
     if (!joined) break;
   }
-  // There, without overlapping anything, the contacts it touches to round-off must hold it.
-  // Where they do not (3 balls of the 64 in test_rest's pile, whose settling would press into a
-  // neighbour), it rests where it is, its supports within kSupportGapFraction.
-  if (settle) *settle = Vec3::Zero();
-  if (!clearAt(i, centre + move)) return true;
-  std::vector<ClusterContact> touching;
-  for (const Support& support : supports) {
-    const auto [n, gap] = supportGap(i, support, centre + move);
-    if (std::abs(gap) <= tolerance::kTouchFraction * r) touching.push_back({0, -1, n});
+  if (heldAt(i, centre + move, near)) return move;
+  return lowestPocket(i, centre, near).value_or(Vec3::Zero());
+}
+
+bool EventEngine::heldAt(int i, const Vec3& centre, const NearContacts& near) const {
+  if (!clearAt(i, centre)) return false;
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  std::vector<ClusterContact> touchingContacts;
+  for (const Support& support : near.supports) {
+    const auto [n, gap] = supportGap(i, support, centre);
+    if (std::abs(gap) <= touching) touchingContacts.push_back({0, -1, n});
   }
-  if (settle &&
-      contactForcesBalance(gravity_, {bodies_.mass[i]}, touching, tolerance::kForceBalance))
-    *settle = move;
-  return true;
+  return contactForcesBalance(gravity_, {bodies_.mass[i]}, touchingContacts,
+                              tolerance::kForceBalance);
+}
+
+// The lowest place along gravity, within kSupportGapFraction of the radius, where ball i touches
+// one, two or three of its supports to round-off, overlaps nothing and is held by what it
+// touches: the pocket a frictionless ball would roll into. Each such set of supports is tried
+// (a ball touches a handful, so there are at most some tens).
+std::optional<Vec3> EventEngine::lowestPocket(int i, const Vec3& centre,
+                                              const NearContacts& near) const {
+  const double reach = tolerance::kSupportGapFraction * bodies_.radius[i];
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  const int count = static_cast<int>(near.supports.size());
+  std::optional<Vec3> best;
+  std::vector<Support> touched;
+  const auto tryTouching = [&]() {
+    double residual = 0.0;
+    Vec3 move = closingStep(i, centre, touched, &residual);
+    for (int newton = 0; newton < 4 && move.norm() <= reach; ++newton)
+      move += closingStep(i, centre + move, touched, &residual);
+    if (move.norm() > reach) return;
+    for (const Support& support : touched)
+      if (std::abs(supportGap(i, support, centre + move).gap) > touching) return;
+    if (best && gravity_.dot(move) <= gravity_.dot(*best)) return;
+    if (heldAt(i, centre + move, near)) best = move;
+  };
+  for (int a = 0; a < count; ++a) {
+    touched = {near.supports[a]};
+    tryTouching();
+    for (int b = a + 1; b < count; ++b) {
+      touched = {near.supports[a], near.supports[b]};
+      tryTouching();
+      for (int c = b + 1; c < count; ++c) {
+        touched = {near.supports[a], near.supports[b], near.supports[c]};
+        tryTouching();
+      }
+    }
+  }
+  return best;
 }
 
 bool EventEngine::clearAt(int i, const Vec3& centre) const {
@@ -174,11 +248,11 @@ bool EventEngine::clearAt(int i, const Vec3& centre) const {
   return clear;
 }
 
-// Ball i's cluster: i and the slow balls (slower than a settling ball, not yet resting) that
-// touch it within the support gap, and theirs, breadth first up to kMaxClusterBalls. They are
-// solved together, loads included: three slow balls in a frictionless pyramid are not held,
-// though each alone would be. Resting balls, and balls past the limit, count as fixed, as
-// statics do: a settled pile is rigid to a newcomer unless a hit wakes it (rule 4).
+// Ball i's cluster: i and the slow balls that touch it within the support gap, and theirs,
+// breadth first up to kMaxClusterBalls. They are solved together, loads included: three slow
+// balls in a frictionless pyramid are not held, though each alone would be. Resting balls, and
+// balls past the limit, count as fixed, as statics do: a settled pile is rigid to a newcomer
+// unless a hit wakes it (rule 4).
 bool EventEngine::clusterHolds(int i) const {
   std::vector<int> members{i};
   std::vector<Vec3> centres{tracks_[i].motion.positionAt(now_, accelerationOf(i))};
@@ -199,18 +273,16 @@ bool EventEngine::clusterHolds(int i) const {
     forEachNeighbour(k, [&](int m) {
       const int known = memberIndex(m);
       if (known >= 0 && known < static_cast<int>(c)) return;  // that contact is listed already
-      const Particle& q = particles_[m];
-      const Motion& mm = tracks_[m].motion;
-      const bool slow = !q.resting && mm.velocityAt(now_, accelerationOf(m)).norm() <
-                                          tolerance::kSettleSpeedFactor * restSpeed_[m];
-      if (!q.resting && !slow) return;
-      const Vec3 centre = known >= 0 ? centres[known] : mm.positionAt(now_, accelerationOf(m));
+      const bool resting = particles_[m].resting;
+      if (!resting && !slow(m)) return;
+      const Vec3 centre =
+          known >= 0 ? centres[known] : tracks_[m].motion.positionAt(now_, accelerationOf(m));
       const Vec3 d = centres[c] - centre;
       if (d.norm() - rk - bodies_.radius[m] >
           tolerance::kSupportGapFraction * std::min(rk, bodies_.radius[m]))
         return;
       int other = known;
-      if (other < 0 && slow && static_cast<int>(members.size()) < tolerance::kMaxClusterBalls) {
+      if (other < 0 && !resting && static_cast<int>(members.size()) < tolerance::kMaxClusterBalls) {
         other = static_cast<int>(members.size());
         members.push_back(m);
         centres.push_back(centre);
@@ -218,7 +290,7 @@ bool EventEngine::clusterHolds(int i) const {
       contacts.push_back({static_cast<int>(c), other, d.normalized()});
     });
   }
-  if (members.size() == 1) return true;  // alone among fixed supports: heldAlone decided it
+  if (members.size() == 1) return true;  // alone among fixed supports: restCheck decided it
   std::vector<double> masses(members.size());
   for (std::size_t c = 0; c < members.size(); ++c) masses[c] = bodies_.mass[members[c]];
   return contactForcesBalance(gravity_, masses, contacts, tolerance::kForceBalance);

@@ -434,22 +434,15 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
 
 void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
                                      int plane) {
+  // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
+  // wall and a resting ball would otherwise rattle between them.
+  if (restsOnContact(i, n, stats)) return;
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
   const double speed = m.velocity.norm();
   const bool pressed = gravity_.dot(n) < 0.0;
   const double rest = restSpeed_[i];
-  // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
-  // wall and a resting ball would otherwise rattle between them.
-  const double settle = tolerance::kSettleSpeedFactor * rest;
-  if (approach < settle) {
-    const Vec3 tangential = m.velocity + approach * n;
-    if (Vec3 onSupports; tangential.norm() < settle && supported(i, &onSupports)) {
-      putToRest(i, stats, onSupports);
-      return;
-    }
-  }
   const int capture =
       plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]
           ? slideCapture(i, plane)
@@ -458,10 +451,7 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
     startSliding(i, plane);
     if (capture != kAlone) startCrease(i, capture);
     // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
-    if (Vec3 onSupports; m.velocity.norm() < settle && supported(i, &onSupports)) {
-      putToRest(i, stats, onSupports);
-      return;
-    }
+    if (restsOnContact(i, n, stats)) return;
   } else {
     // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
     // slides instead (above), and so bounces in finitely many events.

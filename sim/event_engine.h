@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -154,17 +155,16 @@ class EventEngine {
   // last event, by changing its speed along gravity, so the error never outlives one flight.
   void recordEnergy(int i);
   void restoreEnergy(int i);
-  // Stops ball i where it is, or moved by `settle` onto the supports that carry it (supported())
+  // Stops ball i where it is, or moved by `settle` onto the supports that carry it (restCheck)
   // when that overlaps nothing.
   void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
   bool clearAt(int i, const Vec3& centre) const;
   void wake(int i, RunStats& stats);
-  // Rule 3 of rest_policy.h: ball i's contacts hold it (heldAlone, the balls it touches fixed)
-  // and so do its cluster's (clusterHolds, the balls free).
-  // `settle`, when given, receives the smallest move (at most kSupportGapFraction of the
-  // radius) that makes the supports carrying the ball touch it to round-off, or zero.
-  bool supported(int i, Vec3* settle = nullptr) const;
-  bool heldAlone(int i, Vec3* settle = nullptr) const;
+  // A contact along unit normal n (towards ball i) slow enough to end in rest: when restCheck
+  // holds, ball i rests, and this returns true.
+  bool restsOnContact(int i, const Vec3& n, RunStats& stats);
+  // Not resting, and slower than a ball that may settle.
+  bool slow(int k) const;
   struct Support {
     int staticSlot;  // in statics_, or -1
     int ball;        // or -1
@@ -174,6 +174,33 @@ class EventEngine {
     double gap;
   };
   SupportGap supportGap(int i, const Support& support, const Vec3& centre) const;
+  // What ball i touches within kSupportGapFraction of its radius: its possible supports
+  // (statics, resting balls, balls slower than its rest speed) with their gaps, and the faster
+  // balls, which it must not settle into.
+  struct NearContacts {
+    std::vector<Support> supports;
+    std::vector<SupportGap> gaps;
+    std::vector<Support> moving;
+  };
+  NearContacts nearContacts(int i, const Vec3& centre) const;
+  // Rule 3 of rest_policy.h: whether ball i can rest (its contacts hold it with the balls it
+  // touches fixed, and so do its cluster's with the slow ones free) and where: `settle` is the
+  // smallest move, at most kSupportGapFraction of the radius, that makes the supports carrying
+  // it touch it to round-off, or zero.
+  struct RestCheck {
+    bool holds = false;
+    Vec3 settle = Vec3::Zero();
+  };
+  RestCheck restCheck(int i) const;
+  std::optional<Vec3> closingMove(int i, const Vec3& centre,
+                                  const std::vector<Support>& carrying) const;
+  Vec3 closingStep(int i, const Vec3& at, const std::vector<Support>& supports,
+                   double* residual) const;
+  Vec3 settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
+                    std::vector<Support> carrying) const;
+  // Ball i at `centre` overlaps nothing, and what it touches to round-off holds it.
+  bool heldAt(int i, const Vec3& centre, const NearContacts& near) const;
+  std::optional<Vec3> lowestPocket(int i, const Vec3& centre, const NearContacts& near) const;
   bool clusterHolds(int i) const;
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
