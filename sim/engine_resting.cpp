@@ -127,8 +127,9 @@ EventEngine::RestCheck EventEngine::restCheck(int i) const {
   const std::optional<Vec3> move = closingMove(i, centre, carrying);
   if (!move) return check;
   if (!clusterHolds(i)) return check;
-  check.holds = true;
-  check.settle = settlingMove(i, centre, near, *move, std::move(carrying));
+  const std::optional<Vec3> settle = settlingMove(i, centre, near, *move, std::move(carrying));
+  check.holds = settle.has_value();
+  if (settle) check.settle = *settle;
   return check;
 }
 
@@ -164,9 +165,10 @@ Vec3 EventEngine::closingStep(int i, const Vec3& at, const std::vector<Support>&
 // the ones to close, so that the ball ends touching it instead. There, without overlapping
 // anything, the contacts it touches to round-off must hold it. Where that fails (the joined
 // contacts cannot all be touched at once), it settles into the lowest pocket within reach
-// (lowestPocket); failing that, it rests where it is, its supports within kSupportGapFraction.
-Vec3 EventEngine::settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
-                               std::vector<Support> carrying) const {
+// (lowestPocket); failing that, it does not rest: it hops on at the rest speed until it lands
+// where it can settle.
+std::optional<Vec3> EventEngine::settlingMove(int i, const Vec3& centre, const NearContacts& near,
+                                              Vec3 move, std::vector<Support> carrying) const {
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
   double residual = 0.0;
   for (int round = 0; round < 4; ++round) {
@@ -182,7 +184,7 @@ Vec3 EventEngine::settlingMove(int i, const Vec3& centre, const NearContacts& ne
     if (!joined) break;
   }
   if (heldAt(i, centre + move, near)) return move;
-  return lowestPocket(i, centre, near).value_or(Vec3::Zero());
+  return lowestPocket(i, centre, near);
 }
 
 bool EventEngine::heldAt(int i, const Vec3& centre, const NearContacts& near) const {

@@ -184,9 +184,9 @@ class EventEngine {
   };
   NearContacts nearContacts(int i, const Vec3& centre) const;
   // Rule 3 of rest_policy.h: whether ball i can rest (its contacts hold it with the balls it
-  // touches fixed, and so do its cluster's with the slow ones free) and where: `settle` is the
-  // smallest move, at most kSupportGapFraction of the radius, that makes the supports carrying
-  // it touch it to round-off, or zero.
+  // touches fixed, and so do its cluster's with the slow ones free, and it can settle) and
+  // where: `settle` is the move, at most kSupportGapFraction of the radius, after which what it
+  // touches to round-off holds it.
   struct RestCheck {
     bool holds = false;
     Vec3 settle = Vec3::Zero();
@@ -196,8 +196,8 @@ class EventEngine {
                                   const std::vector<Support>& carrying) const;
   Vec3 closingStep(int i, const Vec3& at, const std::vector<Support>& supports,
                    double* residual) const;
-  Vec3 settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
-                    std::vector<Support> carrying) const;
+  std::optional<Vec3> settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
+                                   std::vector<Support> carrying) const;
   // Ball i at `centre` overlaps nothing, and what it touches to round-off holds it.
   bool heldAt(int i, const Vec3& centre, const NearContacts& near) const;
   std::optional<Vec3> lowestPocket(int i, const Vec3& centre, const NearContacts& near) const;

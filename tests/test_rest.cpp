@@ -160,9 +160,9 @@ class TestRest : public QObject {
              qPrintable(QString("%1 resting, %2 events").arg(resting).arg(sim.stats().events)));
     QVERIFY2(sim.stats().events < 5'000'000, qPrintable(QString::number(sim.stats().events)));
     QVERIFY(sim.kineticEnergy() == 0.0);
-    // Resting balls settle onto what carries them: at least 7 in 8 are held by the walls and
-    // balls they touch to round-off (57 of 64; 53 before resting balls settled into the lowest
-    // pocket within reach when their own supports could not all be touched).
+    // Resting balls settle onto what carries them: at least 15 in 16 are held by the walls and
+    // balls they touch to round-off (63 of 64; 53 when a ball whose supports could not all be
+    // touched at once rested where it was, its supports within 1 % of its radius).
     const std::vector<Vec3> at = sim.positions();
     const double touching = tolerance::kTouchFraction * 0.1;
     int held = 0;
@@ -178,7 +178,7 @@ class TestRest : public QObject {
           contacts.push_back({0, -1, (at[b] - at[o]).normalized()});
       held += contactForcesBalance(s.world.gravity, {1.0}, contacts, tolerance::kForceBalance);
     }
-    QVERIFY2(held >= 56, qPrintable(QString("%1 of 64 held by what they touch").arg(held)));
+    QVERIFY2(held >= 60, qPrintable(QString("%1 of 64 held by what they touch").arg(held)));
   }
 
   void restingBallWakesWhenHit() {
