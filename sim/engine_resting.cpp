@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace carom {
 
@@ -25,6 +26,27 @@ void EventEngine::putToRest(int i, RunStats& stats, const Vec3& settle) {
   predictions_[i].crossing = {};
   schedule(i);
   warnNeighbours(i);
+  // A resting ball above that rested on i while i still moved is left with a gap: it falls the
+  // gap and settles again.
+  for (const int m : restingAbove(i, tolerance::kTouchFraction)) {
+    if (!particles_[m].resting) continue;  // woken with another one
+    wake(m, stats);
+    predict(m);
+  }
+}
+
+std::vector<int> EventEngine::restingAbove(int k, double minGapFraction) const {
+  std::vector<int> above;
+  forEachNeighbour(k, [&](int m) {
+    if (!particles_[m].resting) return;
+    const Vec3 offset = tracks_[m].motion.position - tracks_[k].motion.position;
+    if (offset.dot(gravity_) >= 0.0) return;  // beside or below: it does not rest on k
+    const double smaller = std::min(bodies_.radius[k], bodies_.radius[m]);
+    const double gap = offset.norm() - bodies_.radius[k] - bodies_.radius[m];
+    if (gap > minGapFraction * smaller && gap <= tolerance::kSupportGapFraction * smaller)
+      above.push_back(m);
+  });
+  return above;
 }
 
 void EventEngine::wake(int i, RunStats& stats) {
@@ -41,27 +63,30 @@ void EventEngine::wake(int i, RunStats& stats) {
     recordEnergy(k);
     p.collisionsInBurst = 0;
     changed(k);
-    forEachNeighbour(k, [&](int m) {
-      Particle& q = particles_[m];
-      if (!q.resting) return;
-      const Vec3 offset = tracks_[m].motion.position - tracks_[k].motion.position;
-      if (offset.dot(gravity_) >= 0.0) return;  // beside or below: it does not rest on k
-      const double gap = offset.norm() - bodies_.radius[k] - bodies_.radius[m];
-      if (gap <= tolerance::kSupportGapFraction * std::min(bodies_.radius[k], bodies_.radius[m])) {
-        q.resting = false;
-        pending.push_back(m);
-      }
-    });
+    for (const int m : restingAbove(k, -std::numeric_limits<double>::infinity())) {
+      particles_[m].resting = false;
+      pending.push_back(m);
+    }
     if (k != i) predict(k);
   }
 }
 
-bool EventEngine::restsOnContact(int i, const Vec3& n, RunStats& stats) {
+bool EventEngine::restsOnContact(int i, const Vec3& n, double restitution, RunStats& stats) {
   const Vec3& v = tracks_[i].motion.velocity;
-  const double settle = tolerance::kSettleSpeedFactor * restSpeed_[i];
+  // Resting takes the ball's kinetic energy. An inelastic ball would lose it in its bounces
+  // anyway; an elastic one would not, so it rests only as slow as its slide speed (a bounce of
+  // round-off height, how fast elastic pairs part): an elastic ball sliding slowly across a
+  // floor, or pushed off a frictionless pyramid, keeps its speed.
+  const double slowest = restitution >= 1.0 ? slideSpeed_[i] : restSpeed_[i];
+  const double settle = tolerance::kSettleSpeedFactor * slowest;
   const double approach = -v.dot(n);
   if (approach >= settle || (v + approach * n).norm() >= settle) return false;
   const RestCheck check = restCheck(i);
+  for (const int m : check.loosened) {
+    if (!particles_[m].resting) continue;  // woken with another one
+    wake(m, stats);
+    predict(m);
+  }
   if (check.holds) putToRest(i, stats, check.settle);
   return check.holds;
 }
@@ -127,6 +152,15 @@ EventEngine::RestCheck EventEngine::restCheck(int i) const {
   const std::optional<Vec3> move = closingMove(i, centre, carrying);
   if (!move) return check;
   if (!clusterHolds(i)) return check;
+  // Each resting ball that carries it must be able to: with that ball free as well (its other
+  // contacts fixed), the cluster must still hold. One that cannot is loosened: it wakes, and
+  // its own check, the same system seen from it, then fails as this one did. Three balls
+  // placed in a frictionless pyramid spread whether the lower two rest or not when the top
+  // arrives.
+  for (const Support& support : carrying)
+    if (support.ball >= 0 && particles_[support.ball].resting && !clusterHolds(i, support.ball))
+      check.loosened.push_back(support.ball);
+  if (!check.loosened.empty()) return check;
   const std::optional<Vec3> settle = settlingMove(i, centre, near, *move, std::move(carrying));
   check.holds = settle.has_value();
   if (settle) check.settle = *settle;
@@ -253,11 +287,15 @@ bool EventEngine::clearAt(int i, const Vec3& centre) const {
 // Ball i's cluster: i and the slow balls that touch it within the support gap, and theirs,
 // breadth first up to kMaxClusterBalls. They are solved together, loads included: three slow
 // balls in a frictionless pyramid are not held, though each alone would be. Resting balls, and
-// balls past the limit, count as fixed, as statics do: a settled pile is rigid to a newcomer
-// unless a hit wakes it (rule 4).
-bool EventEngine::clusterHolds(int i) const {
+// balls past the limit, count as fixed, as statics do, except `freed`, a resting ball that
+// takes part as the slow ones do.
+bool EventEngine::clusterHolds(int i, int freed) const {
   std::vector<int> members{i};
   std::vector<Vec3> centres{tracks_[i].motion.positionAt(now_, accelerationOf(i))};
+  if (freed >= 0) {
+    members.push_back(freed);
+    centres.push_back(tracks_[freed].motion.position);
+  }
   const auto memberIndex = [&](int k) {
     const auto found = std::find(members.begin(), members.end(), k);
     return found == members.end() ? -1 : static_cast<int>(found - members.begin());

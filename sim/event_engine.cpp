@@ -401,11 +401,18 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   // The contact was predicted, so it is resolved even when round-off makes the approach look
   // zero or negative here: the minimum separation then parts the pair, and the same contact
   // cannot be predicted again at this instant.
+  // Too gentle to move a resting ball: it acts as an immovable surface, unless ball i would rest
+  // on it and it cannot carry i (restCheck), when it wakes first.
+  bool answered = false;
   if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
-    // Too gentle to move a resting ball: it acts as an immovable surface.
-    collideWithSurface(i, -n, restitution, stats);
-    if (!a.resting) updateSlide(i, stats);
-  } else {
+    answered = restsOnContact(i, -n, restitution, stats);
+    if (!answered && b.resting) {
+      bounceOffSurface(i, -n, restitution, stats);
+      if (!a.resting) updateSlide(i, stats);
+      answered = true;
+    }
+  }
+  if (!answered) {
     if (b.resting) wake(j, stats);
     // A pair that gravity presses together (a falling ball on a sliding one) separates at no
     // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h). Only an
@@ -436,7 +443,11 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
                                      int plane) {
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
   // wall and a resting ball would otherwise rattle between them.
-  if (restsOnContact(i, n, stats)) return;
+  if (!restsOnContact(i, n, restitution, stats)) bounceOffSurface(i, n, restitution, stats, plane);
+}
+
+void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats,
+                                   int plane) {
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
@@ -451,7 +462,7 @@ void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, R
     startSliding(i, plane);
     if (capture != kAlone) startCrease(i, capture);
     // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
-    if (restsOnContact(i, n, stats)) return;
+    if (restsOnContact(i, n, restitution, stats)) return;
   } else {
     // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
     // slides instead (above), and so bounces in finitely many events.

@@ -126,6 +126,8 @@ class EventEngine {
   // that gravity presses the ball against turns into sliding along it.
   void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
                           int plane = -1);
+  // The same contact when it does not end in rest.
+  void bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1);
   // Sliding (docs/physics.md, "Sliding"): the ball keeps touching the plane and follows
   // gravity's component along it, an exact path, until a contact sends it off faster than a
   // bounce of round-off height.
@@ -160,9 +162,12 @@ class EventEngine {
   void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
   bool clearAt(int i, const Vec3& centre) const;
   void wake(int i, RunStats& stats);
+  // The resting balls that may rest on ball k: above it, their gap to it above
+  // `minGapFraction` and at most kSupportGapFraction of the smaller radius.
+  std::vector<int> restingAbove(int k, double minGapFraction) const;
   // A contact along unit normal n (towards ball i) slow enough to end in rest: when restCheck
-  // holds, ball i rests, and this returns true.
-  bool restsOnContact(int i, const Vec3& n, RunStats& stats);
+  // holds, ball i rests, and this returns true; resting balls that cannot carry it wake.
+  bool restsOnContact(int i, const Vec3& n, double restitution, RunStats& stats);
   // Not resting, and slower than a ball that may settle.
   bool slow(int k) const;
   struct Support {
@@ -190,6 +195,7 @@ class EventEngine {
   struct RestCheck {
     bool holds = false;
     Vec3 settle = Vec3::Zero();
+    std::vector<int> loosened;  // resting balls that cannot carry it: they must move
   };
   RestCheck restCheck(int i) const;
   std::optional<Vec3> closingMove(int i, const Vec3& centre,
@@ -201,7 +207,7 @@ class EventEngine {
   // Ball i at `centre` overlaps nothing, and what it touches to round-off holds it.
   bool heldAt(int i, const Vec3& centre, const NearContacts& near) const;
   std::optional<Vec3> lowestPocket(int i, const Vec3& centre, const NearContacts& near) const;
-  bool clusterHolds(int i) const;
+  bool clusterHolds(int i, int freed = -1) const;
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
     // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).

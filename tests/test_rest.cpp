@@ -160,9 +160,9 @@ class TestRest : public QObject {
              qPrintable(QString("%1 resting, %2 events").arg(resting).arg(sim.stats().events)));
     QVERIFY2(sim.stats().events < 5'000'000, qPrintable(QString::number(sim.stats().events)));
     QVERIFY(sim.kineticEnergy() == 0.0);
-    // Resting balls settle onto what carries them: at least 15 in 16 are held by the walls and
-    // balls they touch to round-off (63 of 64; 53 when a ball whose supports could not all be
-    // touched at once rested where it was, its supports within 1 % of its radius).
+    // Resting balls settle onto what carries them: they are held by the walls and balls they
+    // touch to round-off (64 of 64; 53 when a ball whose supports could not all be touched at
+    // once rested where it was, its supports within 1 % of its radius).
     const std::vector<Vec3> at = sim.positions();
     const double touching = tolerance::kTouchFraction * 0.1;
     int held = 0;
@@ -178,7 +178,7 @@ class TestRest : public QObject {
           contacts.push_back({0, -1, (at[b] - at[o]).normalized()});
       held += contactForcesBalance(s.world.gravity, {1.0}, contacts, tolerance::kForceBalance);
     }
-    QVERIFY2(held >= 60, qPrintable(QString("%1 of 64 held by what they touch").arg(held)));
+    QVERIFY2(held >= 62, qPrintable(QString("%1 of 64 held by what they touch").arg(held)));
   }
 
   void restingBallWakesWhenHit() {
@@ -386,6 +386,54 @@ class TestRest : public QObject {
     const double tolerance = Method(method) == Method::Exact ? 1e-9 : 0.05;
     QVERIFY2(std::abs(sim.totalEnergy() - before) <= tolerance * std::abs(before),
              qPrintable(QString::number((sim.totalEnergy() - before) / before)));
+  }
+
+  // The lower pair of a frictionless pyramid already rests when the top arrives, gently: it
+  // must still spread. The top used to rest on it, since resting balls counted as fixed. A top
+  // four times the radius of the lower balls falls from further than their support gap (1 % of
+  // their radius), so that they rest before it comes, and arrives slower than twice its own
+  // rest speed, too gently to wake them by the hit.
+  void pyramidSpreadsUnderATopLaidOnARestingPair_data() {
+    QTest::addColumn<int>("method");
+    for (int method : {int(Method::Exact), int(Method::Swept)})
+      QTest::addRow("%s", methodName(Method(method)).data()) << method;
+  }
+  void pyramidSpreadsUnderATopLaidOnARestingPair() {
+    QFETCH(int, method);
+    const double r = 0.1;
+    const double top = 0.4;
+    Scene s = floorScene(0.5);
+    s.world.method = Method(method);
+    s.balls.push_back(makeBall({-r, r + 1e-6, 0}, {0, 0, 0}, r));
+    s.balls.push_back(makeBall({r, r + 1e-6, 0}, {0, 0, 0}, r));
+    const double apex = r + std::sqrt((r + top) * (r + top) - r * r);
+    s.balls.push_back(makeBall({0, apex + 1.5e-3, 0}, {0, 0, 0}, top));
+    Simulation sim(s);
+    sim.advance(0.005);
+    QVERIFY(sim.state()[0].resting && sim.state()[1].resting);
+    sim.advance(3.0);
+    const std::vector<Vec3> end = sim.positions();
+    QVERIFY2(end[2].y() < top + 1e-6, qPrintable(QString::number(end[2].y())));
+    QVERIFY2(end[1].x() - end[0].x() > 1.0, qPrintable(QString::number(end[1].x() - end[0].x())));
+    QVERIFY(sim.stats().wakes >= 2);
+  }
+
+  // Resting takes a ball's kinetic energy, which an elastic ball would keep: one sliding slowly
+  // between two walls bounces between them for ever. It used to rest at the first wall (slower
+  // than twice the rest speed, and held by floor and wall), all its energy gone. (`swept` cannot
+  // tell speeds below a step's kick of gravity, 0.16 m/s at 1/60 s, from rest.)
+  void slowElasticBallKeepsBouncingBetweenWalls() {
+    Scene s = floorScene(1.0);
+    addBoxWalls(s, 0.5, {0});
+    s.balls.push_back(makeBall({0, 0.1, 0}, {0.05, 0, 0}));
+    Simulation sim(s);
+    const double before = sim.totalEnergy();
+    sim.advance(100.0);
+    QCOMPARE(sim.stats().restings, std::uint64_t{0});
+    QVERIFY2(std::abs(sim.totalEnergy() - before) <= 1e-9 * before,
+             qPrintable(QString::number((sim.totalEnergy() - before) / before)));
+    QVERIFY2(std::abs(std::abs(sim.state()[0].velocity.x()) - 0.05) < 1e-9,
+             qPrintable(QString::number(sim.state()[0].velocity.x())));
   }
 
   // What must rest still rests: a column of balls in a box and a ball in a corner, placed
