@@ -28,7 +28,11 @@ void EventEngine::putToRest(int i, RunStats& stats, const Vec3& settle) {
   warnNeighbours(i);
   // A resting ball above that rested on i while i still moved is left with a gap: it falls the
   // gap and settles again.
-  for (const int m : restingAbove(i, tolerance::kTouchFraction)) {
+  wakeEach(restingAbove(i, tolerance::kTouchFraction), stats);
+}
+
+void EventEngine::wakeEach(const std::vector<int>& balls, RunStats& stats) {
+  for (const int m : balls) {
     if (!particles_[m].resting) continue;  // woken with another one
     wake(m, stats);
     predict(m);
@@ -82,11 +86,7 @@ bool EventEngine::restsOnContact(int i, const Vec3& n, double restitution, RunSt
   const double approach = -v.dot(n);
   if (approach >= settle || (v + approach * n).norm() >= settle) return false;
   const RestCheck check = restCheck(i);
-  for (const int m : check.loosened) {
-    if (!particles_[m].resting) continue;  // woken with another one
-    wake(m, stats);
-    predict(m);
-  }
+  wakeEach(check.loosened, stats);
   if (check.holds) putToRest(i, stats, check.settle);
   return check.holds;
 }
@@ -117,7 +117,7 @@ EventEngine::NearContacts EventEngine::nearContacts(int i, const Vec3& centre) c
     const SupportGap gap = supportGap(i, support, centre);
     if (gap.gap > reach) return;
     (moving ? near.moving : near.supports).push_back(support);
-    if (!moving) near.gaps.push_back(gap);
+    if (!moving) near.normals.push_back(gap.normal);
   };
   const Particle& p = particles_[i];
   for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1}, false);
@@ -141,7 +141,7 @@ EventEngine::RestCheck EventEngine::restCheck(int i) const {
   const Vec3 centre = tracks_[i].motion.positionAt(now_, accelerationOf(i));
   const NearContacts near = nearContacts(i, centre);
   std::vector<ClusterContact> contacts;
-  for (const SupportGap& gap : near.gaps) contacts.push_back({0, -1, gap.normal});
+  for (const Vec3& normal : near.normals) contacts.push_back({0, -1, normal});
   std::vector<bool> carries;
   if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, contacts, tolerance::kForceBalance,
                             &carries))

@@ -162,6 +162,8 @@ class EventEngine {
   void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
   bool clearAt(int i, const Vec3& centre) const;
   void wake(int i, RunStats& stats);
+  // Wakes those of `balls` still resting, and predicts them.
+  void wakeEach(const std::vector<int>& balls, RunStats& stats);
   // The resting balls that may rest on ball k: above it, their gap to it above
   // `minGapFraction` and at most kSupportGapFraction of the smaller radius.
   std::vector<int> restingAbove(int k, double minGapFraction) const;
@@ -180,11 +182,11 @@ class EventEngine {
   };
   SupportGap supportGap(int i, const Support& support, const Vec3& centre) const;
   // What ball i touches within kSupportGapFraction of its radius: its possible supports
-  // (statics, resting balls, balls slower than its rest speed) with their gaps, and the faster
-  // balls, which it must not settle into.
+  // (statics, resting balls, balls slower than its rest speed) with their normals, and the
+  // faster balls, which it must not settle into.
   struct NearContacts {
     std::vector<Support> supports;
-    std::vector<SupportGap> gaps;
+    std::vector<Vec3> normals;
     std::vector<Support> moving;
   };
   NearContacts nearContacts(int i, const Vec3& centre) const;
