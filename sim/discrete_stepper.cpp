@@ -237,6 +237,8 @@ class DiscreteStepper final : public Stepper {
       resolveBallBall(velocities_[i], velocities_[j], bodies_.inverseMass[i],
                       bodies_.inverseMass[j], n,
                       std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
+    payExcess(i, j);
+    payExcess(j, i);
     recordEnergy(i);
     recordEnergy(j);
     fromStepEnd(i);
@@ -273,6 +275,24 @@ class DiscreteStepper final : public Stepper {
     if (energy_.empty()) return;
     energyExcess_[i] =
         restoreSpecificEnergy(velocities_[i], positions_[i], settings_.gravity, energy_[i]);
+  }
+  // A slow ball pushed up out of an overlap can be higher than its energy allows, and its
+  // restore leaves it the excess (restoreSpecificEnergy). It pays that at once from the speed
+  // the exchange gave it, or else its partner, which the same push moved, pays it, rather than
+  // at its next contact: its reported energy would be above its own for a whole flight.
+  void payExcess(int i, int partner) {
+    if (energy_.empty() || energyExcess_[i] <= 0.0) return;
+    for (const int k : {i, partner}) {
+      const double owed = energyExcess_[i];
+      energyExcess_[i] = 0.0;
+      const double massShare = k == i ? 1.0 : bodies_.mass[i] / bodies_.mass[k];
+      const double energy = 0.5 * velocities_[k].squaredNorm() -
+                            settings_.gravity.dot(positions_[k]) - massShare * owed;
+      energyExcess_[i] =
+          restoreSpecificEnergy(velocities_[k], positions_[k], settings_.gravity, energy) /
+          massShare;
+      if (energyExcess_[i] <= 0.0) return;
+    }
   }
   // Contacts act on the velocity at the step's end, with the kick still owed (the one state()
   // reports), so that their energy is counted as it will be reported.

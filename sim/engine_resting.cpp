@@ -64,7 +64,6 @@ void EventEngine::wake(int i, RunStats& stats) {
     Particle& p = particles_[k];
     ++stats.wakes;
     tracks_[k].motion.since = now_;  // starts to fall from here
-    recordEnergy(k);
     p.collisionsInBurst = 0;
     changed(k);
     for (const int m : restingAbove(k, -std::numeric_limits<double>::infinity())) {

@@ -86,9 +86,11 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   };
   Surface planes[2];
   std::size_t count = 0;
-  for (const int k : {p.slidePlane, p.creasePlane})
-    if (k >= 0)
-      planes[count++] = {bodies_.planes[k].normal, staticContact(i, {false, k}).restitution};
+  for (const int k : {p.slidePlane, p.creasePlane}) {
+    if (k < 0) continue;
+    planes[count++] = {bodies_.planes[k].normal, staticContact(i, {false, k}).restitution};
+    noteRestitution(planes[count - 1].restitution);
+  }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
                  tolerance::kMaxSimultaneousReflections,
                  [&](std::size_t, double) { ++stats.collisions.ballPlane; });

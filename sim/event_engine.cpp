@@ -331,6 +331,7 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
 
 void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* log) {
   ++stats.events;
+  inelasticEvent_ = false;
   if (predictions_[i].crossing.time <= predictions_[i].contact.time) {
     cross(i, stats);
     return;
@@ -350,6 +351,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
           staticContact(i, {event.kind == EventKind::Cylinder, event.other});
       notePenetration(-gap, stats);
       const double approach = -m.velocity.dot(n);
+      noteRestitution(restitution);
       collideWithSurface(i, n, restitution, stats,
                          event.kind == EventKind::Plane ? event.other : -1);
       if (!particles_[i].resting) {
@@ -365,7 +367,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
             {now_,
              event.kind == EventKind::Plane ? ContactKind::BallPlane : ContactKind::BallCylinder, i,
              event.other, m.position - r * n, approach});
-      recordEnergy(i);
+      closeBooks(i, 0.0);
       if (!particles_[i].resting) predict(i);
       return;
     }
@@ -398,12 +400,14 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   n /= distance;
   const double approach = (ma.velocity - mb.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
+  noteRestitution(restitution);
   // The contact was predicted, so it is resolved even when round-off makes the approach look
   // zero or negative here: the minimum separation then parts the pair, and the same contact
   // cannot be predicted again at this instant.
   // Too gentle to move a resting ball: it acts as an immovable surface, unless ball i would rest
   // on it and it cannot carry i (restCheck), when it wakes first.
   bool answered = false;
+  double exchangedI = 0.0, exchangedJ = 0.0;
   if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
     answered = restsOnContact(i, -n, restitution, stats);
     if (!answered && b.resting) {
@@ -422,6 +426,13 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
                                                  : std::min(restSpeed_[i], restSpeed_[j]);
     const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
+    // What the exchange alone gives each ball, without the minimum separation: the energy an
+    // elastic pair's books keep (closeBooks).
+    Vec3 exchangedA = ma.velocity, exchangedB = mb.velocity;
+    resolveBallBall(exchangedA, exchangedB, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
+                    restitution, 0.0);
+    exchangedI = 0.5 * (exchangedA.squaredNorm() - ma.velocity.squaredNorm());
+    exchangedJ = 0.5 * (exchangedB.squaredNorm() - mb.velocity.squaredNorm());
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
                     restitution, minimum);
     changed(i);
@@ -433,8 +444,9 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (log)
     log->push_back(
         {now_, ContactKind::BallBall, i, j, ma.position + bodies_.radius[i] * n, approach});
-  recordEnergy(i);
-  recordEnergy(j);
+  closeBooks(i, exchangedI);
+  // A resting ball that answered as a surface took no part.
+  if (!answered) closeBooks(j, exchangedJ);
   if (!a.resting) predict(i);
   if (!b.resting) predict(j);
 }
@@ -523,6 +535,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   const bool left =
       reflectOffEach(tracks_[i].motion.velocity, touchedStatics_,
                      tolerance::kMaxSimultaneousReflections, [&](std::size_t k, double) {
+                       noteRestitution(touchedStatics_[k].restitution);
                        if (touchedStatics_[k].cylinder)
                          ++stats.collisions.ballCylinder;
                        else
@@ -538,6 +551,16 @@ void EventEngine::recordEnergy(int i) {
   if (!restoresEnergy_) return;
   const Motion& m = tracks_[i].motion;
   energy_[i] = 0.5 * m.velocity.squaredNorm() - gravity_.dot(m.position) - energyExcess_[i];
+  energyExcess_[i] = 0.0;
+}
+
+void EventEngine::closeBooks(int i, double exchanged) {
+  if (!restoresEnergy_) return;
+  if (inelasticEvent_) {
+    recordEnergy(i);
+    return;
+  }
+  energy_[i] += exchanged;
   energyExcess_[i] = 0.0;
 }
 

@@ -157,6 +157,15 @@ class EventEngine {
   // last event, by changing its speed along gravity, so the error never outlives one flight.
   void recordEnergy(int i);
   void restoreEnergy(int i);
+  // The books after ball i's event. An elastic event keeps what physics keeps: the ball's
+  // energy, changed only by `exchanged` (its share of a ball pair's exchange). What the rest
+  // policy's guards gave or took in it (a slide's capture, a rest, a minimum separation) stays
+  // owed, and the ball's next contact settles it, so guards make and lose nothing over time. An
+  // event with an inelastic contact records the ball as it is: the guards model its collapse.
+  void closeBooks(int i, double exchanged);
+  void noteRestitution(double restitution) {
+    inelasticEvent_ = inelasticEvent_ || restitution < 1.0;
+  }
   // Stops ball i where it is, or moved by `settle` onto the supports that carry it (restCheck)
   // when that overlaps nothing.
   void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
@@ -265,7 +274,8 @@ class EventEngine {
   };
   std::vector<TouchedStatic> touchedStatics_;  // leaveTouchingStatics's, kept to save allocations
   bool restoresEnergy_ = false;
-  std::vector<double> energy_;  // per unit mass, after each ball's last event (`swept`)
+  bool inelasticEvent_ = false;  // the event being processed has an inelastic contact
+  std::vector<double> energy_;   // per unit mass, after each ball's last event (`swept`)
   // What a ball's restore could not take (it was higher than its energy allows), still owed.
   std::vector<double> energyExcess_;
   std::vector<double> restSpeed_;

@@ -585,6 +585,13 @@ class TestRest : public QObject {
   // errors used to add up: a gas under gravity gained 49 times its energy in 1,000 s under
   // `swept`, and a column of five balls on a floor 26 times in 5,000 s under `discrete`, its top
   // ball climbing to 17-19 m. Now each contact gives a ball back the energy of its last one.
+  // What is left is each ball's error since its last contact (up to tens of percent here, with
+  // 1/60 s steps and flights of a second): noise about the true energy, whose value at any one
+  // instant can be near zero by chance. So the drift after 10,000 s is held against the largest
+  // drift of the first 100 s, and the trend against the noise's mean: over the last 1,000 s it
+  // must be where it was over the first 1,000 s. Under `swept` the guards of rule 1 (a slide's
+  // capture, an elastic ball's rest) used to take their energy for good, and the mean fell by
+  // 3 % in 10,000 s (-6 to -13 % for other seeds).
   void steppedMethodsKeepAnElasticGasEnergy_data() {
     QTest::addColumn<int>("method");
     QTest::addColumn<int>("integrator");
@@ -603,19 +610,33 @@ class TestRest : public QObject {
     s.world.integrator = Integrator(integrator);
     Simulation sim(s);
     const double before = sim.totalEnergy();
-    const auto drift = [&] { return (sim.totalEnergy() - before) / std::abs(before); };
-    sim.advanceTo(100.0);
-    const double early = drift();
-    sim.advanceTo(5000.0);
-    // Each ball's error lasts one flight: the drift stays within the size of one (up to 15 %
-    // here for explicit Euler, with 1/60 s steps and flights of a second), it does not grow.
-    // (It may fall: `swept` rests and slides balls slower than one step's kick of gravity.)
+    double largestEarly = 0.0, largest = 0.0, firstMean = 0.0, lastMean = 0.0;
+    constexpr int kSeconds = 10000, kWindow = 1000;
+    for (int t = 1; t <= kSeconds; ++t) {
+      sim.advanceTo(t);
+      const double drift = (sim.totalEnergy() - before) / std::abs(before);
+      largest = std::max(largest, std::abs(drift));
+      if (t <= 100) largestEarly = largest;
+      if (t <= kWindow) firstMean += drift / kWindow;
+      if (t > kSeconds - kWindow) lastMean += drift / kWindow;
+    }
+    const double drift = (sim.totalEnergy() - before) / std::abs(before);
+    QVERIFY2(largestEarly < 0.5 && std::abs(drift) <= 2 * largestEarly + 1e-9,
+             qPrintable(QString("largest %1 in the first 100 s, %2 after 10000 s")
+                            .arg(largestEarly)
+                            .arg(drift)));
+    // Only `swept` has guards. Under `discrete` the Euler integrators' error depends on how the
+    // energy is shared among the balls (its flights' lengths), which the rare collisions of a
+    // dilute gas change: with explicit Euler its mean moved by 2 % between the two windows.
+    if (Method(method) == Method::Swept)
+      QVERIFY2(std::abs(lastMean - firstMean) < 0.01,
+               qPrintable(QString("mean drift %1 over the first %3 s, %2 over the last")
+                              .arg(firstMean)
+                              .arg(lastMean)
+                              .arg(kWindow)));
     // Velocity Verlet is exact in flight, and `discrete` with it keeps the energy to round-off.
-    QVERIFY2(
-        std::abs(early) < 0.2 && drift() <= std::max(2 * std::abs(early), 0.05) && drift() > -0.2,
-        qPrintable(QString("%1 after 100 s, %2 after 5000 s").arg(early).arg(drift())));
     if (Method(method) == Method::Discrete && Integrator(integrator) == Integrator::VelocityVerlet)
-      QVERIFY2(std::abs(drift()) < 1e-9, qPrintable(QString::number(drift())));
+      QVERIFY2(largest < 1e-9, qPrintable(QString::number(largest)));
   }
 
   void discreteColumnOfFiveStaysUp_data() {
