@@ -25,6 +25,11 @@ double ballPlaneContactTime(const BallPath& ball, double radius, const PlaneShap
 double ballCylinderContactTime(const BallPath& ball, double radius, const CylinderShape& cylinder,
                                double horizon);
 
+// The box grown by the ball's radius is the union of three face slabs, twelve edge cylinders
+// and eight corner balls; its first entry is the earliest of theirs, each in closed form or as
+// the first root of a quartic.
+double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& box, double horizon);
+
 // Balls a and b with radii summing to `radiusSum`.
 double ballBallContactTime(const BallPath& a, const BallPath& b, double radiusSum, double horizon);
 

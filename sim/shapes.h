@@ -25,6 +25,39 @@ struct CylinderShape {
   }
 };
 
+// A solid cuboid: its centre, its local axes (the columns of `axes`, orthonormal) and its half
+// extents along them.
+struct BoxShape {
+  Vec3 center;
+  Eigen::Matrix3d axes;
+  Vec3 half;
+  Vec3 toLocal(const Vec3& x) const { return axes.transpose() * (x - center); }
+  Vec3 closestPoint(const Vec3& x) const {
+    const Vec3 local = toLocal(x);
+    return center + axes * local.cwiseMax(-half).cwiseMin(half);
+  }
+  // The gap between a ball's surface and the box's, and the unit normal from the box's surface
+  // towards the centre: from the closest point, or, for a centre inside, out of the nearest face.
+  struct Contact {
+    Vec3 normal;
+    double gap;
+  };
+  Contact contact(const Vec3& centre, double ballRadius) const {
+    const Vec3 local = toLocal(centre);
+    const Vec3 outside = local.cwiseAbs() - half;
+    if ((outside.array() > 0.0).any()) {
+      const Vec3 offset = local - local.cwiseMax(-half).cwiseMin(half);
+      const double distance = offset.norm();
+      return {axes * (offset / distance), distance - ballRadius};
+    }
+    Eigen::Index face = 0;
+    const double depth = outside.maxCoeff(&face);  // the least negative: the nearest face
+    Vec3 n = Vec3::Zero();
+    n[face] = local[face] < 0.0 ? -1.0 : 1.0;
+    return {axes * n, depth - ballRadius};
+  }
+};
+
 inline PlaneShape planeShape(const Plane& plane) {
   const Vec3 n = plane.normal.normalized();
   return {n, n.dot(plane.point)};
