@@ -14,6 +14,10 @@ Bodies makeBodies(const Scene& scene) {
     bodies.cylinders.push_back(cylinderShape(cylinder));
     bodies.cylinderOwnRestitution.push_back(cylinder.restitution);
   }
+  for (const Box& box : scene.boxes) {
+    bodies.boxes.push_back(boxShape(box));
+    bodies.boxOwnRestitution.push_back(box.restitution);
+  }
   for (const Ball& ball : scene.balls) {
     bodies.radius.push_back(ball.radius);
     bodies.mass.push_back(ball.mass);
@@ -34,6 +38,7 @@ void Bodies::setWorldRestitution(double worldRestitution) {
   };
   resolve(planeOwnRestitution, planeRestitution);
   resolve(cylinderOwnRestitution, cylinderRestitution);
+  resolve(boxOwnRestitution, boxRestitution);
   resolve(ownRestitution, restitution);
 }
 

@@ -14,6 +14,8 @@ struct Bodies {
   std::vector<double> planeRestitution;
   std::vector<CylinderShape> cylinders;
   std::vector<double> cylinderRestitution;
+  std::vector<BoxShape> boxes;
+  std::vector<double> boxRestitution;
   std::vector<double> radius;
   std::vector<double> mass;
   std::vector<double> inverseMass;
@@ -22,6 +24,7 @@ struct Bodies {
   // The objects' own values (none: the world's), kept to resolve the world's again.
   std::vector<std::optional<double>> planeOwnRestitution;
   std::vector<std::optional<double>> cylinderOwnRestitution;
+  std::vector<std::optional<double>> boxOwnRestitution;
   std::vector<std::optional<double>> ownRestitution;
 
   int ballCount() const { return static_cast<int>(radius.size()); }

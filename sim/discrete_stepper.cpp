@@ -158,6 +158,14 @@ class DiscreteStepper final : public Stepper {
                            std::min(bodies_.restitution[i], bodies_.cylinderRestitution[k]),
                            ContactKind::BallCylinder, k});
     }
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
+      // Out by the closest point (out of the nearest face for a centre inside).
+      const BoxShape::Contact contact = bodies_.boxes[k].contact(positions_[i], r);
+      if (contact.gap >= 0.0) continue;
+      overlaps_.push_back({contact.normal, -contact.gap,
+                           std::min(bodies_.restitution[i], bodies_.boxRestitution[k]),
+                           ContactKind::BallBox, k});
+    }
     if (overlaps_.size() > 1 && pushOutOfSeveral(i, time, stats, log)) return;
     for (const StaticOverlap& o : overlaps_)
       pushOut(i, o.normal, o.depth, o.restitution, o.kind, o.other, time, stats, log);
@@ -180,10 +188,7 @@ class DiscreteStepper final : public Stepper {
     reflectOffEach(velocities_[i], overlaps_, tolerance::kMaxSimultaneousReflections,
                    [&](std::size_t k, double approach) {
                      const StaticOverlap& o = overlaps_[k];
-                     if (o.kind == ContactKind::BallPlane)
-                       ++stats.collisions.ballPlane;
-                     else
-                       ++stats.collisions.ballCylinder;
+                     stats.collisions.add(o.kind);
                      if (log)
                        log->push_back({time, o.kind, i, o.other,
                                        positions_[i] - bodies_.radius[i] * o.normal, approach});
@@ -205,10 +210,7 @@ class DiscreteStepper final : public Stepper {
     recordEnergy(i);
     fromStepEnd(i);
     if (approach <= 0.0) return;
-    if (kind == ContactKind::BallPlane)
-      ++stats.collisions.ballPlane;
-    else
-      ++stats.collisions.ballCylinder;
+    stats.collisions.add(kind);
     if (log)
       log->push_back({time, kind, i, other, positions_[i] - bodies_.radius[i] * n, approach});
   }

@@ -27,13 +27,13 @@ int EventEngine::slideCapture(int i, int plane) const {
   int other = kAlone;
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (!ref.cylinder && ref.index == plane) continue;
+    if (ref.isPlane(plane)) continue;
     const StaticContact contact = staticContact(i, ref);
     if (contact.gap > touching) continue;
     // A wall the ball only touches, neither moving into it nor pressed against it, leaves the
     // slide alone (a ball sliding along a floor beside a wall).
     if (v.dot(contact.normal) >= 0.0 && slideGravity_[plane].dot(contact.normal) >= 0.0) continue;
-    if (ref.cylinder || other != kAlone) return kNoCapture;
+    if (ref.kind != StaticKind::Plane || other != kAlone) return kNoCapture;
     other = ref.index;
   }
   if (other == kAlone) return kAlone;
@@ -88,7 +88,8 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   std::size_t count = 0;
   for (const int k : {p.slidePlane, p.creasePlane}) {
     if (k < 0) continue;
-    planes[count++] = {bodies_.planes[k].normal, staticContact(i, {false, k}).restitution};
+    planes[count++] = {bodies_.planes[k].normal,
+                       staticContact(i, {StaticKind::Plane, k}).restitution};
     noteRestitution(planes[count - 1].restitution);
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),

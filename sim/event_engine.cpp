@@ -127,7 +127,7 @@ void EventEngine::buildStaticLists() {
       if (!border)
         for (int a = 0; a < 3; ++a)
           nearest += plane.normal[a] * (plane.normal[a] > 0 ? lo[a] : hi[a]);
-      if (border || nearest <= reach) statics_.push_back({false, k});
+      if (border || nearest <= reach) statics_.push_back({StaticKind::Plane, k});
     }
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
       bool near = border;
@@ -136,14 +136,24 @@ void EventEngine::buildStaticLists() {
         const double halfDiagonal = 0.5 * (hi - lo).norm();
         near = bodies_.cylinders[k].gap(centre, 0.0) <= halfDiagonal + reach;
       }
-      if (near) statics_.push_back({true, k});
+      if (near) statics_.push_back({StaticKind::Cylinder, k});
+    }
+    // A finite shape only where it is: cells far from it never see it. (Border cells reach out
+    // to infinity and see every shape.)
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
+      const Vec3 centre = 0.5 * (lo + hi);
+      const double halfDiagonal = 0.5 * (hi - lo).norm();
+      if (border || bodies_.boxes[k].contact(centre, 0.0).gap <= halfDiagonal + reach)
+        statics_.push_back({StaticKind::Box, k});
     }
     if (statics_.size() > budget) {
       statics_.clear();
       for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
-        statics_.push_back({false, k});
+        statics_.push_back({StaticKind::Plane, k});
       for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
-        statics_.push_back({true, k});
+        statics_.push_back({StaticKind::Cylinder, k});
+      for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
+        statics_.push_back({StaticKind::Box, k});
       sharedStatics_ = true;
       return;
     }
@@ -189,13 +199,25 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
   const Particle& p = particles_[i];
   for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // it slides along, never into it
+    if (ref.kind == StaticKind::Plane && slidesOn(p, ref.index))
+      continue;  // it slides along, never into it
     const double horizon = std::min(best.time, horizon_) - now_;
-    const double t = ref.cylinder
-                         ? ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon)
-                         : ballPlaneContactTime(path, r, bodies_.planes[ref.index], horizon);
-    if (t < horizon)
-      best = {now_ + t, ref.cylinder ? EventKind::Cylinder : EventKind::Plane, ref.index, 0};
+    double t = kNever;
+    EventKind kind = EventKind::Plane;
+    switch (ref.kind) {
+      case StaticKind::Plane:
+        t = ballPlaneContactTime(path, r, bodies_.planes[ref.index], horizon);
+        break;
+      case StaticKind::Cylinder:
+        t = ballCylinderContactTime(path, r, bodies_.cylinders[ref.index], horizon);
+        kind = EventKind::Cylinder;
+        break;
+      case StaticKind::Box:
+        t = ballBoxContactTime(path, r, bodies_.boxes[ref.index], horizon);
+        kind = EventKind::Box;
+        break;
+    }
+    if (t < horizon) best = {now_ + t, kind, ref.index, 0};
   }
 }
 
@@ -342,13 +364,13 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       schedule(i);
       return;
     case EventKind::Plane:
-    case EventKind::Cylinder: {
+    case EventKind::Cylinder:
+    case EventKind::Box: {
       moveTo(i, now_);
       restoreEnergy(i);
       const Motion& m = tracks_[i].motion;
       const double r = bodies_.radius[i];
-      const auto [n, gap, restitution] =
-          staticContact(i, {event.kind == EventKind::Cylinder, event.other});
+      const auto [n, gap, restitution] = staticContact(i, {staticKindOf(event.kind), event.other});
       notePenetration(-gap, stats);
       const double approach = -m.velocity.dot(n);
       noteRestitution(restitution);
@@ -358,15 +380,9 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
         leaveTouchingStatics(i, stats);
         updateSlide(i, stats);
       }
-      if (event.kind == EventKind::Plane)
-        ++stats.collisions.ballPlane;
-      else
-        ++stats.collisions.ballCylinder;
-      if (log)
-        log->push_back(
-            {now_,
-             event.kind == EventKind::Plane ? ContactKind::BallPlane : ContactKind::BallCylinder, i,
-             event.other, m.position - r * n, approach});
+      const ContactKind kind = contactKindOf(staticKindOf(event.kind));
+      stats.collisions.add(kind);
+      if (log) log->push_back({now_, kind, i, event.other, m.position - r * n, approach});
       closeBooks(i, 0.0);
       if (!particles_[i].resting) predict(i);
       return;
@@ -501,7 +517,12 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
 EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
                                                       const Vec3& position) const {
   const double r = bodies_.radius[i];
-  if (ref.cylinder) {
+  if (ref.kind == StaticKind::Box) {
+    const BoxShape::Contact contact = bodies_.boxes[ref.index].contact(position, r);
+    return {contact.normal, contact.gap,
+            std::min(bodies_.restitution[i], bodies_.boxRestitution[ref.index])};
+  }
+  if (ref.kind == StaticKind::Cylinder) {
     const CylinderShape& cylinder = bodies_.cylinders[ref.index];
     Vec3 n = cylinder.perpendicular(position - cylinder.point);
     const double gap = n.norm() - cylinder.radius - r;
@@ -525,9 +546,9 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   touchedStatics_.clear();
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (!ref.cylinder && slidesOn(p, ref.index)) continue;  // see updateSlide
+    if (ref.kind == StaticKind::Plane && slidesOn(p, ref.index)) continue;  // see updateSlide
     const auto [n, gap, restitution] = staticContact(i, ref);
-    if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.cylinder});
+    if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.kind});
   }
   // No minimum separation here: in a wedge opening slower than the rest speed it would send
   // the ball from one wall into the other for ever. An inelastic ball slows down in the loop
@@ -536,10 +557,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
       reflectOffEach(tracks_[i].motion.velocity, touchedStatics_,
                      tolerance::kMaxSimultaneousReflections, [&](std::size_t k, double) {
                        noteRestitution(touchedStatics_[k].restitution);
-                       if (touchedStatics_[k].cylinder)
-                         ++stats.collisions.ballCylinder;
-                       else
-                         ++stats.collisions.ballPlane;
+                       stats.collisions.add(contactKindOf(touchedStatics_[k].kind));
                      });
   if (left)
     changed(i);

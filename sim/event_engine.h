@@ -53,7 +53,7 @@ class EventEngine {
   void setVelocities(const std::vector<Vec3>& velocities);
 
  private:
-  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder };
+  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box };
   // What a neighbour search reads of every ball, in one cache line.
   struct alignas(64) Track {
     Motion motion;
@@ -84,9 +84,11 @@ class EventEngine {
     std::int8_t axis = 0;
     std::int8_t direction = 0;
   };
+  enum class StaticKind : std::uint8_t { Plane, Cylinder, Box };
   struct StaticRef {
-    bool cylinder;
+    StaticKind kind;
     int index;
+    bool isPlane(int plane) const { return kind == StaticKind::Plane && index == plane; }
   };
 
   // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
@@ -96,6 +98,16 @@ class EventEngine {
     double gap;
     double restitution;
   };
+  static StaticKind staticKindOf(EventKind kind) {
+    return kind == EventKind::Box        ? StaticKind::Box
+           : kind == EventKind::Cylinder ? StaticKind::Cylinder
+                                         : StaticKind::Plane;
+  }
+  static ContactKind contactKindOf(StaticKind kind) {
+    return kind == StaticKind::Box        ? ContactKind::BallBox
+           : kind == StaticKind::Cylinder ? ContactKind::BallCylinder
+                                          : ContactKind::BallPlane;
+  }
   StaticContact staticContact(int i, StaticRef ref, const Vec3& position) const;
   StaticContact staticContact(int i, StaticRef ref) const {
     return staticContact(i, ref, tracks_[i].motion.position);
@@ -270,7 +282,7 @@ class EventEngine {
   struct TouchedStatic {
     Vec3 normal;
     double restitution;
-    bool cylinder;
+    StaticKind kind;
   };
   std::vector<TouchedStatic> touchedStatics_;  // leaveTouchingStatics's, kept to save allocations
   bool restoresEnergy_ = false;

@@ -22,6 +22,11 @@ OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& pos
       report.maxPenetration = std::max(report.maxPenetration, -gap);
       escaped = escaped || gap + r < 0.0;
     }
+    for (const BoxShape& box : bodies.boxes) {
+      const double gap = box.contact(p, r).gap;
+      report.maxPenetration = std::max(report.maxPenetration, -gap);
+      escaped = escaped || gap + r < 0.0;
+    }
     if (escaped) ++report.escaped;
   }
   forEachCloseBallPair(positions, bodies.radius, 0.0, [&](int i, int j) {

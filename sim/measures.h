@@ -9,7 +9,7 @@ namespace carom {
 
 struct OverlapReport {
   double maxPenetration = 0.0;  // largest overlap of a ball with a ball, plane or cylinder
-  int escaped = 0;              // balls whose centre is behind a plane or inside a cylinder
+  int escaped = 0;              // balls whose centre is behind a plane or inside a cylinder or box
 };
 
 OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions);

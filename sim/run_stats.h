@@ -7,20 +7,37 @@
 
 namespace carom {
 
-enum class ContactKind { BallBall, BallPlane, BallCylinder };
+enum class ContactKind { BallBall, BallPlane, BallCylinder, BallBox };
 
 struct CollisionCounts {
   std::uint64_t ballBall = 0;
   std::uint64_t ballPlane = 0;
   std::uint64_t ballCylinder = 0;
-  std::uint64_t total() const { return ballBall + ballPlane + ballCylinder; }
+  std::uint64_t ballBox = 0;
+  std::uint64_t total() const { return ballBall + ballPlane + ballCylinder + ballBox; }
+  void add(ContactKind kind) {
+    switch (kind) {
+      case ContactKind::BallBall:
+        ++ballBall;
+        return;
+      case ContactKind::BallPlane:
+        ++ballPlane;
+        return;
+      case ContactKind::BallCylinder:
+        ++ballCylinder;
+        return;
+      case ContactKind::BallBox:
+        ++ballBox;
+        return;
+    }
+  }
 };
 
 struct CollisionRecord {
   double time = 0.0;
   ContactKind kind = ContactKind::BallBall;
   int ball = 0;   // index into the scene's balls
-  int other = 0;  // ball, plane or cylinder index, by kind
+  int other = 0;  // ball, plane, cylinder or box index, by kind
   Vec3 point = Vec3::Zero();
   double normalSpeed = 0.0;  // approach speed along the contact normal
 };

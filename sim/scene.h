@@ -58,6 +58,22 @@ struct Cylinder : ObjectInfo {
   friend bool operator==(const Cylinder&, const Cylinder&) = default;
 };
 
+// A turn by `degrees` about `axis` (any non-zero length), right-handed.
+struct Rotation {
+  Vec3 axis = Vec3::UnitY();
+  double degrees = 0.0;
+  friend bool operator==(const Rotation&, const Rotation&) = default;
+};
+
+// Solid cuboid around `center`, `halfExtents` along its own axes: the world's axes turned by
+// `rotation` (none: not turned).
+struct Box : ObjectInfo {
+  Vec3 center = Vec3::Zero();
+  Vec3 halfExtents = Vec3::Constant(0.5);
+  std::optional<Rotation> rotation;
+  friend bool operator==(const Box&, const Box&) = default;
+};
+
 struct World {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);
   double timeStep = 1.0 / 60.0;
@@ -72,6 +88,7 @@ struct Scene {
   World world;
   std::vector<Plane> planes;
   std::vector<Cylinder> cylinders;
+  std::vector<Box> boxes;
   std::vector<Ball> balls;
   std::string extra;  // unknown top-level keys
   friend bool operator==(const Scene&, const Scene&) = default;

@@ -3,6 +3,10 @@
 
 #include "sim/scene.h"
 
+#include <Eigen/Geometry>
+
+#include <numbers>
+
 namespace carom {
 
 struct PlaneShape {
@@ -65,6 +69,15 @@ inline PlaneShape planeShape(const Plane& plane) {
 
 inline CylinderShape cylinderShape(const Cylinder& cylinder) {
   return {cylinder.point, cylinder.axis.normalized(), cylinder.radius};
+}
+
+inline BoxShape boxShape(const Box& box) {
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  if (box.rotation)
+    axes = Eigen::AngleAxisd(box.rotation->degrees * (std::numbers::pi / 180.0),
+                             box.rotation->axis.normalized())
+               .toRotationMatrix();
+  return {box.center, axes, box.halfExtents};
 }
 
 }  // namespace carom

@@ -103,6 +103,7 @@ std::vector<std::string> Simulation::modelNotes() const {
   std::vector<std::string> notes = stepper_->notes();
   if (bodies_.cylinders.empty()) notes.push_back("no cylinders: no cylinder tests");
   if (bodies_.planes.empty()) notes.push_back("no planes: no plane tests");
+  if (bodies_.boxes.empty()) notes.push_back("no boxes: no box tests");
   if (world_.method != Method::Discrete) {
     if (world_.gravity.isZero())
       notes.push_back("no gravity: nothing comes to rest");

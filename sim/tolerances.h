@@ -41,6 +41,7 @@ inline constexpr double kMinDirectionLength = 1e-100;
 inline constexpr std::size_t kMaxBalls = 1'000'000;
 inline constexpr std::size_t kMaxPlanes = 10'000;
 inline constexpr std::size_t kMaxCylinders = 10'000;
+inline constexpr std::size_t kMaxBoxes = 10'000;
 
 }  // namespace carom::tolerance
 

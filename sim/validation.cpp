@@ -170,6 +170,20 @@ bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* error
   return check.ok();
 }
 
+bool checkBox(const Box& box, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors);
+  const std::string prefix = indexed("boxes", index);
+  check.vector(prefix + ".center", box.center);
+  for (int k = 0; k < 3; ++k)
+    check.radius(prefix + ".halfExtents[" + std::to_string(k) + "]", box.halfExtents[k]);
+  if (box.rotation) {
+    check.direction(prefix + ".rotation.axis", box.rotation->axis);
+    check.finiteBounded(prefix + ".rotation.degrees", box.rotation->degrees);
+  }
+  check.info(prefix, box);
+  return check.ok();
+}
+
 bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
   FieldChecker check(errors);
   const std::string prefix = indexed("balls", index);
@@ -208,6 +222,19 @@ struct IndexedPlane {
 struct IndexedCylinder {
   std::size_t index;
   CylinderShape shape;
+};
+
+struct IndexedBox {
+  std::size_t index;
+  BoxShape shape;
+};
+
+// The shapes that passed their own checks, for the overlap tests.
+struct StaticShapes {
+  std::vector<IndexedPlane> planes;
+  std::vector<IndexedCylinder> cylinders;
+  std::vector<IndexedBox> boxes;
+  bool empty() const { return planes.empty() && cylinders.empty() && boxes.empty(); }
 };
 
 // Finds the balls that overlap earlier balls with a grid per power-of-two size class: each ball
@@ -362,8 +389,24 @@ void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
                    formatDepth(radiusSum - distance));
 }
 
-void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
-                const std::vector<IndexedCylinder>& cylinders, ErrorList& errors) {
+void checkBallAgainstBox(const Ball& ball, std::size_t ballIndex, const IndexedBox& box,
+                         ErrorList& errors) {
+  const double depth = -box.shape.contact(ball.position, ball.radius).gap;
+  if (overlaps(depth, ball.radius))
+    errors.add(indexed("balls", ballIndex) + ".position",
+               "overlaps " + indexed("boxes", box.index) + " by " + formatDepth(depth));
+}
+
+void checkBallAgainstStatics(const Ball& ball, std::size_t ballIndex, const StaticShapes& shapes,
+                             ErrorList& errors) {
+  for (const IndexedPlane& plane : shapes.planes)
+    checkBallAgainstPlane(ball, ballIndex, plane, errors);
+  for (const IndexedCylinder& cylinder : shapes.cylinders)
+    checkBallAgainstCylinder(ball, ballIndex, cylinder, errors);
+  for (const IndexedBox& box : shapes.boxes) checkBallAgainstBox(ball, ballIndex, box, errors);
+}
+
+void checkBalls(const Scene& scene, const StaticShapes& shapes, ErrorList& errors) {
   const auto& balls = scene.balls;
   std::vector<bool> usable(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) usable[i] = checkBall(balls[i], i, nullptr);
@@ -374,9 +417,7 @@ void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
       checkBall(balls[i], i, &errors);
       continue;
     }
-    for (const IndexedPlane& plane : planes) checkBallAgainstPlane(balls[i], i, plane, errors);
-    for (const IndexedCylinder& cylinder : cylinders)
-      checkBallAgainstCylinder(balls[i], i, cylinder, errors);
+    checkBallAgainstStatics(balls[i], i, shapes, errors);
     for (const auto& overlap : finder.overlapsOf(i))
       errors.add(
           indexed("balls", i) + ".position",
@@ -387,6 +428,7 @@ void checkBalls(const Scene& scene, const std::vector<IndexedPlane>& planes,
 bool checkCounts(const Scene& scene, ErrorList& errors) {
   bool countsOk = checkCount("planes", scene.planes.size(), tol::kMaxPlanes, errors);
   countsOk &= checkCount("cylinders", scene.cylinders.size(), tol::kMaxCylinders, errors);
+  countsOk &= checkCount("boxes", scene.boxes.size(), tol::kMaxBoxes, errors);
   countsOk &= checkCount("balls", scene.balls.size(), tol::kMaxBalls, errors);
   return countsOk;
 }
@@ -408,15 +450,17 @@ std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxEr
 
   checkWorld(scene.world, errors);
 
-  // Only well-formed planes and cylinders take part in overlap tests; the others are reported.
-  std::vector<IndexedPlane> planes;
+  // Only well-formed shapes take part in overlap tests; the others are reported.
+  StaticShapes shapes;
   for (std::size_t i = 0; i < scene.planes.size() && !errors.full(); ++i)
-    if (checkPlane(scene.planes[i], i, &errors)) planes.push_back({i, planeShape(scene.planes[i])});
-  std::vector<IndexedCylinder> cylinders;
+    if (checkPlane(scene.planes[i], i, &errors))
+      shapes.planes.push_back({i, planeShape(scene.planes[i])});
   for (std::size_t i = 0; i < scene.cylinders.size() && !errors.full(); ++i)
     if (checkCylinder(scene.cylinders[i], i, &errors))
-      cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
-  if (!errors.full()) checkBalls(scene, planes, cylinders, errors);
+      shapes.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+  for (std::size_t i = 0; i < scene.boxes.size() && !errors.full(); ++i)
+    if (checkBox(scene.boxes[i], i, &errors)) shapes.boxes.push_back({i, boxShape(scene.boxes[i])});
+  if (!errors.full()) checkBalls(scene, shapes, errors);
   return errors.take();
 }
 
@@ -428,7 +472,7 @@ std::vector<ValidationError> validateWorld(const World& world, std::size_t maxEr
 
 std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,
                                              std::size_t maxErrors) {
-  for (auto* list : {&objects.planes, &objects.cylinders, &objects.balls}) {
+  for (auto* list : {&objects.planes, &objects.cylinders, &objects.boxes, &objects.balls}) {
     std::sort(list->begin(), list->end());
     list->erase(std::unique(list->begin(), list->end()), list->end());
   }
@@ -436,7 +480,8 @@ std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndi
   // them all), the whole scene's check costs less, being a grid linear in the balls, and gives
   // the same answer: the rest of the scene was valid, and so is its world.
   if (objects.balls.size() > kMostBallsCheckedPairwise) return validateScene(scene, maxErrors);
-  // Every problem is gathered, then put in file order (planes, cylinders, balls, each by index)
+  // Every problem is gathered, then put in file order (planes, cylinders, boxes, balls, each by
+  // index)
   // so that the first one is the one validateScene would report first.
   struct Found {
     int list;
@@ -453,57 +498,61 @@ std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndi
     if (!checkCounts(scene, errors)) return errors.take();
   }
 
-  // Changed planes and cylinders against every ball.
-  std::vector<IndexedPlane> changedPlanes;
+  // Changed shapes against every ball.
+  constexpr int kBallList = 3;
+  StaticShapes changed;
   for (std::size_t i : objects.planes) {
     if (i >= scene.planes.size()) continue;
     ErrorList errors(kAll);
     if (checkPlane(scene.planes[i], i, &errors))
-      changedPlanes.push_back({i, planeShape(scene.planes[i])});
+      changed.planes.push_back({i, planeShape(scene.planes[i])});
     collect(0, i, errors);
   }
-  std::vector<IndexedCylinder> changedCylinders;
   for (std::size_t i : objects.cylinders) {
     if (i >= scene.cylinders.size()) continue;
     ErrorList errors(kAll);
     if (checkCylinder(scene.cylinders[i], i, &errors))
-      changedCylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+      changed.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
     collect(1, i, errors);
   }
+  for (std::size_t i : objects.boxes) {
+    if (i >= scene.boxes.size()) continue;
+    ErrorList errors(kAll);
+    if (checkBox(scene.boxes[i], i, &errors))
+      changed.boxes.push_back({i, boxShape(scene.boxes[i])});
+    collect(2, i, errors);
+  }
   const auto& balls = scene.balls;
-  if (!changedPlanes.empty() || !changedCylinders.empty()) {
+  if (!changed.empty()) {
     for (std::size_t i = 0; i < balls.size(); ++i) {
       if (contains(objects.balls, i)) continue;  // checked in full below
       ErrorList errors(kAll);
-      for (const IndexedPlane& plane : changedPlanes)
-        checkBallAgainstPlane(balls[i], i, plane, errors);
-      for (const IndexedCylinder& cylinder : changedCylinders)
-        checkBallAgainstCylinder(balls[i], i, cylinder, errors);
-      collect(2, i, errors);
+      checkBallAgainstStatics(balls[i], i, changed, errors);
+      collect(kBallList, i, errors);
     }
   }
 
   // Changed balls against everything. The unchanged objects are valid, so only the changed
-  // planes and cylinders and balls can fail their own checks.
-  std::vector<IndexedPlane> planes;
+  // shapes and balls can fail their own checks.
+  StaticShapes shapes;
   for (std::size_t i = 0; i < scene.planes.size(); ++i)
     if (!contains(objects.planes, i) || checkPlane(scene.planes[i], i, nullptr))
-      planes.push_back({i, planeShape(scene.planes[i])});
-  std::vector<IndexedCylinder> cylinders;
+      shapes.planes.push_back({i, planeShape(scene.planes[i])});
   for (std::size_t i = 0; i < scene.cylinders.size(); ++i)
     if (!contains(objects.cylinders, i) || checkCylinder(scene.cylinders[i], i, nullptr))
-      cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+      shapes.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+  for (std::size_t i = 0; i < scene.boxes.size(); ++i)
+    if (!contains(objects.boxes, i) || checkBox(scene.boxes[i], i, nullptr))
+      shapes.boxes.push_back({i, boxShape(scene.boxes[i])});
   for (std::size_t i : objects.balls) {
     if (i >= balls.size()) continue;
     ErrorList errors(kAll);
     if (!checkBall(balls[i], i, &errors)) {
-      collect(2, i, errors);
+      collect(kBallList, i, errors);
       continue;
     }
-    for (const IndexedPlane& plane : planes) checkBallAgainstPlane(balls[i], i, plane, errors);
-    for (const IndexedCylinder& cylinder : cylinders)
-      checkBallAgainstCylinder(balls[i], i, cylinder, errors);
-    collect(2, i, errors);
+    checkBallAgainstStatics(balls[i], i, shapes, errors);
+    collect(kBallList, i, errors);
     for (std::size_t j = 0; j < balls.size(); ++j) {
       // A pair of changed balls is looked at once, from its earlier ball.
       if (j == i || (j < i && contains(objects.balls, j))) continue;
@@ -515,7 +564,7 @@ std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndi
       ErrorList pair(kAll);
       pair.add(indexed("balls", std::max(i, j)) + ".position",
                "overlaps " + indexed("balls", std::min(i, j)) + " by " + formatDepth(depth));
-      collect(2, std::max(i, j), pair);
+      collect(kBallList, std::max(i, j), pair);
     }
   }
 

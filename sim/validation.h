@@ -16,8 +16,9 @@ struct ValidationError {
 
 // All problems of the scene, in file order (at most `maxErrors`); empty when the scene is valid.
 // Checks every number is finite and within the limits of tolerances.h, radii and masses are
-// positive, restitution is in [0, 1], normals and axes are not zero-length, colours are
-// "#rrggbb", and that no ball overlaps another ball, a plane or a cylinder (touching is fine).
+// positive, as are a box's half extents, restitution is in [0, 1], normals and axes (also a
+// box's rotation axis) are not zero-length, colours are "#rrggbb", and that no ball overlaps
+// another ball, a plane, a cylinder or a box (touching is fine).
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors = 20);
 
 // The same rules for an edit, without looking at the whole scene again: `scene` was valid
@@ -27,6 +28,7 @@ std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxEr
 struct SceneObjectIndices {
   std::vector<std::size_t> planes;
   std::vector<std::size_t> cylinders;
+  std::vector<std::size_t> boxes;
   std::vector<std::size_t> balls;
 };
 std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,

@@ -154,8 +154,8 @@ class TestBoxContact : public QObject {
   }
 
   void thrownSidewaysAcrossTheTop() {
-    // Slides over the top face at just above touching and falls onto the far side? No: it flies
-    // a parabola from above the top and lands on it where the closed form says.
+    // Thrown up and along above a long top face: it lands on the face where its parabola
+    // comes down to touching height.
     const BoxShape box = makeBox(Vec3::Zero(), {3, 0.5, 1});
     const double r = 0.1;
     const BallPath ball{{-2.5, 1.6, 0}, {1, 2, 0}, kGravity};

@@ -343,6 +343,22 @@ class TestCli : public QObject {
     QVERIFY2(QJsonDocument::fromJson(run.out).isObject(), run.out.constData());
   }
 
+  // A version 2 scene with a box: validated, run, and its contact counted as ball-box.
+  void runCountsBallBoxContacts() {
+    const QString path = writeRowFile(sceneText(R"(
+        "boxes": [{"center": [0, 0, 0], "halfExtents": [1, 0.5, 1], "rotation": [0, 1, 0, 30]}],
+        "balls": [{"position": [0.2, 2, 0.1], "radius": 0.1}])",
+                                                2));
+    QVERIFY(!path.isEmpty());
+    const CliRun validate = runCli({"validate", path});
+    VERIFY_EXIT(validate, 0);
+    const CliRun run = runCli({"run", path, "--duration", "0.7", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    QCOMPARE(report["collisions"].toObject()["ballBox"].toDouble(), 1.0);
+    QCOMPARE(report["escaped"].toDouble(), 0.0);
+  }
+
   // --- run ---
 
   void runJsonMagicRoom() {
@@ -365,7 +381,7 @@ class TestCli : public QObject {
 
     const QJsonObject collisions = report["collisions"].toObject();
     double total = 0.0;
-    for (const char* kind : {"ballBall", "ballPlane", "ballCylinder"}) {
+    for (const char* kind : {"ballBall", "ballPlane", "ballCylinder", "ballBox"}) {
       QVERIFY2(isCount(collisions[kind]), kind);
       total += collisions[kind].toDouble();
     }
@@ -679,7 +695,7 @@ class TestCli : public QObject {
                                      << QStringList{"object", "array"};
     QTest::newRow("no format") << QByteArray(R"({"version": 1})")
                                << QStringList{"format", "missing"};
-    QTest::newRow("newer version") << sceneText("", 2) << QStringList{"version 2", "newer"};
+    QTest::newRow("newer version") << sceneText("", 3) << QStringList{"version 3", "newer"};
     QTest::newRow("wrong type") << sceneText(
                                        R"("balls": [{"position": [0, 0, 0], "radius": "big"}])")
                                 << QStringList{"balls[0].radius", "number", "string"};

@@ -39,6 +39,11 @@ QByteArray document(const QByteArray& body) {
   return text + "}";
 }
 
+// The same in version 2, which adds boxes.
+QByteArray documentVersion2(const QByteArray& body) {
+  return R"({"format": "carom-scene", "version": 2, )" + body + "}";
+}
+
 carom::io::SceneLoadResult parse(const QByteArray& json) {
   return carom::io::parseScene(json, kSource);
 }
@@ -128,6 +133,16 @@ QString difference(const Scene& a, const Scene& b) {
         !same(ca, cb))
       return QString("cylinders[%1]").arg(i);
   }
+  if (a.boxes.size() != b.boxes.size()) return "boxes count";
+  for (std::size_t i = 0; i < a.boxes.size(); ++i) {
+    const auto &xa = a.boxes[i], &xb = b.boxes[i];
+    const bool rotationsSame = xa.rotation.has_value() == xb.rotation.has_value() &&
+                               (!xa.rotation || (same(xa.rotation->axis, xb.rotation->axis) &&
+                                                 same(xa.rotation->degrees, xb.rotation->degrees)));
+    if (!same(xa.center, xb.center) || !same(xa.halfExtents, xb.halfExtents) || !rotationsSame ||
+        !same(xa, xb))
+      return QString("boxes[%1]").arg(i);
+  }
   if (a.balls.size() != b.balls.size()) return "balls count";
   for (std::size_t i = 0; i < a.balls.size(); ++i) {
     const auto &ba = a.balls[i], &bb = b.balls[i];
@@ -176,8 +191,26 @@ class SceneFileTest : public QObject {
         "version: must be at least 1 (got 0)");
     row("version negative", R"({"format": "carom-scene", "version": -3})",
         "version: must be at least 1 (got -3)");
-    row("version newer", R"({"format": "carom-scene", "version": 2, "balls": 5})",
-        "version: version 2 was written by a newer Carom; this one reads version 1");
+    row("version newer", R"({"format": "carom-scene", "version": 3, "balls": 5})",
+        "version: version 3 was written by a newer Carom; this one reads version 2");
+    // Boxes (version 2).
+    row("box without half extents", documentVersion2(R"("boxes": [{"center": [0,0,0]}])"),
+        "boxes[0].halfExtents: is required but missing");
+    row("box rotation short",
+        documentVersion2(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,1,1],)"
+                         R"( "rotation": [0,1,0]}])"),
+        "boxes[0].rotation: expected an array of 4 numbers, got an array of 3 values");
+    row("box half extent zero",
+        documentVersion2(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,0,1]}])"),
+        "boxes[0].halfExtents[1]: must be positive (got 0)");
+    row("box rotation axis zero",
+        documentVersion2(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,1,1],)"
+                         R"( "rotation": [0,0,0,30]}])"),
+        "boxes[0].rotation.axis: must not be zero-length");
+    row("ball overlaps box",
+        documentVersion2(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,1,1]}],)"
+                         R"( "balls": [{"position": [0,1.25,0], "radius": 0.5}])"),
+        "balls[0].position: overlaps boxes[0] by 0.25");
 
     // Wrong types and shapes.
     row("world not an object", document(R"("world": [])"),
@@ -469,6 +502,48 @@ class SceneFileTest : public QObject {
     const carom::io::SceneLoadResult result = parse(carom::io::serializeScene(scene));
     QVERIFY2(result.scene, qPrintable(result.error));
     QCOMPARE(result.scene->balls.at(0).name, ball.name);
+  }
+
+  // Boxes are version 2: every field is read and written back; a scene without boxes is still
+  // written as version 1, and in a version 1 file a "boxes" key is one it does not know.
+  void boxesRoundTripInVersionTwo() {
+    const carom::io::SceneLoadResult result =
+        parse(documentVersion2(R"("boxes": [{"center": [1,2,3], "halfExtents": [0.5,0.25,2],)"
+                               R"( "rotation": [0,1,1,37.5], "restitution": 0.75, "name": "step",)"
+                               " \"color\": \"#a0b0c0\", \"texture\": \"oak\"},"
+                               R"( {"center": [-4,0,0], "halfExtents": [1,1,1]}])"));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    const Scene& scene = *result.scene;
+    QCOMPARE(scene.boxes.size(), std::size_t{2});
+    const carom::Box& box = scene.boxes[0];
+    QVERIFY(same(box.center, Vec3(1, 2, 3)));
+    QVERIFY(same(box.halfExtents, Vec3(0.5, 0.25, 2)));
+    QVERIFY(box.rotation && same(box.rotation->axis, Vec3(0, 1, 1)) &&
+            same(box.rotation->degrees, 37.5));
+    QVERIFY(same(box.restitution, 0.75));
+    QCOMPARE(box.name, std::string("step"));
+    QCOMPARE(box.color, std::string("#a0b0c0"));
+    QCOMPARE(box.extra, std::string(R"({"texture":"oak"})"));
+    QVERIFY(!scene.boxes[1].rotation);
+    const QByteArray saved = carom::io::serializeScene(scene);
+    QVERIFY(saved.contains("\"version\": 2,"));
+    QVERIFY(saved.contains("\"rotation\": [0, 1, 1, 37.5]"));
+    const carom::io::SceneLoadResult again = parse(saved);
+    QVERIFY2(again.scene, qPrintable(again.error));
+    QCOMPARE(difference(*again.scene, scene), QString());
+    QCOMPARE(carom::io::serializeScene(*again.scene), saved);
+
+    Scene withoutBoxes = scene;
+    withoutBoxes.boxes.clear();
+    const QByteArray older = carom::io::serializeScene(withoutBoxes);
+    QVERIFY(older.contains("\"version\": 1,") && !older.contains("boxes"));
+
+    const carom::io::SceneLoadResult versionOne =
+        parse(document(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,1,1]}])"));
+    QVERIFY2(versionOne.scene, qPrintable(versionOne.error));
+    QVERIFY(versionOne.scene->boxes.empty());
+    QCOMPARE(versionOne.scene->extra,
+             std::string(R"({"boxes":[{"center":[0,0,0],"halfExtents":[1,1,1]}]})"));
   }
 
   void savedTextIsIndentedVersionOne() {

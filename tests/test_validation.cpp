@@ -36,7 +36,8 @@ Ball makeBall(const Vec3& position, double radius) {
 }
 
 // A valid scene with one object of each kind before the balls that the cases edit: a floor at
-// y = 0, a cylinder along z through (5, 1, 0) of radius 0.5, and two balls of radius 0.5.
+// y = 0, a cylinder along z through (5, 1, 0) of radius 0.5, a cube of side 1 around (-5, 1, 0)
+// and two balls of radius 0.5.
 Scene baseScene() {
   Scene scene;
   Plane floor;
@@ -48,6 +49,10 @@ Scene baseScene() {
   post.axis = Vec3(0, 0, 1);
   post.radius = 0.5;
   scene.cylinders.push_back(post);
+  carom::Box cube;
+  cube.center = Vec3(-5, 1, 0);
+  cube.halfExtents = Vec3(0.5, 0.5, 0.5);
+  scene.boxes.push_back(cube);
   scene.balls.push_back(makeBall(Vec3(0, 1, 0), 0.5));
   scene.balls.push_back(makeBall(Vec3(2, 1, 0), 0.5));
   return scene;
@@ -250,6 +255,45 @@ class ValidationTest : public QObject {
         "ball inside cylinder", [](Scene& s) { s.balls[1].position = Vec3(5, 1, -3); },
         "balls[1].position: overlaps cylinders[0] by 1");
     row(
+        "box centre nan", [](Scene& s) { s.boxes[0].center.y() = kNaN; },
+        "boxes[0].center: must be finite");
+    row(
+        "box half extent negative", [](Scene& s) { s.boxes[0].halfExtents.z() = -1; },
+        "boxes[0].halfExtents[2]: must be positive (got -1)");
+    row(
+        "box half extent tiny", [](Scene& s) { s.boxes[0].halfExtents.x() = 1e-13; },
+        "boxes[0].halfExtents[0]: must be at least 1e-12 (got 1e-13)");
+    row(
+        "box rotation axis zero",
+        [](Scene& s) {
+          s.boxes[0].rotation = carom::Rotation{Vec3::Zero(), 30};
+        },
+        "boxes[0].rotation.axis: must not be zero-length");
+    row(
+        "box rotation degrees inf",
+        [](Scene& s) {
+          s.boxes[0].rotation = carom::Rotation{Vec3::UnitX(), kInf};
+        },
+        "boxes[0].rotation.degrees: must be finite");
+    row(
+        "box restitution high", [](Scene& s) { s.boxes[0].restitution = 2; },
+        "boxes[0].restitution: must be between 0 and 1 (got 2)");
+    row(
+        "ball overlaps box", [](Scene& s) { s.balls[1].position = Vec3(-4.25, 1, 0); },
+        "balls[1].position: overlaps boxes[0] by 0.25");
+    row(
+        "ball inside box", [](Scene& s) { s.balls[1].position = Vec3(-5, 1.25, 0); },
+        "balls[1].position: overlaps boxes[0] by 0.75");
+    row(
+        "ball over a turned box's edge",
+        [](Scene& s) {
+          // Turned 90 degrees about y the cube is the same cube: the same overlap.
+          s.boxes[0].rotation = carom::Rotation{Vec3(0, 3, 0), 90};
+          s.balls[1].position = Vec3(-4.25, 1, 0);
+        },
+        "balls[1].position: overlaps boxes[0] by 0.25");
+
+    row(
         "earlier ball overlaps later", [](Scene& s) { s.balls[0].position = Vec3(1.2, 1, 0); },
         "balls[1].position: overlaps balls[0] by 0.2");
     row(
@@ -321,6 +365,9 @@ class ValidationTest : public QObject {
     QTest::newRow("cylinders") << SceneEdit([](Scene& s) {
       s.cylinders.resize(carom::tolerance::kMaxCylinders + 1);
     }) << "cylinders: must have at most 10000 entries (got 10001)";
+    QTest::newRow("boxes") << SceneEdit([](Scene& s) {
+      s.boxes.resize(carom::tolerance::kMaxBoxes + 1);
+    }) << "boxes: must have at most 10000 entries (got 10001)";
   }
 
   // Counts are checked before anything else, so even a million coincident balls are refused at
@@ -463,6 +510,11 @@ class ValidationTest : public QObject {
     post.point = Vec3(5, 0, 5);
     post.radius = 0.5;
     valid.cylinders.push_back(post);
+    carom::Box block;
+    block.center = Vec3(2, 1, 7);
+    block.halfExtents = Vec3(0.8, 0.4, 0.6);
+    block.rotation = carom::Rotation{Vec3(1, 1, 0), 25};
+    valid.boxes.push_back(block);
     while (valid.balls.size() < 200) {
       Ball ball = makeBall(Vec3(unit(random) * 9, 0.3 + unit(random) * 5, unit(random) * 9),
                            0.1 + 0.2 * unit(random));
@@ -488,6 +540,11 @@ class ValidationTest : public QObject {
         } else if (what < 0.65) {
           edited.balls.push_back(makeBall(randomPoint(), 0.2));
           touched.balls.push_back(edited.balls.size() - 1);
+        } else if (what < 0.7) {
+          edited.boxes[0].center = randomPoint();
+          edited.boxes[0].halfExtents = Vec3(0.2 + unit(random), 0.2 + unit(random), 0.3);
+          if (unit(random) < 0.1) edited.boxes[0].halfExtents.y() = -0.5;
+          touched.boxes.push_back(0);
         } else if (what < 0.8) {
           const std::size_t i = std::size_t(unit(random) * edited.planes.size());
           edited.planes[i].point.y() = unit(random) * 0.6 - 0.3;

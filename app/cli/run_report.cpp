@@ -179,7 +179,8 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
   const RunStats& stats = sim.stats();
   QJsonObject collisions{{"ballBall", double(stats.collisions.ballBall)},
                          {"ballPlane", double(stats.collisions.ballPlane)},
-                         {"ballCylinder", double(stats.collisions.ballCylinder)}};
+                         {"ballCylinder", double(stats.collisions.ballCylinder)},
+                         {"ballBox", double(stats.collisions.ballBox)}};
   QJsonArray balls;
   for (const BallState& s : sim.state())
     balls.append(QJsonObject{{"position", vectorJson(s.position)},
@@ -228,7 +229,8 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
   out << "wall: " << result.wallSeconds << " s: set-up " << result.setupSeconds << " s, run "
       << result.runSeconds << " s, measurements " << result.measureSeconds << " s\n";
   out << "collisions: ball-ball " << stats.collisions.ballBall << ", ball-plane "
-      << stats.collisions.ballPlane << ", ball-cylinder " << stats.collisions.ballCylinder << "\n";
+      << stats.collisions.ballPlane << ", ball-cylinder " << stats.collisions.ballCylinder
+      << ", ball-box " << stats.collisions.ballBox << "\n";
   const double drift = result.initialEnergy != 0.0 ? (result.finalEnergy - result.initialEnergy) /
                                                          std::abs(result.initialEnergy)
                                                    : result.finalEnergy - result.initialEnergy;

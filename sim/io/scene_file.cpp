@@ -24,13 +24,19 @@
 namespace carom::io {
 namespace {
 
-constexpr int kFormatVersion = 1;
+// The newest version this Carom reads and writes. A scene with no box is still written as
+// version 1, so that files older Carom can read stay readable by it.
+constexpr int kFormatVersion = 2;
+constexpr int kFirstVersionWithBoxes = 2;
 constexpr char kFormatName[] = "carom-scene";
 
-const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", "balls"};
+const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", "boxes", "balls"};
+// Version 1 had no boxes: a "boxes" key there is one it does not know, kept as it is.
+const QStringList kTopKeysVersion1{"format", "version", "world", "planes", "cylinders", "balls"};
 const QStringList kWorldKeys{"gravity", "timeStep", "restitution", "method", "integrator"};
 const QStringList kPlaneKeys{"name", "point", "normal", "restitution", "color"};
 const QStringList kCylinderKeys{"name", "point", "axis", "radius", "restitution", "color"};
+const QStringList kBoxKeys{"name", "center", "halfExtents", "rotation", "restitution", "color"};
 const QStringList kBallKeys{"name", "position",    "velocity", "radius",
                             "mass", "restitution", "color"};
 
@@ -110,18 +116,21 @@ class ObjectReader {
     return number(key);
   }
 
-  Vec3 vector(const QString& key) const {
+  template <int Count>
+  Eigen::Matrix<double, Count, 1> numbers(const QString& key) const {
     const QString path = pathOf(key);
     const QJsonValue value = required(key);
-    const QString expected = "expected an array of 3 numbers, got ";
+    const QString expected = QString("expected an array of %1 numbers, got ").arg(Count);
     if (!value.isArray()) fail(path, expected + describeType(value));
     const QJsonArray array = value.toArray();
-    if (array.size() != 3)
+    if (array.size() != Count)
       fail(path, expected + "an array of " + QString::number(array.size()) +
                      (array.size() == 1 ? " value" : " values"));
-    return Vec3(toNumber(array[0], element(path, 0)), toNumber(array[1], element(path, 1)),
-                toNumber(array[2], element(path, 2)));
+    Eigen::Matrix<double, Count, 1> result;
+    for (int k = 0; k < Count; ++k) result[k] = toNumber(array[k], element(path, k));
+    return result;
   }
+  Vec3 vector(const QString& key) const { return numbers<3>(key); }
   Vec3 vector(const QString& key, const Vec3& fallback) const {
     return has(key) ? vector(key) : fallback;
   }
@@ -188,7 +197,8 @@ void readInfo(const ObjectReader& reader, ObjectInfo& info) {
   info.extra = reader.extra();
 }
 
-void checkFormatAndVersion(const ObjectReader& top) {
+// Returns the version.
+int checkFormatAndVersion(const ObjectReader& top) {
   const QJsonValue format = top.required("format");
   if (format.toString() != kFormatName)
     fail("format", "expected " + quoted(kFormatName) + ", got " +
@@ -204,6 +214,7 @@ void checkFormatAndVersion(const ObjectReader& top) {
     fail("version", QString("version %1 was written by a newer Carom; this one reads version %2")
                         .arg(text)
                         .arg(kFormatVersion));
+  return static_cast<int>(number);
 }
 
 template <typename Value>
@@ -236,9 +247,10 @@ World readWorld(const QJsonObject& object) {
 }
 
 Scene readScene(const QJsonObject& object) {
-  const ObjectReader top(object, QString(), kTopKeys);
   // Format and version first: a newer file may mean something else by its other fields.
-  checkFormatAndVersion(top);
+  const int version = checkFormatAndVersion(ObjectReader(object, QString(), kTopKeys));
+  const ObjectReader top(object, QString(),
+                         version < kFirstVersionWithBoxes ? kTopKeysVersion1 : kTopKeys);
 
   Scene scene;
   if (top.has("world")) scene.world = readWorld(top.object("world"));
@@ -260,6 +272,19 @@ Scene readScene(const QJsonObject& object) {
                 readInfo(reader, cylinder);
                 scene.cylinders.push_back(std::move(cylinder));
               });
+  if (version >= kFirstVersionWithBoxes)
+    top.forEach("boxes", tolerance::kMaxBoxes, [&](const QJsonObject& item, const QString& path) {
+      const ObjectReader reader(item, path, kBoxKeys);
+      Box box;
+      box.center = reader.vector("center");
+      box.halfExtents = reader.vector("halfExtents");
+      if (reader.has("rotation")) {
+        const Eigen::Vector4d rotation = reader.numbers<4>("rotation");
+        box.rotation = Rotation{rotation.head<3>(), rotation[3]};
+      }
+      readInfo(reader, box);
+      scene.boxes.push_back(std::move(box));
+    });
   top.forEach("balls", tolerance::kMaxBalls, [&](const QJsonObject& item, const QString& path) {
     const ObjectReader reader(item, path, kBallKeys);
     const Ball defaults;
@@ -496,7 +521,7 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
 QByteArray serializeScene(const Scene& scene) {
   JsonFields top;
   top.add("format", jsonString(kFormatName));
-  top.add("version", QByteArray::number(kFormatVersion));
+  top.add("version", QByteArray::number(scene.boxes.empty() ? 1 : kFirstVersionWithBoxes));
   // Unknown top-level keys such as "units" go right after the header, where a reader looks.
   top.addExtra(scene.extra, kTopKeys);
 
@@ -532,6 +557,24 @@ QByteArray serializeScene(const Scene& scene) {
     cylinders << fields.oneLine();
   }
   top.add("cylinders", listText(cylinders));
+
+  if (!scene.boxes.empty()) {
+    QByteArrayList boxes;
+    for (const Box& box : scene.boxes) {
+      JsonFields fields = startFields(box);
+      fields.add("center", jsonVector(box.center));
+      fields.add("halfExtents", jsonVector(box.halfExtents));
+      if (box.rotation)
+        fields.add("rotation", '[' + numberText(box.rotation->axis.x()) + ", " +
+                                   numberText(box.rotation->axis.y()) + ", " +
+                                   numberText(box.rotation->axis.z()) + ", " +
+                                   numberText(box.rotation->degrees) + ']');
+      fields.addInfo(box);
+      fields.addExtra(box.extra, kBoxKeys);
+      boxes << fields.oneLine();
+    }
+    top.add("boxes", listText(boxes));
+  }
 
   QByteArrayList balls;
   for (const Ball& ball : scene.balls) {
