@@ -10,3 +10,4 @@ shoot() {  # shoot NAME SCENE SECONDS
 shoot magic-room resources/scenes/magic-room.json 3
 shoot galton-board resources/scenes/galton-board.json 4
 shoot inelastic-pile resources/scenes/inelastic-pile.json 2
+shoot staircase resources/scenes/staircase.json 1

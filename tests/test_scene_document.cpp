@@ -107,6 +107,31 @@ class TestSceneDocument : public QObject {
     QVERIFY(document_.scene() == rowOfBalls());
   }
 
+  // Boxes ride along with every edit (the editor does not edit them yet): deleting and moving
+  // balls leaves them as they were, undo gives back the scene whole, and a ball moved into a box
+  // is refused with the validation's message.
+  void boxesSurviveEditsAndStopOverlaps() {
+    Scene withBox = rowOfBalls();
+    carom::Box box;
+    box.center = Vec3(0, 1, 4);
+    box.halfExtents = Vec3(1, 1, 1);
+    box.rotation = carom::Rotation{Vec3(0, 1, 0), 15};
+    box.name = "crate";
+    withBox.boxes.push_back(box);
+    document_.reset(withBox, {});
+    QCOMPARE(document_.removeObjects({{ObjectKind::Ball, 1}}, "Delete"), QString());
+    const Selection moved{{ObjectKind::Ball, 0}};
+    Scene values = carom::editor::extract(document_.scene(), moved);
+    values.balls[0].position = Vec3(0, 1, 1.5);
+    QCOMPARE(document_.editObjects(moved, values, "Move"), QString());
+    QVERIFY(document_.scene().boxes == withBox.boxes);
+    values.balls[0].position = Vec3(0.2, 1, 3.4);
+    QVERIFY(document_.editObjects(moved, values, "Into the box").contains("overlaps boxes[0]"));
+    document_.undoStack()->undo();
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == withBox);
+  }
+
   void removeAndUndoRestoreEveryField() {
     ChangeLog log(document_);
     const Selection doomed{{ObjectKind::Ball, 0},

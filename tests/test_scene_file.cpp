@@ -601,7 +601,7 @@ class SceneFileTest : public QObject {
   void bundledScenesExist() {
     const QStringList names = QDir(sceneDir()).entryList({"*.json"}, QDir::Files);
     for (const char* name : {"magic-room.json", "newtons-cradle.json", "gas-box.json",
-                             "galton-board.json", "inelastic-pile.json"})
+                             "galton-board.json", "inelastic-pile.json", "staircase.json"})
       QVERIFY2(names.contains(name), name);
   }
 

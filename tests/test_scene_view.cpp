@@ -136,6 +136,7 @@ class TestSceneView : public QObject {
   void renderSceneDefaultsColours();
   void renderSceneHoldsEveryObject();
   void ballsShowTheirColours();
+  void boxesAreDrawnSolid();
   void movingABallMovesItsColour();
   void nearerBallHidesFartherOne_data();
   void nearerBallHidesFartherOne();
@@ -344,6 +345,35 @@ void TestSceneView::ballsShowTheirColours() {
   QVERIFY2(!hasAnyBallHue(corner), qPrintable(describe(corner)));
   const QRgb floor = pixelAt(view, image, Vec3(-1.5, 0, 1.5));
   QVERIFY2(!hasAnyBallHue(floor), qPrintable(describe(floor)));
+}
+
+// A blue box, turned, stands on the floor in front of the red ball: its top face and its front
+// face show blue, and the floor beside it does not. The render scene keeps its own axes.
+void TestSceneView::boxesAreDrawnSolid() {
+  carom::Scene scene = testScene();
+  carom::Box box;
+  box.center = Vec3(-1.5, 0.6, 1.2);
+  box.halfExtents = Vec3(0.6, 0.6, 0.3);
+  box.rotation = carom::Rotation{Vec3::UnitY(), 20};
+  box.color = "#0000ff";
+  scene.boxes.push_back(box);
+  const RenderScene render = makeRenderScene(scene);
+  QCOMPARE(render.boxes.size(), std::size_t{1});
+  QVERIFY(std::abs(render.boxes[0].halfAxes[0].norm() - 0.6) < 1e-12);
+  QVERIFY(std::abs(render.boxes[0].halfAxes[1].y() - 0.6) < 1e-12);
+  QCOMPARE(render.boxes[0].color, QColor(0, 0, 255));
+
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QImage image = view.grabFramebuffer();
+  // The top face's middle and the middle of the face towards the camera (+z).
+  for (const Vec3& onBox : {Vec3(-1.5, 1.2, 1.2), Vec3(-1.5, 0.6, 1.5)}) {
+    const QRgb pixel = pixelAt(view, image, onBox);
+    QVERIFY2(hasHue(pixel, Blue), qPrintable(describe(pixel)));
+  }
+  const QRgb floor = pixelAt(view, image, Vec3(0.8, 0, 1.6));
+  QVERIFY2(!hasHue(floor, Blue), qPrintable(describe(floor)));
 }
 
 void TestSceneView::movingABallMovesItsColour() {

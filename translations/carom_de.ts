@@ -1379,6 +1379,11 @@
         <translation>Newtons Wiege</translation>
     </message>
     <message>
+        <location filename="../ui/scene_files.cpp" line="33"/>
+        <source>Staircase</source>
+        <translation>Treppe</translation>
+    </message>
+    <message>
         <location filename="../ui/scene_files.cpp" line="58"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>

@@ -1383,6 +1383,11 @@
         <translation>Колыбель Ньютона</translation>
     </message>
     <message>
+        <location filename="../ui/scene_files.cpp" line="33"/>
+        <source>Staircase</source>
+        <translation>Лестница</translation>
+    </message>
+    <message>
         <location filename="../ui/scene_files.cpp" line="58"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>

@@ -29,7 +29,8 @@ constexpr struct {
                  {"galton-board", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Galton board")},
                  {"gas-box", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Gas box")},
                  {"inelastic-pile", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Inelastic pile")},
-                 {"newtons-cradle", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Newton's cradle")}};
+                 {"newtons-cradle", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Newton's cradle")},
+                 {"staircase", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Staircase")}};
 
 constexpr const char* kRecentFilesKey = "files/recent";
 

@@ -28,12 +28,14 @@ void vertexAttribute(QOpenGLFunctions_3_3_Core* gl, GLuint location, GLint compo
   if (perInstance) gl->glVertexAttribDivisor(location, 1);
 }
 
-std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name) {
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name, const char* fragmentName) {
   auto program = std::make_unique<QOpenGLShaderProgram>();
   const QString path = QStringLiteral(":/shaders/") + QLatin1String(name);
+  const QString fragmentPath =
+      fragmentName ? QStringLiteral(":/shaders/") + QLatin1String(fragmentName) : path;
   // GLSL has no #include: every fragment shader is the shared lighting with its own text after.
   const QByteArray fragment =
-      shaderFile(QStringLiteral(":/shaders/lighting.glsl")) + shaderFile(path + ".frag");
+      shaderFile(QStringLiteral(":/shaders/lighting.glsl")) + shaderFile(fragmentPath + ".frag");
   if (!program->addCacheableShaderFromSourceCode(QOpenGLShader::Vertex,
                                                  shaderFile(path + ".vert")) ||
       !program->addCacheableShaderFromSourceCode(QOpenGLShader::Fragment, fragment) ||

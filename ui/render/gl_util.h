@@ -38,6 +38,7 @@ void vertexAttribute(QOpenGLFunctions_3_3_Core* gl, GLuint location, GLint compo
 
 // The program of ":/shaders/<name>.vert" and ":/shaders/<name>.frag". A shader that cannot be
 // read, compiled or linked is logged, and the program comes back unlinked.
-std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name);
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name,
+                                                   const char* fragmentName = nullptr);
 
 }  // namespace carom::render

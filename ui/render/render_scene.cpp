@@ -1,5 +1,7 @@
 #include "ui/render/render_scene.h"
 
+#include "sim/shapes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +17,7 @@ constexpr std::array<const char*, 10> kBallPalette = {
 };
 constexpr const char* kDefaultPlaneColor = "#b8b2a7";
 constexpr const char* kDefaultCylinderColor = "#9a8c98";
+constexpr const char* kDefaultBoxColor = "#b08968";
 
 QColor colorOr(const std::string& text, const char* fallback) {
   QColor color(QString::fromStdString(text));
@@ -64,6 +67,13 @@ Bounds sceneBounds(const Scene& scene) {
     include(point, 0.0);
   };
   for (const Cylinder& cylinder : scene.cylinders) anchor(cylinder.point);
+  // A box is finite: all of it is content.
+  for (const Box& box : scene.boxes) {
+    const BoxShape shape = boxShape(box);
+    const Vec3 reach = (shape.axes * shape.half.asDiagonal()).cwiseAbs().rowwise().sum();
+    anchor(shape.center - reach);
+    anchor(shape.center + reach);
+  }
   for (const Plane& plane : scene.planes) anchor(plane.point);
   if (!(contentMin.array() <= contentMax.array()).all()) {
     contentMin = Vec3::Constant(-5.0);
@@ -218,6 +228,14 @@ RenderScene makeRenderScene(const Scene& scene) {
       rendered.start = rendered.end = cylinder.point;
     }
     render.cylinders.push_back(std::move(rendered));
+  }
+  for (const Box& box : scene.boxes) {
+    const BoxShape shape = boxShape(box);
+    RenderBox rendered;
+    rendered.center = shape.center;
+    for (int k = 0; k < 3; ++k) rendered.halfAxes[k] = shape.axes.col(k) * shape.half[k];
+    rendered.color = colorOr(box.color, kDefaultBoxColor);
+    render.boxes.push_back(std::move(rendered));
   }
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
     const Ball& ball = scene.balls[i];

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>  // cross products, for the planes and cylinders
 #include <QColor>
 
+#include <array>
 #include <vector>
 
 namespace carom::render {
@@ -28,10 +29,17 @@ struct RenderCylinder {
   QColor color;
 };
 
+struct RenderBox {
+  Vec3 center = Vec3::Zero();
+  std::array<Vec3, 3> halfAxes;  // its own axes, each as long as its half extent along it
+  QColor color;
+};
+
 struct RenderScene {
   Bounds bounds;
   std::vector<RenderPlane> planes;
   std::vector<RenderCylinder> cylinders;
+  std::vector<RenderBox> boxes;
   std::vector<double> ballRadii;
   std::vector<QColor> ballColors;
   std::vector<Vec3> initialBallPositions;  // shown until the first simulation snapshot

@@ -77,6 +77,17 @@ struct CylinderInstance {
   PackedColor color;
 };
 
+struct BoxVertex {
+  Float3 local;
+  Float3 normal;
+};
+
+struct BoxInstance {
+  Float3 center;
+  Float3 halfAxes[3];
+  PackedColor color;
+};
+
 // ---- Meshes -------------------------------------------------------------------------------------
 
 constexpr int kCylinderSegments = 40;
@@ -319,9 +330,11 @@ void SceneView::initializeGL() {
   ballProgram_ = buildProgram("ball");
   planeProgram_ = buildProgram("plane");
   cylinderProgram_ = buildProgram("cylinder");
+  boxProgram_ = buildProgram("box", "plane");
   createBallBuffers();
   createPlaneBuffers();
   createCylinderBuffers();
+  createBoxBuffers();
   QOpenGLFunctions_3_3_Core* const gl = this;  // a protected base: make_unique cannot see it
   lineRenderer_ = std::make_unique<LineRenderer>(gl);
   explosionRenderer_ = std::make_unique<ExplosionRenderer>(gl);
@@ -435,6 +448,46 @@ void SceneView::createCylinderMesh() {
   uploadBuffer(this, cylinderVertexBuffer_, vertices, GL_STATIC_DRAW);
 }
 
+// One cube, drawn once per box with its centre, half axes and colour per instance.
+void SceneView::createBoxBuffers() {
+  std::array<GLuint, 2> buffers{};
+  glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+  boxVertexBuffer_ = buffers[0];
+  boxInstanceBuffer_ = buffers[1];
+  glGenVertexArrays(1, &boxVao_);
+  // Each face from its outward normal n and two directions u, v with u x v = n, so that its
+  // corners run counter-clockwise seen from outside.
+  std::vector<BoxVertex> vertices;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float side : {-1.0f, 1.0f}) {
+      Vec3 n = Vec3::Zero(), u = Vec3::Zero();
+      n[axis] = side;
+      u[(axis + 1) % 3] = 1.0;
+      const Vec3 v = n.cross(u);
+      const auto corner = [&](double a, double b) {
+        return BoxVertex{toFloat3(n + a * u + b * v), toFloat3(n)};
+      };
+      vertices.insert(vertices.end(), {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, -1),
+                                       corner(1, 1), corner(-1, 1)});
+    }
+  }
+  boxVertexCount_ = static_cast<int>(vertices.size());
+  uploadBuffer(this, boxVertexBuffer_, vertices, GL_STATIC_DRAW);
+  glBindVertexArray(boxVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, boxVertexBuffer_);
+  vertexAttribute(this, 0, 3, GL_FLOAT, sizeof(BoxVertex), offsetof(BoxVertex, local), false);
+  vertexAttribute(this, 1, 3, GL_FLOAT, sizeof(BoxVertex), offsetof(BoxVertex, normal), false);
+  glBindBuffer(GL_ARRAY_BUFFER, boxInstanceBuffer_);
+  vertexAttribute(this, 2, 3, GL_FLOAT, sizeof(BoxInstance), offsetof(BoxInstance, center), true);
+  for (GLuint k = 0; k < 3; ++k)
+    vertexAttribute(this, 3 + k, 3, GL_FLOAT, sizeof(BoxInstance),
+                    offsetof(BoxInstance, halfAxes) + k * sizeof(Float3), true);
+  vertexAttribute(this, 6, 4, GL_UNSIGNED_BYTE, sizeof(BoxInstance), offsetof(BoxInstance, color),
+                  true);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 void SceneView::releaseGl() {
   if (!glReady_) return;
   glReady_ = false;
@@ -442,17 +495,19 @@ void SceneView::releaseGl() {
   ballProgram_.reset();
   planeProgram_.reset();
   cylinderProgram_.reset();
+  boxProgram_.reset();
   lineRenderer_.reset();
   explosionRenderer_.reset();
-  const std::array<GLuint, 6> buffers = {ballIndexBuffer_,      ballPositionBuffer_,
-                                         ballAttributeBuffer_,  planeVertexBuffer_,
-                                         cylinderVertexBuffer_, cylinderInstanceBuffer_};
+  const std::array<GLuint, 8> buffers = {
+      ballIndexBuffer_,      ballPositionBuffer_,     ballAttributeBuffer_, planeVertexBuffer_,
+      cylinderVertexBuffer_, cylinderInstanceBuffer_, boxVertexBuffer_,     boxInstanceBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  const std::array<GLuint, 3> arrays = {ballVao_, planeVao_, cylinderVao_};
+  const std::array<GLuint, 4> arrays = {ballVao_, planeVao_, cylinderVao_, boxVao_};
   glDeleteVertexArrays(static_cast<GLsizei>(arrays.size()), arrays.data());
   ballIndexBuffer_ = ballPositionBuffer_ = ballAttributeBuffer_ = 0;
   planeVertexBuffer_ = cylinderVertexBuffer_ = cylinderInstanceBuffer_ = 0;
-  ballVao_ = planeVao_ = cylinderVao_ = 0;
+  boxVertexBuffer_ = boxInstanceBuffer_ = 0;
+  ballVao_ = planeVao_ = cylinderVao_ = boxVao_ = 0;
 }
 
 // The element buffer, which belongs to the balls' vertex array object (bound), lists the balls'
@@ -510,6 +565,7 @@ void SceneView::uploadStaticData() {
   std::vector<BallAttributes> balls;
   std::vector<PlaneVertex> planeVertices;
   std::vector<CylinderInstance> cylinders;
+  std::vector<BoxInstance> boxes;
   if (scene_) {
     const std::vector<bool> selectedBalls = membership(highlightedBalls_, scene_->ballRadii.size());
     const std::vector<bool> selectedPlanes = membership(highlightedPlanes_, scene_->planes.size());
@@ -552,12 +608,20 @@ void SceneView::uploadStaticData() {
                            static_cast<float>(cylinder.radius),
                            pack(shown(cylinder.color, selectedCylinders[index]))});
     }
+    for (const RenderBox& box : scene_->boxes)
+      boxes.push_back(
+          {toFloat3(box.center),
+           {toFloat3(box.halfAxes[0]), toFloat3(box.halfAxes[1]), toFloat3(box.halfAxes[2])},
+           pack(box.color)});
+    boxGridSpacing_ = static_cast<float>(scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0);
   }
   uploadBuffer(this, ballAttributeBuffer_, balls, GL_STATIC_DRAW);
   uploadBuffer(this, planeVertexBuffer_, planeVertices, GL_STATIC_DRAW);
   uploadBuffer(this, cylinderInstanceBuffer_, cylinders, GL_STATIC_DRAW);
   planeVertexCount_ = static_cast<int>(planeVertices.size());
   cylinderInstanceCount_ = static_cast<int>(cylinders.size());
+  uploadBuffer(this, boxInstanceBuffer_, boxes, GL_STATIC_DRAW);
+  boxInstanceCount_ = static_cast<int>(boxes.size());
 }
 
 void SceneView::uploadBallPositions() {
@@ -587,7 +651,7 @@ void SceneView::paintGL() {
   // Balls first: most of the walls and floor behind them then fail the depth test before their
   // shading runs, which is most of the frame on a software renderer.
   drawBalls(frame);
-  drawCylindersAndPlanes(frame);
+  drawStatics(frame);
   if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
   explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions_.live());
   if (handleArrow_) {
@@ -658,7 +722,7 @@ void SceneView::drawBalls(const FrameCamera& frame) {
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 }
 
-void SceneView::drawCylindersAndPlanes(const FrameCamera& frame) {
+void SceneView::drawStatics(const FrameCamera& frame) {
   // Also hides the walls seen from outside (their front faces point into the room), which is
   // what lets the camera look in from beyond them.
   glEnable(GL_CULL_FACE);
@@ -666,6 +730,12 @@ void SceneView::drawCylindersAndPlanes(const FrameCamera& frame) {
     useProgram(*cylinderProgram_, frame);
     glBindVertexArray(cylinderVao_);
     glDrawArraysInstanced(GL_TRIANGLES, 0, cylinderVertexCount_, cylinderInstanceCount_);
+  }
+  if (boxInstanceCount_ > 0) {
+    useProgram(*boxProgram_, frame);
+    boxProgram_->setUniformValue("gridSpacing", boxGridSpacing_);
+    glBindVertexArray(boxVao_);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, boxVertexCount_, boxInstanceCount_);
   }
   if (planeVertexCount_ > 0) {
     useProgram(*planeProgram_, frame);

@@ -121,6 +121,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void createPlaneBuffers();
   void createCylinderBuffers();
   void createCylinderMesh();
+  void createBoxBuffers();
   void releaseGl();
   double clockSeconds() const;
   void uploadStaticData();
@@ -132,7 +133,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
   void sortBallsFrontToBack(const QVector3D& eye);
   void drawBalls(const FrameCamera& frame);
-  void drawCylindersAndPlanes(const FrameCamera& frame);
+  // Cylinders, boxes and planes, after the balls.
+  void drawStatics(const FrameCamera& frame);
   // Leaves the GL state as Qt's compositing expects it, once the GPU is done.
   void endFrame();
   void followBall();
@@ -162,21 +164,28 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
+  std::unique_ptr<QOpenGLShaderProgram> boxProgram_;
   std::unique_ptr<LineRenderer> lineRenderer_;
   std::unique_ptr<ExplosionRenderer> explosionRenderer_;
   std::unique_ptr<MultisampleTarget> multisample_;
   GLuint ballVao_ = 0;
   GLuint planeVao_ = 0;
   GLuint cylinderVao_ = 0;
+  GLuint boxVao_ = 0;
   GLuint ballIndexBuffer_ = 0;
   GLuint ballPositionBuffer_ = 0;
   GLuint ballAttributeBuffer_ = 0;
   GLuint planeVertexBuffer_ = 0;
   GLuint cylinderVertexBuffer_ = 0;
   GLuint cylinderInstanceBuffer_ = 0;
+  GLuint boxVertexBuffer_ = 0;
+  GLuint boxInstanceBuffer_ = 0;
   int planeVertexCount_ = 0;
   int cylinderVertexCount_ = 0;
   int cylinderInstanceCount_ = 0;
+  int boxVertexCount_ = 0;
+  int boxInstanceCount_ = 0;
+  float boxGridSpacing_ = 1.0f;
   int uploadedBallCount_ = 0;
 };
 
