@@ -22,12 +22,12 @@ namespace carom {
 int EventEngine::slideCapture(int i, int plane) const {
   const Particle& p = particles_[i];
   const Vec3& v = tracks_[i].motion.velocity;
-  const Vec3& n = bodies_.planes[plane].normal;
+  const Vec3& n = slideSurfaces_[plane].plane.normal;
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
   int other = kAlone;
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (ref.isPlane(plane)) continue;
+    if (holdsSurface(ref, plane)) continue;
     const StaticContact contact = staticContact(i, ref);
     if (contact.gap > touching) continue;
     // A wall the ball only touches, neither moving into it nor pressed against it, leaves the
@@ -48,8 +48,9 @@ int EventEngine::slideCapture(int i, int plane) const {
 void EventEngine::startCrease(int i, int plane) {
   Particle& p = particles_[i];
   p.creasePlane = plane;
-  const Vec3 t =
-      bodies_.planes[p.slidePlane].normal.cross(bodies_.planes[plane].normal).normalized();
+  const Vec3 t = slideSurfaces_[p.slidePlane]
+                     .plane.normal.cross(slideSurfaces_[plane].plane.normal)
+                     .normalized();
   creaseLine_[i] = t;
   creaseAcceleration_[i] = pathAcceleration_.dot(t) * t;
   keepOnPlane(i);
@@ -59,9 +60,9 @@ void EventEngine::startCrease(int i, int plane) {
 void EventEngine::dropPlanesLeft(int i) {
   Particle& p = particles_[i];
   const Vec3& v = tracks_[i].motion.velocity;
-  if (p.creasePlane >= 0 && v.dot(bodies_.planes[p.creasePlane].normal) > slideSpeed_[i])
+  if (p.creasePlane >= 0 && v.dot(slideSurfaces_[p.creasePlane].plane.normal) > slideSpeed_[i])
     p.creasePlane = -1;
-  if (p.slidePlane >= 0 && v.dot(bodies_.planes[p.slidePlane].normal) > slideSpeed_[i]) {
+  if (p.slidePlane >= 0 && v.dot(slideSurfaces_[p.slidePlane].plane.normal) > slideSpeed_[i]) {
     p.slidePlane = p.creasePlane;
     p.creasePlane = -1;
   }
@@ -88,8 +89,7 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   std::size_t count = 0;
   for (const int k : {p.slidePlane, p.creasePlane}) {
     if (k < 0) continue;
-    planes[count++] = {bodies_.planes[k].normal,
-                       staticContact(i, {StaticKind::Plane, k}).restitution};
+    planes[count++] = {slideSurfaces_[k].plane.normal, surfaceRestitution(i, k)};
     noteRestitution(planes[count - 1].restitution);
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
@@ -103,7 +103,7 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
 void EventEngine::keepOnPlane(int i) {
   const Particle& p = particles_[i];
   if (p.slidePlane < 0) return;
-  const PlaneShape& plane = bodies_.planes[p.slidePlane];
+  const PlaneShape& plane = slideSurfaces_[p.slidePlane].plane;
   Motion& m = tracks_[i].motion;
   const double r = bodies_.radius[i];
   // The corrections are round-off, but they would build up over a long slide: the normal speed
@@ -114,7 +114,7 @@ void EventEngine::keepOnPlane(int i) {
     return;
   }
   // On the crease line: the move in the span of both normals that closes both gaps.
-  const PlaneShape& other = bodies_.planes[p.creasePlane];
+  const PlaneShape& other = slideSurfaces_[p.creasePlane].plane;
   const double c = plane.normal.dot(other.normal);
   const double gap = plane.gap(m.position, r), otherGap = other.gap(m.position, r);
   const double denominator = 1.0 - c * c;

@@ -65,10 +65,19 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
     slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
-  for (const PlaneShape& plane : bodies.planes) {
-    slideAcceleration_.push_back(pathAcceleration_ -
-                                 pathAcceleration_.dot(plane.normal) * plane.normal);
-    slideGravity_.push_back(gravity_ - gravity_.dot(plane.normal) * plane.normal);
+  for (const PlaneShape& plane : bodies.planes) slideSurfaces_.push_back({plane, -1, -1});
+  for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k) {
+    const BoxShape& box = bodies.boxes[k];
+    for (int axis = 0; axis < 3; ++axis)
+      for (const double side : {-1.0, 1.0}) {
+        const Vec3 normal = side * box.axes.col(axis);
+        slideSurfaces_.push_back({{normal, normal.dot(box.center) + box.half[axis]}, k, axis});
+      }
+  }
+  for (const SlideSurface& surface : slideSurfaces_) {
+    const Vec3& n = surface.plane.normal;
+    slideAcceleration_.push_back(pathAcceleration_ - pathAcceleration_.dot(n) * n);
+    slideGravity_.push_back(gravity_ - gravity_.dot(n) * n);
   }
   creaseLine_.resize(n);
   creaseAcceleration_.resize(n);
@@ -199,8 +208,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
   const Particle& p = particles_[i];
   for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (ref.kind == StaticKind::Plane && slidesOn(p, ref.index))
-      continue;  // it slides along, never into it
+    if (slidesAgainst(p, ref)) continue;  // it slides along, never into it
     const double horizon = std::min(best.time, horizon_) - now_;
     double t = kNever;
     EventKind kind = EventKind::Plane;
@@ -219,6 +227,45 @@ void EventEngine::findStaticContact(int i, const BallPath& path) {
     }
     if (t < horizon) best = {now_ + t, kind, ref.index, 0};
   }
+  if (p.slidePlane >= 0 && slideSurfaces_[p.slidePlane].box >= 0) findSlideEnd(i, path);
+}
+
+void EventEngine::findSlideEnd(int i, const BallPath& path) {
+  const SlideSurface& surface = slideSurfaces_[particles_[i].slidePlane];
+  const BoxShape& box = bodies_.boxes[surface.box];
+  const Vec3 x = box.toLocal(path.position);
+  const Vec3 v = box.axes.transpose() * path.velocity;
+  const Vec3 a = box.axes.transpose() * path.acceleration;
+  Contact& best = predictions_[i].contact;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == surface.axis) continue;
+    for (const bool upwards : {true, false}) {
+      const double horizon = std::min(best.time, horizon_) - now_;
+      const double t = boundaryCrossingTime(
+          x[axis], v[axis], a[axis], upwards ? box.half[axis] : -box.half[axis], upwards, horizon);
+      if (t < horizon) best = {now_ + t, EventKind::SlideEnd, surface.box, 0};
+    }
+  }
+}
+
+int EventEngine::boxFaceAt(int i, int box) const {
+  const BoxShape& shape = bodies_.boxes[box];
+  const Vec3 local = shape.toLocal(tracks_[i].motion.position);
+  const Vec3 outside = local.cwiseAbs() - shape.half;
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (!(outside[k] > 0.0)) continue;
+    if (axis >= 0) return -1;  // beyond two faces: an edge or a corner
+    axis = k;
+  }
+  if (axis < 0) return -1;
+  return static_cast<int>(bodies_.planes.size()) + 6 * box + 2 * axis + (local[axis] > 0.0);
+}
+
+double EventEngine::surfaceRestitution(int i, int surface) const {
+  const SlideSurface& s = slideSurfaces_[surface];
+  return s.box < 0 ? staticContact(i, {StaticKind::Plane, surface}).restitution
+                   : std::min(bodies_.restitution[i], bodies_.boxRestitution[s.box]);
 }
 
 template <typename ForEachBall>
@@ -363,6 +410,13 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::None:
       schedule(i);
       return;
+    case EventKind::SlideEnd:
+      // Past the face's edge the ball flies, and meets the edge, if at all, as a contact.
+      moveTo(i, now_);
+      particles_[i].slidePlane = particles_[i].creasePlane = -1;
+      changed(i);
+      predict(i);
+      return;
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
@@ -375,7 +429,9 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       const double approach = -m.velocity.dot(n);
       noteRestitution(restitution);
       collideWithSurface(i, n, restitution, stats,
-                         event.kind == EventKind::Plane ? event.other : -1);
+                         event.kind == EventKind::Plane ? event.other
+                         : event.kind == EventKind::Box ? boxFaceAt(i, event.other)
+                                                        : -1);
       if (!particles_[i].resting) {
         leaveTouchingStatics(i, stats);
         updateSlide(i, stats);
@@ -546,7 +602,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   touchedStatics_.clear();
   for (int s = p.staticBegin; s < p.staticEnd; ++s) {
     const StaticRef ref = statics_[s];
-    if (ref.kind == StaticKind::Plane && slidesOn(p, ref.index)) continue;  // see updateSlide
+    if (slidesAgainst(p, ref)) continue;  // see updateSlide
     const auto [n, gap, restitution] = staticContact(i, ref);
     if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.kind});
   }

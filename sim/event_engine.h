@@ -53,7 +53,8 @@ class EventEngine {
   void setVelocities(const std::vector<Vec3>& velocities);
 
  private:
-  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box };
+  // SlideEnd: a ball sliding on a box's face reaches the face's edge.
+  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box, SlideEnd };
   // What a neighbour search reads of every ball, in one cache line.
   struct alignas(64) Track {
     Motion motion;
@@ -67,7 +68,7 @@ class EventEngine {
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
-    int slidePlane = -1;   // the plane the ball slides on, or -1 in flight
+    int slidePlane = -1;   // the surface (slideSurfaces_) the ball slides on, or -1 in flight
     int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
   };
@@ -88,7 +89,6 @@ class EventEngine {
   struct StaticRef {
     StaticKind kind;
     int index;
-    bool isPlane(int plane) const { return kind == StaticKind::Plane && index == plane; }
   };
 
   // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
@@ -155,6 +155,23 @@ class EventEngine {
   static bool slidesOn(const Particle& p, int plane) {
     return p.slidePlane == plane || p.creasePlane == plane;
   }
+  // Whether static shape `ref` is, or holds, slide surface `surface`.
+  bool holdsSurface(StaticRef ref, int surface) const {
+    const SlideSurface& s = slideSurfaces_[surface];
+    return s.box < 0 ? ref.kind == StaticKind::Plane && ref.index == surface
+                     : ref.kind == StaticKind::Box && ref.index == s.box;
+  }
+  // Whether ball p slides along `ref` (and so never into it).
+  bool slidesAgainst(const Particle& p, StaticRef ref) const {
+    return (p.slidePlane >= 0 && holdsSurface(ref, p.slidePlane)) ||
+           (p.creasePlane >= 0 && holdsSurface(ref, p.creasePlane));
+  }
+  // The slide surface of the box face that ball i meets at a contact with box `box`, or -1 when
+  // it meets an edge or a corner.
+  int boxFaceAt(int i, int box) const;
+  double surfaceRestitution(int i, int surface) const;
+  // When ball i, sliding on a box's face, reaches the face's edge.
+  void findSlideEnd(int i, const BallPath& path);
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);
@@ -294,8 +311,16 @@ class EventEngine {
   // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
-  std::vector<Vec3> slideAcceleration_;   // path acceleration along each plane
-  std::vector<Vec3> slideGravity_;        // gravity along each plane
+  // What a ball may slide on: the planes (same indices), then the six faces of each box, by
+  // box, axis and side.
+  struct SlideSurface {
+    PlaneShape plane;
+    int box = -1;   // or -1 for a plane
+    int axis = -1;  // of the box, across the face
+  };
+  std::vector<SlideSurface> slideSurfaces_;
+  std::vector<Vec3> slideAcceleration_;   // path acceleration along each surface
+  std::vector<Vec3> slideGravity_;        // gravity along each surface
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
   std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
   CellGrid grid_;
