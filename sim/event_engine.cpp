@@ -138,23 +138,17 @@ void EventEngine::buildStaticLists() {
           nearest += plane.normal[a] * (plane.normal[a] > 0 ? lo[a] : hi[a]);
       if (border || nearest <= reach) statics_.push_back({StaticKind::Plane, k});
     }
-    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
-      bool near = border;
-      if (!near) {
-        const Vec3 centre = 0.5 * (lo + hi);
-        const double halfDiagonal = 0.5 * (hi - lo).norm();
-        near = bodies_.cylinders[k].gap(centre, 0.0) <= halfDiagonal + reach;
-      }
-      if (near) statics_.push_back({StaticKind::Cylinder, k});
-    }
-    // A finite shape only where it is: cells far from it never see it. (Border cells reach out
-    // to infinity and see every shape.)
-    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
-      const Vec3 centre = 0.5 * (lo + hi);
-      const double halfDiagonal = 0.5 * (hi - lo).norm();
-      if (border || bodies_.boxes[k].contact(centre, 0.0).gap <= halfDiagonal + reach)
+    // A round shape is near when it comes within the cell's bounding sphere (grown by the
+    // reach); border cells reach out to infinity and see every shape.
+    const Vec3 centre = 0.5 * (lo + hi);
+    const double sphere = 0.5 * (hi - lo).norm() + reach;
+    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
+      if (border || bodies_.cylinders[k].gap(centre, 0.0) <= sphere)
+        statics_.push_back({StaticKind::Cylinder, k});
+    // A finite shape only where it is: cells far from it never see it.
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
+      if (border || bodies_.boxes[k].contact(centre, 0.0).gap <= sphere)
         statics_.push_back({StaticKind::Box, k});
-    }
     if (statics_.size() > budget) {
       statics_.clear();
       for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)

@@ -152,9 +152,6 @@ class EventEngine {
   void startCrease(int i, int plane);
   // Lets go of the planes that ball i's velocity leaves faster than the slide speed.
   void dropPlanesLeft(int i);
-  static bool slidesOn(const Particle& p, int plane) {
-    return p.slidePlane == plane || p.creasePlane == plane;
-  }
   // Whether static shape `ref` is, or holds, slide surface `surface`.
   bool holdsSurface(StaticRef ref, int surface) const {
     const SlideSurface& s = slideSurfaces_[surface];
