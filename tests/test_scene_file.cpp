@@ -544,6 +544,13 @@ class SceneFileTest : public QObject {
     QVERIFY(versionOne.scene->boxes.empty());
     QCOMPARE(versionOne.scene->extra,
              std::string(R"({"boxes":[{"center":[0,0,0],"halfExtents":[1,1,1]}]})"));
+    // Saved again as version 1, the unknown "boxes" stays what it was.
+    const QByteArray versionOneSaved = carom::io::serializeScene(*versionOne.scene);
+    QVERIFY(versionOneSaved.contains("\"version\": 1,") && versionOneSaved.contains("\"boxes\""));
+    const carom::io::SceneLoadResult versionOneAgain = parse(versionOneSaved);
+    QVERIFY2(versionOneAgain.scene, qPrintable(versionOneAgain.error));
+    QCOMPARE(difference(*versionOneAgain.scene, *versionOne.scene), QString());
+    QCOMPARE(versionOneAgain.scene->extra, versionOne.scene->extra);
   }
 
   void savedTextIsIndentedVersionOne() {

@@ -521,9 +521,11 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
 QByteArray serializeScene(const Scene& scene) {
   JsonFields top;
   top.add("format", jsonString(kFormatName));
-  top.add("version", QByteArray::number(scene.boxes.empty() ? 1 : kFirstVersionWithBoxes));
+  const bool versionOne = scene.boxes.empty();
+  top.add("version", QByteArray::number(versionOne ? 1 : kFirstVersionWithBoxes));
   // Unknown top-level keys such as "units" go right after the header, where a reader looks.
-  top.addExtra(scene.extra, kTopKeys);
+  // In version 1 "boxes" is one of them.
+  top.addExtra(scene.extra, versionOne ? kTopKeysVersion1 : kTopKeys);
 
   const World& world = scene.world;
   JsonFields worldFields;
