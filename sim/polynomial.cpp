@@ -9,19 +9,19 @@
 namespace carom {
 
 double Polynomial::operator()(double t) const {
-  double value = c[4];
-  for (int k = 3; k >= 0; --k) value = value * t + c[k];
+  double value = c[kMaxPolynomialDegree];
+  for (int k = kMaxPolynomialDegree - 1; k >= 0; --k) value = value * t + c[k];
   return value;
 }
 
 Polynomial Polynomial::derivative() const {
   Polynomial d;
-  for (int k = 1; k < 5; ++k) d.c[k - 1] = k * c[k];
+  for (int k = 1; k <= kMaxPolynomialDegree; ++k) d.c[k - 1] = k * c[k];
   return d;
 }
 
 int Polynomial::degree() const {
-  for (int k = 4; k >= 0; --k) {
+  for (int k = kMaxPolynomialDegree; k >= 0; --k) {
     if (c[k] != 0.0) return k;
   }
   return -1;
@@ -29,16 +29,20 @@ int Polynomial::degree() const {
 
 namespace {
 
-using Coefficients = std::array<double, 5>;
+using Coefficients = std::array<double, kMaxPolynomialDegree + 1>;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2;  // unit round-off
-// Horner's rounding error is at most gamma_2n * sum |c_k| t^k (about 8u for degree 4); twice that
-// leaves room for the rounding of the sum itself.
-constexpr double kHornerError = 16 * kUnit;
+// Horner's rounding error is at most gamma_2n * sum |c_k| t^k (about 2n u for degree n); twice
+// that leaves room for the rounding of the sum itself. Degrees below 4 keep the bound of 4.
+constexpr double hornerError(int degree) {
+  return 4 * std::max(degree, 4) * kUnit;
+}
 // Compensated Horner is off by at most u |f| + gamma_2n^2 * sum |c_k| t^k.
-constexpr double kCompensatedError = 2 * (8 * kUnit) * (8 * kUnit);
+constexpr double compensatedError(int degree) {
+  return 2 * (2 * std::max(degree, 4) * kUnit) * (2 * std::max(degree, 4) * kUnit);
+}
 // Products in the subnormal range lose up to half the smallest subnormal each.
 constexpr double kUnderflowError = 16 * std::numeric_limits<double>::denorm_min();
 // A refinement halves the bit width of its bracket (at most 64 bits) at least every second step,
@@ -84,12 +88,12 @@ class Poly {
     // Terms beyond the double range (or so small that the error bound underflows) leave only
     // the sign, from an exactly rescaled copy.
     if (!(size >= 0x1p-900 && size <= 0x1p1000)) return {kNaN, kNaN, kNaN, rescaledSign(t)};
-    if (std::abs(value) > kHornerError * size) return {value, slope, bend, value > 0 ? 1 : -1};
+    if (std::abs(value) > hornerError(n_) * size) return {value, slope, bend, value > 0 ? 1 : -1};
     // Near a root the sign of plain Horner is noise; compensated Horner resolves touches and
     // clustered roots down to about u^2 of the terms' size.
     const double accurate = compensated(t);
     const double error =
-        2 * kUnit * std::abs(accurate) + kCompensatedError * size + kUnderflowError;
+        2 * kUnit * std::abs(accurate) + compensatedError(n_) * size + kUnderflowError;
     return {accurate, slope, bend, accurate > error ? 1 : (accurate < -error ? -1 : 0)};
   }
 
@@ -273,6 +277,40 @@ int signChanges(double a, double b, double c, double roots[2]) {
   return 2;
 }
 
+// The points in (0, horizon) where q changes sign, ascending, into `out`; returns how many (at
+// most q's degree). Between the sign changes of q' q is monotone, so each such piece holds at most
+// one, narrowed by refine to adjacent doubles. A point where q' changes sign and q is zero within
+// round-off is taken too (a triple root changes sign there): a spare cut costs nothing.
+int signChangesBefore(const Poly& q, double horizon, double* out) {
+  int count = 0;
+  if (q.degree() <= 2) {
+    double roots[2];
+    const Coefficients n = forFormula({q[0], q[1], q[2]});
+    const int found = signChanges(n[2], n[1], n[0], roots);
+    for (int i = 0; i < found; ++i) {
+      if (roots[i] > (count > 0 ? out[count - 1] : 0.0) && roots[i] < horizon)
+        out[count++] = roots[i];
+    }
+    return count;
+  }
+  double turns[kMaxPolynomialDegree];
+  const int turnCount = signChangesBefore(q.derivative(), horizon, turns);
+  double a = 0.0;
+  Sample sa = q.sample(a);
+  for (int i = 0; i <= turnCount; ++i) {
+    const double b = i < turnCount ? turns[i] : horizon;
+    const Sample sb = q.sample(b);
+    if (sa.sign * sb.sign < 0) {
+      const double root = refine(q, sa.sign, a, b, sa.value, sb.value);
+      if (root > (count > 0 ? out[count - 1] : 0.0)) out[count++] = root;
+    }
+    if (i < turnCount && sb.sign == 0 && b > (count > 0 ? out[count - 1] : 0.0)) out[count++] = b;
+    a = b;
+    if (sb.sign != 0 || sa.sign == 0) sa = sb;
+  }
+  return count;
+}
+
 // Lowers the computed crossing `root` of p (falling there, p > 0 at `floor`) to where p is
 // positive beyond doubt, and checks it against the horizon.
 double settle(const Poly& p, double root, double floor, double tMax) {
@@ -379,20 +417,25 @@ double firstEntry(const Polynomial& f, double tMax) {
     if (p[0] > fall * (1 + 1e-12)) return kInf;
   }
 
-  // Cut [0, horizon] at the inflection points (roots of f'', a quadratic): f' is monotone on each
+  // Cut [0, horizon] at the inflection points (where f'' changes sign): f' is monotone on each
   // piece, so f has at most one extremum there and is monotone on either side of it.
-  double cuts[3];
+  const Poly slope = p.derivative();
+  double cuts[kMaxPolynomialDegree];
   int pieces = 0;
-  double roots[2];
-  const Coefficients curvature = forFormula({f.c[2], f.c[3], f.c[4], 0.0, 0.0});
-  const int count = signChanges(12 * curvature[2], 6 * curvature[1], 2 * curvature[0], roots);
-  for (int i = 0; i < count; ++i) {
-    if (roots[i] > (pieces > 0 ? cuts[pieces - 1] : 0.0) && roots[i] < horizon) {
-      cuts[pieces++] = roots[i];
+  if (f.degree() <= 4) {
+    // f'' is a quadratic: its roots in closed form.
+    double roots[2];
+    const Coefficients curvature = forFormula({f.c[2], f.c[3], f.c[4]});
+    const int count = signChanges(12 * curvature[2], 6 * curvature[1], 2 * curvature[0], roots);
+    for (int i = 0; i < count; ++i) {
+      if (roots[i] > (pieces > 0 ? cuts[pieces - 1] : 0.0) && roots[i] < horizon) {
+        cuts[pieces++] = roots[i];
+      }
     }
+  } else {
+    pieces = signChangesBefore(slope.derivative(), horizon, cuts);
   }
   cuts[pieces++] = horizon;
-  const Poly slope = p.derivative();
 
   double a = 0.0;
   double fa = p[0];

@@ -1,15 +1,18 @@
 #pragma once
 // Contact times as polynomial roots. The gap between two shapes along their paths (ball on a
-// parabola against a plane, a cylinder or another ball) is a polynomial of degree at most 4 in
-// time; the simulator needs the first time that gap turns negative, never late and never missed.
+// parabola against a plane, a cylinder, a box's edge or another ball) is a polynomial of degree
+// at most 4 in time, and 8 against a capped cylinder's rim; the simulator needs the first time
+// that gap turns negative, never late and never missed.
 
 #include <array>
 
 namespace carom {
 
-// f(t) = c[0] + c[1] t + c[2] t^2 + c[3] t^3 + c[4] t^4 (higher coefficients may be zero).
+inline constexpr int kMaxPolynomialDegree = 8;
+
+// f(t) = c[0] + c[1] t + ... + c[8] t^8 (higher coefficients may be zero).
 struct Polynomial {
-  std::array<double, 5> c{};
+  std::array<double, kMaxPolynomialDegree + 1> c{};
 
   double operator()(double t) const;  // Horner
   Polynomial derivative() const;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <utility>
@@ -36,6 +37,7 @@ using Vec3 = Eigen::Vector3d;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kUnit = std::numeric_limits<double>::epsilon() / 2;
+constexpr int kTop = carom::kMaxPolynomialDegree;
 
 double ulpOf(double x) {
   x = std::abs(x);
@@ -48,26 +50,28 @@ Polynomial poly(double c0, double c1 = 0, double c2 = 0, double c3 = 0, double c
 
 // f(t) in quad precision: for double coefficients and arguments, exact enough to be the truth.
 Quad exactValue(const Polynomial& f, double t) {
-  Quad value = f.c[4];
-  for (int k = 3; k >= 0; --k) value = value * t + f.c[k];
+  Quad value = f.c[kTop];
+  for (int k = kTop - 1; k >= 0; --k) value = value * t + f.c[k];
   return value;
 }
 
 // sum |c_k| t^k: the scale of rounding errors in f(t).
 double termSize(const Polynomial& f, double t) {
   double size = 0.0;
-  for (int k = 4; k >= 0; --k) size = size * std::abs(t) + std::abs(f.c[k]);
+  for (int k = kTop; k >= 0; --k) size = size * std::abs(t) + std::abs(f.c[k]);
   return size;
 }
 
 // lead * prod (t - r) * prod ((t - re)^2 + im^2), expanded in quad precision and rounded once.
+// `exact`, when given, tells whether every coefficient was a double already.
 Polynomial fromRoots(double lead, const std::vector<double>& roots,
-                     const std::vector<std::pair<double, double>>& complexPairs = {}) {
-  std::array<Quad, 6> c{};
+                     const std::vector<std::pair<double, double>>& complexPairs = {},
+                     bool* exact = nullptr) {
+  std::array<Quad, kTop + 3> c{};
   c[0] = lead;
   auto multiply = [&c](Quad q0, Quad q1, Quad q2) {  // by q0 + q1 t + q2 t^2
-    std::array<Quad, 6> r{};
-    for (int k = 0; k < 6; ++k) {
+    std::array<Quad, kTop + 3> r{};
+    for (int k = 0; k < kTop + 3; ++k) {
       r[k] += c[k] * q0;
       if (k >= 1) r[k] += c[k - 1] * q1;
       if (k >= 2) r[k] += c[k - 2] * q2;
@@ -79,23 +83,63 @@ Polynomial fromRoots(double lead, const std::vector<double>& roots,
     multiply(Quad(re) * re + Quad(im) * im, -2 * Quad(re), 1);
   }
   Polynomial f;
-  for (int k = 0; k < 5; ++k) f.c[k] = static_cast<double>(c[k]);
+  for (int k = 0; k <= kTop; ++k) f.c[k] = static_cast<double>(c[k]);
+  if (exact) {
+    *exact = true;
+    for (int k = 0; k < kTop + 3; ++k) *exact = *exact && (k <= kTop ? Quad(f.c[k]) : 0) == c[k];
+  }
   return f;
 }
 
-// Given exact f(lo) > 0 >= f(hi), bisects to adjacent doubles and returns the lower one.
-double exactCrossing(const Polynomial& f, double lo, double hi) {
+// f (t^2 b2 + t b1 + b0), rounded once per coefficient.
+Polynomial timesQuadratic(const Polynomial& f, double b0, double b1, double b2) {
+  Polynomial g;
+  for (int k = 0; k <= kTop; ++k) {
+    Quad sum = Quad(f.c[k]) * b0;
+    if (k >= 1) sum += Quad(f.c[k - 1]) * b1;
+    if (k >= 2) sum += Quad(f.c[k - 2]) * b2;
+    g.c[k] = static_cast<double>(sum);
+  }
+  return g;
+}
+
+// The sign of f(t): from quad precision, or exactly from the factors f was built from (near a
+// root of high multiplicity quad precision cannot tell).
+using SignOf = std::function<int(double)>;
+
+SignOf quadSign(const Polynomial& f) {
+  return [&f](double t) {
+    const Quad v = exactValue(f, t);
+    return v > 0 ? 1 : (v < 0 ? -1 : 0);
+  };
+}
+
+// lead * prod (t - r) with the complex pairs' factors positive: the sign, exactly.
+SignOf factoredSign(double lead, const std::vector<double>& roots) {
+  return [lead, roots](double t) {
+    int sign = lead > 0 ? 1 : -1;
+    for (const double r : roots) sign *= t > r ? 1 : (t < r ? -1 : 0);
+    return sign;
+  };
+}
+
+// Given f(lo) > 0 >= f(hi), bisects to adjacent doubles and returns the lower one.
+double exactCrossing(const SignOf& sign, double lo, double hi) {
   for (;;) {
     const double mid = lo + (hi - lo) / 2;
     if (!(mid > lo && mid < hi)) return lo;
-    (exactValue(f, mid) > 0 ? lo : hi) = mid;
+    (sign(mid) > 0 ? lo : hi) = mid;
   }
+}
+
+double exactCrossing(const Polynomial& f, double lo, double hi) {
+  return exactCrossing(quadSign(f), lo, hi);
 }
 
 // The rule at t = 0: touching or overlapping and closing in (first non-zero derivative < 0).
 bool entersAtZero(const Polynomial& f) {
   if (f.c[0] > 0) return false;
-  for (int k = 1; k < 5; ++k) {
+  for (int k = 1; k <= kTop; ++k) {
     if (f.c[k] != 0) return f.c[k] < 0;
   }
   return false;
@@ -103,7 +147,8 @@ bool entersAtZero(const Polynomial& f) {
 
 // The first entry of f on [0, tMax] given (approximately) all its real roots: the first root at
 // which the exact sign goes from + (just before) to - (just after).
-double entryFromRoots(const Polynomial& f, std::vector<double> roots, double tMax) {
+double entryFromRoots(const Polynomial& f, std::vector<double> roots, double tMax,
+                      const SignOf& sign) {
   if (entersAtZero(f)) return 0.0;
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
@@ -111,11 +156,13 @@ double entryFromRoots(const Polynomial& f, std::vector<double> roots, double tMa
   for (std::size_t i = 0; i < roots.size() && roots[i] <= tMax; ++i) {
     const double before = ((i == 0 ? 0.0 : roots[i - 1]) + roots[i]) / 2;
     const double after = (roots[i] + (i + 1 < roots.size() ? roots[i + 1] : 2 * roots[i] + 1)) / 2;
-    if (exactValue(f, before) > 0 && exactValue(f, after) < 0) {
-      return exactCrossing(f, before, after);
-    }
+    if (sign(before) > 0 && sign(after) < 0) return exactCrossing(sign, before, after);
   }
   return kInf;
+}
+
+double entryFromRoots(const Polynomial& f, const std::vector<double>& roots, double tMax) {
+  return entryFromRoots(f, roots, tMax, quadSign(f));
 }
 
 // The first entry seen by `samples` evenly spaced exact samples on [0, tMax], bisected. Dips
@@ -148,11 +195,13 @@ bool entersAt(const Polynomial& f, double t, double limit) {
 // distance over which f, grown from its Taylor terms at r, stays within the error of
 // double-double evaluation (for a simple root that error divided by the slope).
 double rootTolerance(const Polynomial& f, double r) {
-  const double error = 256 * kUnit * kUnit * termSize(f, r);
+  // Twice the finder's own bound for double-double evaluation, 2 (2n u)^2 (n at least 4).
+  const double n = std::max(f.degree(), 4);
+  const double error = 4 * (2 * n * kUnit) * (2 * n * kUnit) * termSize(f, r);
   double band = kInf;
-  for (int k = 1; k <= 4; ++k) {
+  for (int k = 1; k <= kTop; ++k) {
     Quad taylor = 0;  // f^(k)(r) / k!, in quad so that the terms of a multiple root cancel
-    for (int j = k; j <= 4; ++j) {
+    for (int j = k; j <= kTop; ++j) {
       Quad term = f.c[j];
       for (int i = 0; i < k; ++i) term = term * (j - i) / (i + 1);
       for (int i = k; i < j; ++i) term *= r;
@@ -165,13 +214,15 @@ double rootTolerance(const Polynomial& f, double r) {
 }
 
 QByteArray describe(const Polynomial& f, double tMax) {
-  return QString::asprintf("f = {%.17g, %.17g, %.17g, %.17g, %.17g}, tMax = %.17g", f.c[0], f.c[1],
-                           f.c[2], f.c[3], f.c[4], tMax)
-      .toLatin1();
+  QString text = "f = {";
+  for (int k = 0; k <= std::max(f.degree(), 0); ++k)
+    text += QString::asprintf(k == 0 ? "%.17g" : ", %.17g", f.c[k]);
+  return (text + QString::asprintf("}, tMax = %.17g", tMax)).toLatin1();
 }
 
 // The entry t matches the exact crossing `expected` and does not lie in overlap.
-void checkEntry(const char* what, const Polynomial& f, double tMax, double t, double expected) {
+void checkEntry(const char* what, const Polynomial& f, double tMax, double t, double expected,
+                const SignOf& sign = {}) {
   const QByteArray context = describe(f, tMax);
   VERIFY(!std::isnan(t), "%s: NaN (%s)", what, context.data());
   if (std::isinf(expected) || expected == 0) {
@@ -180,7 +231,8 @@ void checkEntry(const char* what, const Polynomial& f, double tMax, double t, do
   }
   VERIFY(std::abs(t - expected) <= rootTolerance(f, expected), "%s: got %.17g, expected %.17g (%s)",
          what, t, expected, context.data());
-  VERIFY(exactValue(f, t) >= 0, "%s: %.17g is in overlap (%s)", what, t, context.data());
+  VERIFY((sign ? sign : quadSign(f))(t) >= 0, "%s: %.17g is in overlap (%s)", what, t,
+         context.data());
 }
 
 // A ball centre on a parabola, p(t) = p0 + v t + g t^2 / 2.
@@ -280,7 +332,13 @@ void TestPolynomial::evaluatesAndDifferentiates() {
   QCOMPARE(f(2.0), 1.0 + 4 + 12 + 32 + 80);
   QCOMPARE(f(0.0), 1.0);
   const Polynomial d = f.derivative();
-  QCOMPARE(d.c, (std::array<double, 5>{2, 6, 12, 20, 0}));
+  QCOMPARE(d.c, (std::array<double, kTop + 1>{2, 6, 12, 20, 0}));
+  Polynomial octic;
+  octic.c[8] = 1;
+  octic.c[5] = -2;
+  QCOMPARE(octic(2.0), 256.0 - 64);
+  QCOMPARE(octic.degree(), 8);
+  QCOMPARE(octic.derivative().c, (std::array<double, kTop + 1>{0, 0, 0, 0, -10, 0, 0, 8, 0}));
   QCOMPARE(d.derivative().derivative().derivative().derivative().degree(), -1);
   QCOMPARE(f.degree(), 4);
   QCOMPARE(poly(1, 2, 3).degree(), 2);
@@ -544,7 +602,7 @@ void TestPolynomial::degenerateAndExtreme() {
   QCOMPARE(firstEntry(f, std::nan("")), kInf);
   QCOMPARE(firstEntry(f, -kInf), kInf);
   // Non-finite coefficients.
-  for (int k = 0; k < 5; ++k) {
+  for (int k = 0; k <= kTop; ++k) {
     for (const double bad : {std::nan(""), kInf, -kInf}) {
       Polynomial g = f;
       g.c[k] = bad;
@@ -624,16 +682,21 @@ void TestPolynomial::ballUnderGravityVsTiltedCylinder() {
 
 void TestPolynomial::randomExactRoots() {
   // Roots k/8 scaled by a power of two: every coefficient is exact, so double and touching roots
-  // are what they claim to be, and roots at 0 test the rule at t = 0.
+  // are what they claim to be, and roots at 0 test the rule at t = 0. Above degree 4 the
+  // numerators are smaller, so that products of eight of them stay exact too.
   std::mt19937_64 rng(20240611);
-  std::uniform_int_distribution<int> numerator(-16, 96);
+  std::uniform_int_distribution<int> wideNumerator(-16, 96);
+  std::uniform_int_distribution<int> narrowNumerator(-4, 24);
   std::uniform_int_distribution<int> exponent(-20, 20);
-  std::uniform_int_distribution<int> degreeOf(2, 4);
+  std::uniform_int_distribution<int> degreeOf(2, kTop);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int entries = 0;
-  for (int i = 0; i < 3000; ++i) {
+  for (int i = 0; i < 6000; ++i) {
     const double scale = std::ldexp(1.0, exponent(rng));
     const int degree = degreeOf(rng);
+    const auto numerator = [&](std::mt19937_64& g) {
+      return degree <= 4 ? wideNumerator(g) : narrowNumerator(g);
+    };
     std::vector<double> roots;
     std::vector<std::pair<double, double>> pairs;
     while (static_cast<int>(roots.size() + 2 * pairs.size()) < degree) {
@@ -647,7 +710,9 @@ void TestPolynomial::randomExactRoots() {
       }
     }
     const double lead = (unit(rng) < 0.5 ? -1 : 1) * std::ldexp(1.0, exponent(rng) / 2);
-    const Polynomial f = fromRoots(lead, roots, pairs);
+    bool exact = false;
+    const Polynomial f = fromRoots(lead, roots, pairs, &exact);
+    VERIFY(exact, "coefficients rounded (%s)", describe(f, kInf).data());
     double tMax = kInf;
     const double u = unit(rng);
     if (u < 0.2 && !roots.empty()) {
@@ -655,13 +720,14 @@ void TestPolynomial::randomExactRoots() {
     } else if (u < 0.5) {
       tMax = scale * 12 * unit(rng);
     }
-    const double expected = entryFromRoots(f, roots, tMax);
+    const SignOf sign = factoredSign(lead, roots);
+    const double expected = entryFromRoots(f, roots, tMax, sign);
     const double t = firstEntry(f, tMax);
-    checkEntry("random exact roots", f, tMax, t, expected);
+    checkEntry("random exact roots", f, tMax, t, expected, sign);
     if (QTest::currentTestFailed()) return;
-    if (f.c[3] == 0 && f.c[4] == 0) {
+    if (f.degree() <= 2) {
       checkEntry("random exact roots (closed form)", f, tMax,
-                 firstEntryQuadratic(f.c[2], f.c[1], f.c[0], tMax), expected);
+                 firstEntryQuadratic(f.c[2], f.c[1], f.c[0], tMax), expected, sign);
       if (QTest::currentTestFailed()) return;
     }
     entries += std::isfinite(expected) && expected > 0;
@@ -673,9 +739,9 @@ void TestPolynomial::randomSeparatedRoots() {
   // Arbitrary double roots, at least 1e-3 of the scale apart, at scales from 1e-6 to 1e6.
   std::mt19937_64 rng(987654321);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_int_distribution<int> degreeOf(2, 4);
+  std::uniform_int_distribution<int> degreeOf(2, kTop);
   int entries = 0;
-  for (int i = 0; i < 3000; ++i) {
+  for (int i = 0; i < 5000; ++i) {
     const double scale = std::pow(10.0, -6 + 12 * unit(rng));
     const int degree = degreeOf(rng);
     std::vector<double> roots;
@@ -709,9 +775,9 @@ void TestPolynomial::randomCoefficientsAgainstSampling() {
   const int samples = 1500;
   int entries = 0;
   int narrowDips = 0;
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < 7000; ++i) {
     Polynomial f;
-    const int degree = 2 + i % 3;
+    const int degree = 2 + i % (kTop - 1);
     const double tMax = 0.5 + 20 * unit(rng);
     if (i % 4 == 3) {
       // Near touches: (t - r)^2 (t^2 + p t + q) + delta, a dip or a gap of size |delta| that
@@ -720,7 +786,13 @@ void TestPolynomial::randomCoefficientsAgainstSampling() {
       const double p = 4 * unit(rng) - 2;
       const double q = p * p / 4 + 0.1 + unit(rng);
       const double delta = (unit(rng) < 0.5 ? -1 : 1) * std::pow(10.0, -12 + 8 * unit(rng));
-      f = poly(r * r * q + delta, -2 * r * q + r * r * p, q - 2 * r * p + r * r, p - 2 * r, 1);
+      f = poly(r * r * q, -2 * r * q + r * r * p, q - 2 * r * p + r * r, p - 2 * r, 1);
+      // Higher degrees: times quadratics that are positive everywhere, which keeps the touch.
+      for (int extra = 4; extra + 2 <= degree; extra += 2) {
+        const double s = 4 * unit(rng) - 2;
+        f = timesQuadratic(f, s * s / 4 + 0.1 + unit(rng), s, 1);
+      }
+      f.c[0] += delta;
     } else {
       for (int k = 0; k <= degree; ++k) {
         if (k > 0 && k < degree && unit(rng) < 0.15) continue;  // some zero coefficients
@@ -760,8 +832,8 @@ void TestPolynomial::randomCoefficientsAgainstSampling() {
     }
   }
   qInfo("%d sampled entries matched, %d narrow dips found between samples", entries, narrowDips);
-  QVERIFY(entries > 1200);
-  QVERIFY(narrowDips > 200);
+  QVERIFY(entries > 2000);
+  QVERIFY(narrowDips > 350);
 }
 
 void TestPolynomial::generalPathMatchesClosedForm() {
