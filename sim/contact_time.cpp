@@ -121,6 +121,127 @@ Intervals withinSlab(double x0, double v, double a, double bound, double horizon
                    nonPositive(-0.5 * a, -v, -x0 - bound, horizon));
 }
 
+// The path u0 + u1 t + u2 t^2 restarted at time t0.
+struct Rebased {
+  Vec3 u0, u1, u2;
+};
+
+Rebased rebase(const Vec3& u0, const Vec3& u1, const Vec3& u2, double t0) {
+  return {u0 + (u1 + u2 * t0) * t0, u1 + 2.0 * t0 * u2, u2};
+}
+
+// The first entry of |u(t)| into rho within [0, end], for a part of the capped cylinder that the
+// ball may be inside at the start without having entered it (touching a face and leaving, or
+// sliding on it): then the part is entered again only after the path has left it.
+double reentry(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho, double end, bool inside,
+               bool approaching) {
+  if (!inside) return sphereEntry(u0, u1, u2, rho, end);
+  if (approaching) return 0.0;
+  // Leaving the disc is entering its outside, |u|^2 - rho^2 turning positive.
+  Polynomial outside = squaredLengthMinus(u0, u1, u2, rho);
+  for (double& c : outside.c) c = -c;
+  const double exit = firstEntry(outside, end);
+  if (!(exit < end)) return kNever;
+  const Rebased after = rebase(u0, u1, u2, exit);
+  const double t = sphereEntry(after.u0, after.u1, after.u2, rho, end - exit);
+  return t < kNever ? exit + t : kNever;
+}
+
+// (|q|^2 + R^2 - r^2)^2 - 4 R^2 |q_xy|^2 along q(t) = q0 + q1 t + q2 t^2, the ball's centre
+// relative to a rim's centre in coordinates where the cylinder's axis is z: negative inside the
+// torus swept by a ball of radius r around the rim of radius R. It factors as
+// (d^2 - r^2)(d'^2 - r^2), d and d' the distances to the nearest and farthest rim point, which
+// gives the constant term without cancellation. Degree 8 on a parabola, 4 on a straight path.
+Polynomial rimGap(const Vec3& q0, const Vec3& q1, const Vec3& q2, double R, double r) {
+  const std::array<double, 5> s{q0.squaredNorm() + R * R - r * r, 2.0 * q0.dot(q1),
+                                q1.squaredNorm() + 2.0 * q0.dot(q2), 2.0 * q1.dot(q2),
+                                q2.squaredNorm()};
+  const Vec3 u0(q0.x(), q0.y(), 0.0), u1(q1.x(), q1.y(), 0.0), u2(q2.x(), q2.y(), 0.0);
+  const std::array<double, 5> p{u0.squaredNorm(), 2.0 * u0.dot(u1),
+                                u1.squaredNorm() + 2.0 * u0.dot(u2), 2.0 * u1.dot(u2),
+                                u2.squaredNorm()};
+  Polynomial f;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) f.c[i + j] += s[i] * s[j];
+  for (int k = 0; k < 5; ++k) f.c[k] -= 4.0 * R * R * p[k];
+  const double rho = u0.norm();
+  const double nearest = std::hypot(rho - R, q0.z());
+  const double farthest = std::hypot(rho + R, q0.z());
+  f.c[0] = (nearest - r) * (nearest + r) * ((farthest - r) * (farthest + r));
+  return f;
+}
+
+double ballCappedCylinderContactTime(const BallPath& ball, double radius,
+                                     const CylinderShape& cylinder, double horizon) {
+  // Coordinates with the axis as z and the origin at the middle of the axis.
+  Eigen::Matrix3d frame;
+  frame.col(2) = cylinder.axis;
+  frame.col(0) = cylinder.axis.unitOrthogonal();
+  frame.col(1) = frame.col(2).cross(frame.col(0));
+  const Vec3 p = frame.transpose() * (ball.position - cylinder.point);
+  const Vec3 v = frame.transpose() * ball.velocity;
+  const Vec3 a = 0.5 * (frame.transpose() * ball.acceleration);  // p + v t + a t^2
+  const double R = cylinder.radius;
+  const double H = cylinder.halfLength;
+  // The ball that cannot enter the bounding sphere grown by its radius cannot enter the cylinder.
+  const double bound = std::hypot(R, H) + radius;
+  if (p.squaredNorm() > bound * bound && sphereEntry(p, v, a, bound, horizon) == kNever)
+    return kNever;
+  const CylinderShape::Contact now = cylinder.contact(ball.position, radius);
+  const double rate = now.normal.dot(ball.velocity);
+  const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
+  const auto across = [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); };
+  double first = kNever;
+  // The side grown by the radius within the length, and the caps grown by the radius within the
+  // radius: a disc condition across the axis while the path is within a slab along it.
+  const auto slabPart = [&](double halfThickness, double rho) {
+    const Intervals along = withinSlab(p.z(), v.z(), 2.0 * a.z(), halfThickness, kNever);
+    for (int n = 0; n < along.count; ++n) {
+      const double t0 = along.items[n].begin;
+      if (t0 > std::min(horizon, first)) return;
+      const Rebased u = rebase(across(p), across(v), across(a), t0);
+      const double end = std::min(along.items[n].end, horizon) - t0;
+      // Entering the slab inside the disc is entering through the slab's face.
+      const bool inside = u.u0.norm() <= rho;
+      const double t = t0 > 0.0 ? (inside ? 0.0 : sphereEntry(u.u0, u.u1, u.u2, rho, end))
+                                : reentry(u.u0, u.u1, u.u2, rho, end, inside, approaching);
+      if (t < kNever) {
+        first = std::min(first, t0 + t);
+        return;
+      }
+    }
+  };
+  slabPart(H, R + radius);
+  slabPart(H + radius, R);
+  // The rims: tori around the cap circles.
+  for (const double side : {-1.0, 1.0}) {
+    const Vec3 q0 = p - Vec3(0.0, 0.0, side * H);
+    if (q0.squaredNorm() > (R + radius) * (R + radius) &&
+        sphereEntry(q0, v, a, R + radius, std::min(horizon, first)) == kNever)
+      continue;  // never near this rim
+    const Polynomial gap = rimGap(q0, v, a, R, radius);
+    const bool inside = gap.c[0] <= 0.0;
+    if (inside && approaching) {
+      first = 0.0;
+      continue;
+    }
+    Polynomial f = gap;
+    double start = 0.0;
+    if (inside) {
+      // Touching the rim and leaving: entered again only after being clear of it.
+      Polynomial outside = gap;
+      for (double& c : outside.c) c = -c;
+      start = firstEntry(outside, std::min(horizon, first));
+      if (!(start < kNever)) continue;
+      const Rebased q = rebase(q0, v, a, start);
+      f = rimGap(q.u0, q.u1, q.u2, R, radius);
+    }
+    const double t = firstEntry(f, std::min(horizon, first) - start);
+    if (t < kNever) first = std::min(first, start + t);
+  }
+  return first <= horizon ? first : kNever;
+}
+
 }  // namespace
 
 double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& box,
@@ -204,6 +325,7 @@ double ballPlaneContactTime(const BallPath& ball, double radius, const PlaneShap
 
 double ballCylinderContactTime(const BallPath& ball, double radius, const CylinderShape& cylinder,
                                double horizon) {
+  if (cylinder.capped()) return ballCappedCylinderContactTime(ball, radius, cylinder, horizon);
   const Vec3 u0 = cylinder.perpendicular(ball.position - cylinder.point);
   const Vec3 u1 = cylinder.perpendicular(ball.velocity);
   const Vec3 u2 = 0.5 * cylinder.perpendicular(ball.acceleration);

@@ -148,13 +148,10 @@ class DiscreteStepper final : public Stepper {
                            ContactKind::BallPlane, k});
     }
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
-      const CylinderShape& cylinder = bodies_.cylinders[k];
-      const Vec3 out = cylinder.perpendicular(positions_[i] - cylinder.point);
-      const double gap = out.norm() - cylinder.radius - r;
-      if (gap >= 0.0) continue;
-      const Vec3 n = out.norm() > 0.0 ? Vec3(out.normalized())
-                                      : cylinder.perpendicular(Vec3::UnitX()).normalized();
-      overlaps_.push_back({n, -gap,
+      // Out by the closest point of side, cap or rim.
+      const CylinderShape::Contact contact = bodies_.cylinders[k].contact(positions_[i], r);
+      if (contact.gap >= 0.0) continue;
+      overlaps_.push_back({contact.normal, -contact.gap,
                            std::min(bodies_.restitution[i], bodies_.cylinderRestitution[k]),
                            ContactKind::BallCylinder, k});
     }

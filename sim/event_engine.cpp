@@ -143,7 +143,7 @@ void EventEngine::buildStaticLists() {
     const Vec3 centre = 0.5 * (lo + hi);
     const double sphere = 0.5 * (hi - lo).norm() + reach;
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
-      if (border || bodies_.cylinders[k].gap(centre, 0.0) <= sphere)
+      if (border || bodies_.cylinders[k].contact(centre, 0.0).gap <= sphere)
         statics_.push_back({StaticKind::Cylinder, k});
     // A finite shape only where it is: cells far from it never see it.
     for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
@@ -573,11 +573,9 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
             std::min(bodies_.restitution[i], bodies_.boxRestitution[ref.index])};
   }
   if (ref.kind == StaticKind::Cylinder) {
-    const CylinderShape& cylinder = bodies_.cylinders[ref.index];
-    Vec3 n = cylinder.perpendicular(position - cylinder.point);
-    const double gap = n.norm() - cylinder.radius - r;
-    n.normalize();
-    return {n, gap, std::min(bodies_.restitution[i], bodies_.cylinderRestitution[ref.index])};
+    const CylinderShape::Contact contact = bodies_.cylinders[ref.index].contact(position, r);
+    return {contact.normal, contact.gap,
+            std::min(bodies_.restitution[i], bodies_.cylinderRestitution[ref.index])};
   }
   const PlaneShape& plane = bodies_.planes[ref.index];
   return {plane.normal, plane.gap(position, r),

@@ -18,7 +18,7 @@ OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& pos
       escaped = escaped || gap + r < 0.0;
     }
     for (const CylinderShape& cylinder : bodies.cylinders) {
-      const double gap = cylinder.gap(p, r);
+      const double gap = cylinder.contact(p, r).gap;
       report.maxPenetration = std::max(report.maxPenetration, -gap);
       escaped = escaped || gap + r < 0.0;
     }

@@ -50,11 +50,13 @@ struct Plane : ObjectInfo {
   friend bool operator==(const Plane&, const Plane&) = default;
 };
 
-// Infinite solid cylinder around the line through `point` along `axis`.
+// Solid cylinder around the line through `point` along `axis`: infinite, or with a `length`
+// and flat caps, `point` then being the middle of its axis.
 struct Cylinder : ObjectInfo {
   Vec3 point = Vec3::Zero();
   Vec3 axis = Vec3::UnitY();  // any non-zero length
   double radius = 1.0;
+  std::optional<double> length;
   friend bool operator==(const Cylinder&, const Cylinder&) = default;
 };
 

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace carom {
@@ -18,14 +20,36 @@ struct PlaneShape {
 };
 
 struct CylinderShape {
-  Vec3 point;  // on the axis
+  Vec3 point;  // on the axis; for a capped cylinder the middle of its axis
   Vec3 axis;   // unit
   double radius;
+  double halfLength = std::numeric_limits<double>::infinity();  // finite: capped
+  bool capped() const { return halfLength < std::numeric_limits<double>::infinity(); }
   // Component of `x` perpendicular to the axis.
   Vec3 perpendicular(const Vec3& x) const { return x - axis.dot(x) * axis; }
-  // Signed gap between a ball's surface and the cylinder's, and the outward normal at the ball.
-  double gap(const Vec3& centre, double ballRadius) const {
-    return perpendicular(centre - point).norm() - radius - ballRadius;
+  // The gap between a ball's surface and the cylinder's, and the unit normal from the cylinder's
+  // surface towards the centre: from the closest point of side, cap or rim, or, for a centre
+  // inside, out of the nearer of side and cap.
+  struct Contact {
+    Vec3 normal;
+    double gap;
+  };
+  Contact contact(const Vec3& centre, double ballRadius) const {
+    const Vec3 offset = centre - point;
+    const double along = axis.dot(offset);
+    const Vec3 across = offset - along * axis;
+    const double distance = across.norm();
+    // On the axis any direction across it will do.
+    const Vec3 out = distance > 0.0 ? Vec3(across / distance) : axis.unitOrthogonal();
+    const double outside = distance - radius;            // beyond the side
+    const double beyond = std::abs(along) - halfLength;  // beyond the cap (-inf when infinite)
+    const Vec3 capNormal = along < 0.0 ? Vec3(-axis) : axis;
+    if (outside > 0.0 && beyond > 0.0) {  // nearest the rim
+      const double rim = std::hypot(outside, beyond);
+      return {(outside * out + beyond * capNormal) / rim, rim - ballRadius};
+    }
+    if (outside >= beyond) return {out, outside - ballRadius};
+    return {capNormal, beyond - ballRadius};
   }
 };
 
@@ -68,7 +92,8 @@ inline PlaneShape planeShape(const Plane& plane) {
 }
 
 inline CylinderShape cylinderShape(const Cylinder& cylinder) {
-  return {cylinder.point, cylinder.axis.normalized(), cylinder.radius};
+  return {cylinder.point, cylinder.axis.normalized(), cylinder.radius,
+          cylinder.length ? 0.5 * *cylinder.length : std::numeric_limits<double>::infinity()};
 }
 
 inline BoxShape boxShape(const Box& box) {

@@ -166,6 +166,7 @@ bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* error
   check.vector(prefix + ".point", cylinder.point);
   check.direction(prefix + ".axis", cylinder.axis);
   check.radius(prefix + ".radius", cylinder.radius);
+  if (cylinder.length) check.radius(prefix + ".length", *cylinder.length);
   check.info(prefix, cylinder);
   return check.ok();
 }
@@ -381,12 +382,12 @@ void checkBallAgainstPlane(const Ball& ball, std::size_t ballIndex, const Indexe
 
 void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
                               const IndexedCylinder& cylinder, ErrorList& errors) {
-  const double distance = cylinder.shape.gap(ball.position, 0.0) + cylinder.shape.radius;
-  const double radiusSum = ball.radius + cylinder.shape.radius;
-  if (overlaps(radiusSum - distance, radiusSum))
+  const double depth = -cylinder.shape.contact(ball.position, ball.radius).gap;
+  // An infinite cylinder's overlap is judged against the radii's sum, as its distance is taken.
+  const double scale = cylinder.shape.capped() ? ball.radius : ball.radius + cylinder.shape.radius;
+  if (overlaps(depth, scale))
     errors.add(indexed("balls", ballIndex) + ".position",
-               "overlaps " + indexed("cylinders", cylinder.index) + " by " +
-                   formatDepth(radiusSum - distance));
+               "overlaps " + indexed("cylinders", cylinder.index) + " by " + formatDepth(depth));
 }
 
 void checkBallAgainstBox(const Ball& ball, std::size_t ballIndex, const IndexedBox& box,

@@ -22,4 +22,23 @@ inline Plane makePlane(const Vec3& point, const Vec3& normal) {
   return plane;
 }
 
+inline Box makeBox(const Vec3& center, const Vec3& half, std::optional<Rotation> rotation = {}) {
+  Box box;
+  box.center = center;
+  box.halfExtents = half;
+  box.rotation = rotation;
+  return box;
+}
+
+// Infinite without a length.
+inline Cylinder makeCylinder(const Vec3& point, const Vec3& axis, double radius,
+                             std::optional<double> length = {}) {
+  Cylinder cylinder;
+  cylinder.point = point;
+  cylinder.axis = axis;
+  cylinder.radius = radius;
+  cylinder.length = length;
+  return cylinder;
+}
+
 }  // namespace carom::testing

@@ -2,7 +2,7 @@
 // and random throws against an independent reference that samples the true gap finely and
 // bisects (written here, sharing nothing with the solver but the box's closest point).
 
-#include "sim/contact_time.h"
+#include "tests/contact_reference.h"
 
 #include <Eigen/Geometry>
 #include <QTest>
@@ -12,6 +12,7 @@
 #include <random>
 
 using namespace carom;
+using carom::testing::at;
 
 namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -23,47 +24,13 @@ BoxShape makeBox(const Vec3& center, const Vec3& half,
   return {center, axes, half};
 }
 
-Vec3 at(const BallPath& b, double t) {
-  return b.position + b.velocity * t + 0.5 * b.acceleration * t * t;
-}
-
 // The gap between ball and box surfaces, from the closest point alone.
-double gapAt(const BallPath& b, double radius, const BoxShape& box, double t) {
-  const Vec3 c = at(b, t);
+double boxGap(const Vec3& c, double radius, const BoxShape& box) {
   const Vec3 local = box.toLocal(c);
   const Vec3 clamped = local.cwiseMax(-box.half).cwiseMin(box.half);
   const double outside = (local - clamped).norm();
   if (outside > 0.0) return outside - radius;
   return (local.cwiseAbs() - box.half).maxCoeff() - radius;
-}
-
-// The first time the sampled gap is <= 0 (from > 0 at 0), narrowed by bisection; kNever if no
-// sample finds one.
-double referenceContact(const BallPath& b, double radius, const BoxShape& box, double horizon,
-                        int samples) {
-  double previous = 0.0;
-  for (int k = 1; k <= samples; ++k) {
-    const double t = horizon * k / samples;
-    if (gapAt(b, radius, box, t) <= 0.0) {
-      double lo = previous, hi = t;
-      for (int i = 0; i < 200 && hi - lo > 1e-15 * std::max(1.0, hi); ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (gapAt(b, radius, box, mid) <= 0.0 ? hi : lo) = mid;
-      }
-      return lo;
-    }
-    previous = t;
-  }
-  return kNever;
-}
-
-// Whether the gap goes below -depth somewhere within `width` after t: a real entry that the
-// coarse samples of the reference stepped over.
-bool dipsBelow(const BallPath& b, double radius, const BoxShape& box, double t, double width,
-               double depth) {
-  for (int k = 0; k <= 20000; ++k)
-    if (gapAt(b, radius, box, t + width * k / 20000) < -depth) return true;
-  return false;
 }
 }  // namespace
 
@@ -178,7 +145,7 @@ class TestBoxContact : public QObject {
     std::mt19937_64 engine(gravity ? 11 : 12);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const auto vec = [&] { return Vec3(unit(engine), unit(engine), unit(engine)); };
-    int hits = 0, finer = 0;
+    testing::ThrowTally tally;
     int pieces[3] = {0, 0, 0};  // faces, edges, corners met
     constexpr int kThrows = 3000;
     constexpr double kHorizon = 3.0;
@@ -196,34 +163,17 @@ class TestBoxContact : public QObject {
       ball.velocity = (target - ball.position) * (0.5 + std::abs(unit(engine))) +
                       (gravity ? Vec3(0, 0.5 * kG * 1.0, 0) : Vec3::Zero());
       const double solved = ballBoxContactTime(ball, r, box, kHorizon);
-      const double reference = referenceContact(ball, r, box, kHorizon, 20000);
       if (solved < kNever) {
         // Which piece it met: the number of axes along which the centre lies beyond the box.
         const Vec3 local = box.toLocal(at(ball, solved));
         const int beyond = ((local.cwiseAbs() - box.half).array() > 1e-9).count();
         if (beyond >= 1) ++pieces[beyond - 1];
       }
-      if (reference < kNever) {
-        ++hits;
-        QVERIFY2(
-            solved <= reference + 1e-9 * std::max(1.0, reference),
-            qPrintable(
-                QString("throw %1: solved %2, reference %3").arg(n).arg(solved).arg(reference)));
-        if (solved >= reference - 1e-9 * std::max(1.0, reference)) continue;
-      } else if (solved == kNever) {
-        continue;
-      }
-      // Earlier than the reference, or found where it found nothing: the gap must be zero there
-      // and dip below it just after.
-      ++finer;
-      QVERIFY2(std::abs(gapAt(ball, r, box, solved)) < 1e-9 &&
-                   dipsBelow(ball, r, box, solved, kHorizon / 20000, 0.0),
-               qPrintable(QString("throw %1: solved %2 (gap %3), reference %4")
-                              .arg(n)
-                              .arg(solved)
-                              .arg(gapAt(ball, r, box, solved))
-                              .arg(reference)));
+      const testing::GapOf gap = [&](const Vec3& c) { return boxGap(c, r, box); };
+      testing::compareWithReference(ball, gap, solved, kHorizon, 20000, n, tally);
+      if (QTest::currentTestFailed()) return;
     }
+    const int hits = tally.hits, finer = tally.finer;
     // The throws exercise the solver: most of them hit.
     QVERIFY2(hits > kThrows / 2, qPrintable(QString::number(hits)));
     qDebug("%d of %d throws hit (%d faces, %d edges, %d corners), %d found finer", hits, kThrows,

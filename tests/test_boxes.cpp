@@ -15,18 +15,11 @@
 
 using namespace carom;
 using carom::testing::makeBall;
+using carom::testing::makeBox;
 using carom::testing::makePlane;
 
 namespace {
 constexpr double kG = 9.81;
-
-Box makeBox(const Vec3& center, const Vec3& half, std::optional<Rotation> rotation = {}) {
-  Box box;
-  box.center = center;
-  box.halfExtents = half;
-  box.rotation = rotation;
-  return box;
-}
 
 Scene sceneWithGravity() {
   Scene s;

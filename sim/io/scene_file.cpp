@@ -24,10 +24,10 @@
 namespace carom::io {
 namespace {
 
-// The newest version this Carom reads and writes. A scene with no box is still written as
-// version 1, so that files older Carom can read stay readable by it.
+// The newest version this Carom reads and writes. A scene with no box and no capped cylinder is
+// still written as version 1, so that files older Carom can read stay readable by it.
 constexpr int kFormatVersion = 2;
-constexpr int kFirstVersionWithBoxes = 2;
+constexpr int kFirstVersionWithBoxes = 2;  // and capped cylinders
 constexpr char kFormatName[] = "carom-scene";
 
 const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", "boxes", "balls"};
@@ -35,7 +35,10 @@ const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", 
 const QStringList kTopKeysVersion1{"format", "version", "world", "planes", "cylinders", "balls"};
 const QStringList kWorldKeys{"gravity", "timeStep", "restitution", "method", "integrator"};
 const QStringList kPlaneKeys{"name", "point", "normal", "restitution", "color"};
-const QStringList kCylinderKeys{"name", "point", "axis", "radius", "restitution", "color"};
+const QStringList kCylinderKeys{"name",   "point",       "axis", "radius",
+                                "length", "restitution", "color"};
+// Version 1 had no capped cylinders: there "length" is a key it does not know.
+const QStringList kCylinderKeysVersion1{"name", "point", "axis", "radius", "restitution", "color"};
 const QStringList kBoxKeys{"name", "center", "halfExtents", "rotation", "restitution", "color"};
 const QStringList kBallKeys{"name", "position",    "velocity", "radius",
                             "mass", "restitution", "color"};
@@ -262,16 +265,19 @@ Scene readScene(const QJsonObject& object) {
     readInfo(reader, plane);
     scene.planes.push_back(std::move(plane));
   });
-  top.forEach("cylinders", tolerance::kMaxCylinders,
-              [&](const QJsonObject& item, const QString& path) {
-                const ObjectReader reader(item, path, kCylinderKeys);
-                Cylinder cylinder;
-                cylinder.point = reader.vector("point");
-                cylinder.axis = reader.vector("axis");
-                cylinder.radius = reader.number("radius");
-                readInfo(reader, cylinder);
-                scene.cylinders.push_back(std::move(cylinder));
-              });
+  top.forEach(
+      "cylinders", tolerance::kMaxCylinders, [&](const QJsonObject& item, const QString& path) {
+        const ObjectReader reader(
+            item, path, version < kFirstVersionWithBoxes ? kCylinderKeysVersion1 : kCylinderKeys);
+        Cylinder cylinder;
+        cylinder.point = reader.vector("point");
+        cylinder.axis = reader.vector("axis");
+        cylinder.radius = reader.number("radius");
+        if (version >= kFirstVersionWithBoxes && reader.has("length"))
+          cylinder.length = reader.number("length");
+        readInfo(reader, cylinder);
+        scene.cylinders.push_back(std::move(cylinder));
+      });
   if (version >= kFirstVersionWithBoxes)
     top.forEach("boxes", tolerance::kMaxBoxes, [&](const QJsonObject& item, const QString& path) {
       const ObjectReader reader(item, path, kBoxKeys);
@@ -521,7 +527,9 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
 QByteArray serializeScene(const Scene& scene) {
   JsonFields top;
   top.add("format", jsonString(kFormatName));
-  const bool versionOne = scene.boxes.empty();
+  const bool versionOne =
+      scene.boxes.empty() && std::none_of(scene.cylinders.begin(), scene.cylinders.end(),
+                                          [](const Cylinder& c) { return c.length.has_value(); });
   top.add("version", QByteArray::number(versionOne ? 1 : kFirstVersionWithBoxes));
   // Unknown top-level keys such as "units" go right after the header, where a reader looks.
   // In version 1 "boxes" is one of them.
@@ -554,8 +562,9 @@ QByteArray serializeScene(const Scene& scene) {
     fields.add("point", jsonVector(cylinder.point));
     fields.add("axis", jsonVector(cylinder.axis));
     fields.add("radius", numberText(cylinder.radius));
+    if (cylinder.length) fields.add("length", numberText(*cylinder.length));
     fields.addInfo(cylinder);
-    fields.addExtra(cylinder.extra, kCylinderKeys);
+    fields.addExtra(cylinder.extra, versionOne ? kCylinderKeysVersion1 : kCylinderKeys);
     cylinders << fields.oneLine();
   }
   top.add("cylinders", listText(cylinders));
