@@ -139,16 +139,29 @@ void EventEngine::buildStaticLists() {
       if (border || nearest <= reach) statics_.push_back({StaticKind::Plane, k});
     }
     // A round shape is near when it comes within the cell's bounding sphere (grown by the
-    // reach); border cells reach out to infinity and see every shape.
+    // reach); border cells reach out to infinity and see every infinite cylinder.
     const Vec3 centre = 0.5 * (lo + hi);
     const double sphere = 0.5 * (hi - lo).norm() + reach;
-    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
-      if (border || bodies_.cylinders[k].contact(centre, 0.0).gap <= sphere)
+    // A finite shape only where it is: its bounding box grown by the reach meets the cell (a
+    // border cell's infinite side included), and for a cell inside the grid its bounding sphere.
+    const auto near = [&](const Vec3& shapeCentre, const Vec3& shapeReach, auto gapToCentre) {
+      const Vec3 low = shapeCentre - shapeReach - Vec3::Constant(reach);
+      const Vec3 high = shapeCentre + shapeReach + Vec3::Constant(reach);
+      if ((high.array() < lo.array()).any() || (low.array() > hi.array()).any()) return false;
+      return border || gapToCentre() <= sphere;
+    };
+    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
+      const CylinderShape& cylinder = bodies_.cylinders[k];
+      const auto gap = [&] { return cylinder.contact(centre, 0.0).gap; };
+      if (cylinder.capped() ? near(cylinder.point, cylinder.reach(), gap)
+                            : border || gap() <= sphere)
         statics_.push_back({StaticKind::Cylinder, k});
-    // A finite shape only where it is: cells far from it never see it.
-    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
-      if (border || bodies_.boxes[k].contact(centre, 0.0).gap <= sphere)
+    }
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
+      const BoxShape& box = bodies_.boxes[k];
+      if (near(box.center, box.reach(), [&] { return box.contact(centre, 0.0).gap; }))
         statics_.push_back({StaticKind::Box, k});
+    }
     if (statics_.size() > budget) {
       statics_.clear();
       for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)

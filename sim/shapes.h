@@ -25,6 +25,11 @@ struct CylinderShape {
   double radius;
   double halfLength = std::numeric_limits<double>::infinity();  // finite: capped
   bool capped() const { return halfLength < std::numeric_limits<double>::infinity(); }
+  // Half the extent along each world axis around `point` (infinite unless capped).
+  Vec3 reach() const {
+    const Vec3 acrossAxis = (Vec3::Ones() - axis.cwiseProduct(axis)).cwiseMax(0.0).cwiseSqrt();
+    return halfLength * axis.cwiseAbs() + radius * acrossAxis;
+  }
   // Component of `x` perpendicular to the axis.
   Vec3 perpendicular(const Vec3& x) const { return x - axis.dot(x) * axis; }
   // The gap between a ball's surface and the cylinder's, and the unit normal from the cylinder's
@@ -60,6 +65,8 @@ struct BoxShape {
   Eigen::Matrix3d axes;
   Vec3 half;
   Vec3 toLocal(const Vec3& x) const { return axes.transpose() * (x - center); }
+  // Half the extent along each world axis around the centre.
+  Vec3 reach() const { return (axes * half.asDiagonal()).cwiseAbs().rowwise().sum(); }
   Vec3 closestPoint(const Vec3& x) const {
     const Vec3 local = toLocal(x);
     return center + axes * local.cwiseMax(-half).cwiseMin(half);

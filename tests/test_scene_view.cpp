@@ -137,6 +137,7 @@ class TestSceneView : public QObject {
   void renderSceneHoldsEveryObject();
   void ballsShowTheirColours();
   void boxesAreDrawnSolid();
+  void cappedCylindersEndAtTheirCaps();
   void movingABallMovesItsColour();
   void nearerBallHidesFartherOne_data();
   void nearerBallHidesFartherOne();
@@ -285,6 +286,33 @@ void TestSceneView::renderSceneClipsToTheRoom() {
 
 // Planes and cylinders placed away from the balls, or beyond a wall, are drawn through their own
 // points (the box was the balls' and hid them).
+// A capped cylinder is drawn between its caps, closed, and not beyond them.
+void TestSceneView::cappedCylindersEndAtTheirCaps() {
+  carom::Scene scene = testScene();
+  carom::Cylinder stump;
+  stump.point = Vec3(1.2, 0.4, 1.3);
+  stump.axis = Vec3(0, 2, 0);
+  stump.radius = 0.3;
+  stump.length = 0.8;
+  stump.color = "#00ff00";
+  scene.cylinders.push_back(stump);
+  const RenderScene render = makeRenderScene(scene);
+  QVERIFY((render.cylinders[1].start - Vec3(1.2, 0, 1.3)).norm() < 1e-12);
+  QVERIFY((render.cylinders[1].end - Vec3(1.2, 0.8, 1.3)).norm() < 1e-12);
+
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QImage image = view.grabFramebuffer();
+  // The middle of the side towards the camera, and of the top cap.
+  for (const Vec3& onStump : {Vec3(1.2, 0.4, 1.6), Vec3(1.2, 0.8, 1.3)}) {
+    const QRgb pixel = pixelAt(view, image, onStump);
+    QVERIFY2(hasHue(pixel, Green), qPrintable(describe(pixel)));
+  }
+  const QRgb above = pixelAt(view, image, Vec3(1.2, 1.3, 1.6));
+  QVERIFY2(!hasHue(above, Green), qPrintable(describe(above)));
+}
+
 void TestSceneView::renderSceneHoldsEveryObject() {
   carom::Scene scene;
   carom::Plane floor;  // a wall of the box: y >= 0

@@ -66,13 +66,21 @@ Bounds sceneBounds(const Scene& scene) {
     anchorMax = anchorMax.cwiseMax(point);
     include(point, 0.0);
   };
-  for (const Cylinder& cylinder : scene.cylinders) anchor(cylinder.point);
-  // A box is finite: all of it is content.
+  // A capped cylinder and a box are finite: all of them is content.
+  const auto anchorAround = [&](const Vec3& centre, const Vec3& reach) {
+    anchor(centre - reach);
+    anchor(centre + reach);
+  };
+  for (const Cylinder& cylinder : scene.cylinders) {
+    const CylinderShape shape = cylinderShape(cylinder);
+    if (shape.capped())
+      anchorAround(shape.point, shape.reach());
+    else
+      anchor(cylinder.point);
+  }
   for (const Box& box : scene.boxes) {
     const BoxShape shape = boxShape(box);
-    const Vec3 reach = (shape.axes * shape.half.asDiagonal()).cwiseAbs().rowwise().sum();
-    anchor(shape.center - reach);
-    anchor(shape.center + reach);
+    anchorAround(shape.center, shape.reach());
   }
   for (const Plane& plane : scene.planes) anchor(plane.point);
   if (!(contentMin.array() <= contentMax.array()).all()) {
@@ -223,8 +231,12 @@ RenderScene makeRenderScene(const Scene& scene) {
     RenderCylinder rendered;
     rendered.radius = cylinder.radius;
     rendered.color = colorOr(cylinder.color, kDefaultCylinderColor);
-    if (!clipLineToBounds(cylinder.point, cylinder.axis, render.bounds, &rendered.start,
-                          &rendered.end)) {
+    const CylinderShape shape = cylinderShape(cylinder);
+    if (shape.capped()) {
+      rendered.start = shape.point - shape.halfLength * shape.axis;
+      rendered.end = shape.point + shape.halfLength * shape.axis;
+    } else if (!clipLineToBounds(cylinder.point, cylinder.axis, render.bounds, &rendered.start,
+                                 &rendered.end)) {
       rendered.start = rendered.end = cylinder.point;
     }
     render.cylinders.push_back(std::move(rendered));

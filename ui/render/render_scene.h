@@ -22,7 +22,8 @@ struct RenderPlane {
 };
 
 struct RenderCylinder {
-  // The axis clipped to the bounds. `start == end` when it misses them.
+  // The ends of a capped cylinder, or the axis clipped to the bounds (`start == end` when it
+  // misses them).
   Vec3 start = Vec3::Zero();
   Vec3 end = Vec3::Zero();
   double radius = 1.0;
