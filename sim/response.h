@@ -32,6 +32,9 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
 // none. Calls reflected(k, approach) for each reflection off surfaces[k], with the approach
 // speed it met it at. False when `limit` reflections
 // did not suffice (a V of about π/limit rad or less, a ball jammed between parallel walls).
+// An approach within the round-off of v (a ball sliding along a surface, its velocity off the
+// surface by a few ulps) is none: reflecting it leaves v as it was, and looping on it would not
+// end. Skipping it changes no energy, since the reflection changes nothing.
 template <typename Surfaces, typename OnReflect>
 bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& reflected) {
   for (long reflections = 0; reflections < limit;) {
@@ -39,7 +42,9 @@ bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& r
     for (std::size_t k = 0; k < surfaces.size(); ++k) {
       const double approach = -v.dot(surfaces[k].normal);
       if (approach <= 0.0) continue;
+      const Vec3 before = v;
       resolveAgainstSurface(v, surfaces[k].normal, surfaces[k].restitution, 0.0);
+      if (v == before) continue;
       reflected(k, approach);
       any = true;
       ++reflections;

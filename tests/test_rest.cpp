@@ -3,6 +3,7 @@
 
 #include "sim/contact_forces.h"
 #include "sim/measures.h"
+#include "sim/response.h"
 #include "sim/scene_builders.h"
 #include "sim/simulation.h"
 #include "sim/tolerances.h"
@@ -10,6 +11,7 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
 
 using namespace carom;
@@ -30,6 +32,34 @@ Scene floorScene(double restitution) {
 class TestRest : public QObject {
   Q_OBJECT
  private slots:
+  // A ball sliding down a 35° board (the Galton board's funnel) had a velocity off the board by
+  // a few ulps: each reflection left it as it was, and the loop ran to its ten-million cap. An
+  // approach within round-off is none: no reflection, velocity and energy unchanged.
+  void approachWithinRoundOffIsNoReflection() {
+    const double angle = 35.0 * std::acos(-1.0) / 180.0;
+    struct Surface {
+      Vec3 normal;
+      double restitution;
+    };
+    const std::array<Surface, 1> board{{{Vec3(std::sin(angle), std::cos(angle), 0.0), 0.5}}};
+    // Along the board, nudged by ulps until it moves into it by less than round-off.
+    Vec3 v = 0.53 * Vec3(std::cos(angle), -std::sin(angle), 0.0);
+    for (int k = 0; k < 200 && !(v.dot(board[0].normal) < 0.0); ++k)
+      v.x() = std::nextafter(v.x(), 0.0);
+    QVERIFY(v.dot(board[0].normal) < 0.0 && v.dot(board[0].normal) > -1e-15);
+    const Vec3 before = v;
+    int reflections = 0;
+    QVERIFY(carom::reflectOffEach(v, board, 1000, [&](std::size_t, double) { ++reflections; }));
+    QCOMPARE(reflections, 0);
+    QCOMPARE(v, before);
+    // A real approach still reflects, with its restitution.
+    Vec3 falling(0.0, -1.0, 0.0);
+    QVERIFY(
+        carom::reflectOffEach(falling, board, 1000, [&](std::size_t, double) { ++reflections; }));
+    QCOMPARE(reflections, 1);
+    QVERIFY(std::abs(falling.dot(board[0].normal) - 0.5 * std::cos(angle)) < 1e-15);
+  }
+
   void inelasticBounceComesToRest_data() {
     QTest::addColumn<double>("restitution");
     for (double e : {0.0, 0.3, 0.5, 0.9, 0.99}) QTest::addRow("e=%g", e) << e;
