@@ -32,6 +32,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
 
   void outlineGroupsEveryObject();
   void outlineFollowsEdits();
+  void boxesAreGroupedPickedAndHighlighted();
   void selectingInTheOutlineSelectsInTheView();
   void selectingInTheViewSelectsInTheOutline();
   void renamingInTheOutline();
@@ -148,6 +149,49 @@ void TestEditorDocks::outlineFollowsEdits() {
   const QModelIndex planes = outline().groupIndex(ObjectKind::Plane);
   QCOMPARE(outline().rowCount(planes), 2);
   QCOMPARE(outline().index(0, 0, planes).data().toString(), QString("Plane 0"));
+}
+
+// Boxes in their own group, picked in the view by their true shape (a turned box's corner
+// beside it is the floor), and shown in the selection's colour.
+void TestEditorDocks::boxesAreGroupedPickedAndHighlighted() {
+  carom::Scene edited = document().scene();
+  carom::Box crate;
+  crate.center = Vec3(2, 0.5, 0);
+  crate.halfExtents = Vec3(0.5, 0.5, 0.5);
+  crate.rotation = carom::Rotation{Vec3::UnitY(), 45};
+  crate.color = "#3060c0";
+  edited.boxes.push_back(crate);
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  const QModelIndex boxes = outline().groupIndex(ObjectKind::Box);
+  QCOMPARE(boxes.data().toString(), QString("Boxes (1)"));
+  QCOMPARE(outline().index(0, 0, boxes).data().toString(), QString("Box 0"));
+  QCOMPARE(outline().index(0, 0, boxes).data(Qt::ToolTipRole).toString(), QString("boxes[0]"));
+
+  chooseTool("toolSelect");
+  document().setSelection({});  // the addition selected it
+  const QImage before = view().grabFramebuffer();
+  click(Vec3(2, 1.0, 0));  // the middle of its top
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Box, 0}}));
+  QCOMPARE(outlineSelection(), (Selection{{ObjectKind::Box, 0}}));
+  QVERIFY(properties().heading().contains("Box 0"));
+  // The top's middle takes on the selection's orange: more red, less blue.
+  const QImage after = view().grabFramebuffer();
+  const double scale = after.width() / double(view().width());
+  const QPoint top = (view().project(Vec3(2, 1.0, 0)) * scale).toPoint();
+  QVERIFY2(QColor(after.pixel(top)).red() > QColor(before.pixel(top)).red() + 40,
+           qPrintable(QString("%1 -> %2")
+                          .arg(QColor(before.pixel(top)).name(), QColor(after.pixel(top)).name())));
+  // Turned by 45 degrees, the box leaves the floor bare at the corner of its unturned outline.
+  click(Vec3(2.45, 0, 0.45));
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Plane, 0}}));
+  // Deleting it empties the group and leaves the rest alone.
+  const carom::Scene withBox = document().scene();
+  document().setSelection({{ObjectKind::Box, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QCOMPARE(outline().rowCount(boxes), 0);
+  carom::Scene expected = withBox;
+  expected.boxes.clear();
+  QVERIFY(document().scene() == expected);
 }
 
 void TestEditorDocks::selectingInTheOutlineSelectsInTheView() {

@@ -212,7 +212,7 @@ void TestUserSession::objectsAddedAwayFromTheBallsAreDrawn() {
   QVERIFY(shown->cylinders[0].start != shown->cylinders[0].end);
 
   // And the picture shows them there: the clicked pixels changed from what was behind them.
-  view().setHighlighted({}, {}, {});  // the selection's colour aside
+  view().setHighlighted({}, {}, {}, {});  // the selection's colour aside
   view().setHandleArrow(std::nullopt);
   const auto changed = [&](const QPoint& at) {
     const QImage after = view().grabFramebuffer();

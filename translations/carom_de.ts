@@ -87,6 +87,16 @@
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Boxes</source>
+        <translation>Quader</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::EditorTools</name>

@@ -505,12 +505,12 @@ void MainWindow::editWorld(const QString& text, const std::function<void(World&)
 }
 
 void MainWindow::showSelection() {
-  std::vector<int> indices[3];
+  std::vector<int> indices[editor::kObjectKindCount];
   for (const editor::ObjectRef& ref : document_->selection())
     indices[int(ref.kind)].push_back(ref.index);
-  view_->setHighlighted(indices[int(editor::ObjectKind::Ball)],
-                        indices[int(editor::ObjectKind::Plane)],
-                        indices[int(editor::ObjectKind::Cylinder)]);
+  view_->setHighlighted(
+      indices[int(editor::ObjectKind::Ball)], indices[int(editor::ObjectKind::Plane)],
+      indices[int(editor::ObjectKind::Cylinder)], indices[int(editor::ObjectKind::Box)]);
   std::optional<std::pair<Vec3, Vec3>> arrow;
   if (const std::optional<editor::EditorTools::Handle> handle = tools_->handle())
     arrow = {handle->base, handle->tip};

@@ -32,6 +32,20 @@ std::pair<Vec3, Vec3> tangents(const Vec3& normal) {
   return {u, normal.cross(u)};
 }
 
+ObjectKind objectKindOf(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::Plane:
+      return ObjectKind::Plane;
+    case ShapeKind::Cylinder:
+      return ObjectKind::Cylinder;
+    case ShapeKind::Box:
+      return ObjectKind::Box;
+    case ShapeKind::Ball:
+      break;
+  }
+  return ObjectKind::Ball;
+}
+
 }  // namespace
 
 EditorTools::EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent)
@@ -76,10 +90,7 @@ std::optional<EditorTools::Picked> EditorTools::pick(const QPointF& position) co
   const Eigen::AlignedBox3d clip = view_->clipBox();
   const std::optional<RayHit> hit = castRay(document_->scene(), origin, direction, &clip);
   if (!hit) return std::nullopt;
-  const ObjectKind kind = hit->kind == ShapeKind::Ball    ? ObjectKind::Ball
-                          : hit->kind == ShapeKind::Plane ? ObjectKind::Plane
-                                                          : ObjectKind::Cylinder;
-  return Picked{{kind, hit->index}, hit->point};
+  return Picked{{objectKindOf(hit->kind), hit->index}, hit->point};
 }
 
 std::optional<EditorTools::Handle> EditorTools::handle() const {
@@ -104,6 +115,8 @@ std::optional<EditorTools::Handle> EditorTools::handle() const {
       const Cylinder& cylinder = scene.cylinders[ref.index];
       return Handle{cylinder.point, cylinder.point + length() * cylinder.axis.normalized()};
     }
+    case ObjectKind::Box:
+      break;
   }
   return std::nullopt;
 }
@@ -129,6 +142,7 @@ QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& 
       if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
       return tr("Turn Cylinder");
     }
+    case ObjectKind::Box:
     case ObjectKind::Ball:
       break;
   }

@@ -332,7 +332,7 @@ void PropertiesDock::refresh() {
     heading_->setText(objectInfo(scene, ref).name.empty()
                           ? objectLabel(scene, ref)
                           : tr("%1: %2").arg(kindName(ref.kind), objectLabel(scene, ref)));
-  } else if (kinds == kBalls || kinds == kPlanes || kinds == kCylinders) {
+  } else if (std::has_single_bit(static_cast<unsigned>(kinds))) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
                           .arg(kindPluralName(kindOfFlag(kinds))));
   } else {

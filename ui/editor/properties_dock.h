@@ -47,7 +47,7 @@ class PropertiesDock : public QDockWidget {
  private:
   // Which objects a row applies to; a row shows when every selected object is of its kinds.
   // The object bits are 1 << ObjectKind.
-  enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kObjects = 7, kWorld = 8 };
+  enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kBoxes = 8, kObjects = 15, kWorld = 16 };
   // Accessors return the field inside a scene, for one object (unused for world rows). The
   // scene is const for reading; a write goes through the same accessor on the edited copy.
   using NumberAccess = const double* (*)(const Scene&, const ObjectRef&);

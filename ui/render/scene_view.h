@@ -64,8 +64,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   // The box the view clips infinite planes and cylinders to: picking ignores what lies outside.
   Eigen::AlignedBox3d clipBox() const;
-  // Shown in the selection's colour (indices into the scene's balls, planes, cylinders).
-  void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders);
+  // Shown in the selection's colour (indices into the scene's balls, planes, cylinders, boxes).
+  void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders,
+                      std::vector<int> boxes);
   // An arrow drawn on top of everything: the editor's handle of a ball's velocity, a plane's
   // normal or a cylinder's axis.
   void setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo);
@@ -151,6 +152,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::vector<int> highlightedBalls_;
   std::vector<int> highlightedPlanes_;
   std::vector<int> highlightedCylinders_;
+  std::vector<int> highlightedBoxes_;
   std::optional<std::pair<Vec3, Vec3>> handleArrow_;
   std::optional<bool> antialiasingChoice_;
   bool softwareRenderer_ = false;
