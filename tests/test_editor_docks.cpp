@@ -40,6 +40,9 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void refusesBadValues_data();
   void refusesBadValues();
   void editsEverySelectedObject();
+  void editsABox();
+  void refusesBadBoxValues_data();
+  void refusesBadBoxValues();
   void showsOnlyTheFieldsTheSelectionHas();
   void editsTheWorldWhenNothingIsSelected();
   void picksAColour();
@@ -102,6 +105,20 @@ class TestEditorDocks : public carom::testing::EditorFixture {
     for (const QModelIndex& index : tree().selectionModel()->selectedIndexes())
       if (auto ref = outline().objectAt(index)) selection.push_back(*ref);
     return carom::editor::normalized(selection);
+  }
+  // Adds an unturned box of half size 0.5 resting on the floor at (2, 0, 0), as one command.
+  void addBox() {
+    carom::Scene edited = document().scene();
+    carom::Box crate;
+    crate.center = Vec3(2, 0.5, 0);
+    crate.halfExtents = Vec3(0.5, 0.5, 0.5);
+    edited.boxes.push_back(crate);
+    QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  }
+  bool unitShown(const QString& unit) {
+    for (QLabel* label : properties().findChildren<QLabel*>())
+      if (label->isVisible() && label->text() == unit) return true;
+    return false;
   }
   // Adds a cylinder standing at (2, 0, -2), away from the ball, as one command.
   void addCylinder() {
@@ -353,6 +370,104 @@ void TestEditorDocks::editsEverySelectedObject() {
   QCOMPARE(document().scene().balls[0].velocity, Vec3(0, 3, 0));
   QCOMPARE(document().scene().balls[1].velocity, Vec3(0, 3, 0));
   QCOMPARE(document().scene().balls[1].position.x(), 2.0);
+}
+
+// Every field of a box typed in, each one command that undoes; a box not turned shows empty
+// rotation fields, and emptying the degrees takes the turn away.
+void TestEditorDocks::editsABox() {
+  addBox();
+  document().setSelection({{ObjectKind::Box, 0}});
+  QCOMPARE(properties().heading(), QString("Box 0"));
+  QVERIFY(field("center.x")->isVisible() && field("halfExtents.z")->isVisible());
+  QVERIFY(!field("position.x")->isVisible() && !field("point.x")->isVisible());
+  QCOMPARE(field("center.y")->text(), QString("0.5"));
+  QCOMPARE(field("halfExtents.x")->text(), QString("0.5"));
+  QCOMPARE(field("rotationDegrees")->text(), QString());
+  QCOMPARE(field("rotationDegrees")->placeholderText(), QString("none"));
+  QCOMPARE(field("rotationAxis.y")->placeholderText(), QString("1"));
+  QVERIFY(unitShown("m") && unitShown("°") && unitShown("(any length)"));
+
+  const int before = document().undoStack()->count();
+  type("name", "crate");
+  type("center.z", "-1.5");
+  type("halfExtents.y", "0.25");
+  type("rotationDegrees", "30");
+  type("rotationAxis.x", "1");
+  type("restitution", "0.4");
+  type("color", "#204080");
+  const carom::Box& box = document().scene().boxes[0];
+  QCOMPARE(box.name, std::string("crate"));
+  QCOMPARE(box.center, Vec3(2, 0.5, -1.5));
+  QCOMPARE(box.halfExtents, Vec3(0.5, 0.25, 0.5));
+  QVERIFY(box.rotation == (carom::Rotation{Vec3(1, 1, 0), 30}));
+  QCOMPARE(box.restitution, std::optional(0.4));
+  QCOMPARE(box.color, std::string("#204080"));
+  QCOMPARE(document().undoStack()->count(), before + 7);
+  QCOMPARE(document().undoStack()->text(before + 2), QString("Resize Box"));
+  QCOMPARE(document().undoStack()->text(before + 3), QString("Turn Box"));
+  QCOMPARE(properties().heading(), QString("Box: crate"));
+  QCOMPARE(field("rotationAxis.x")->text(), QString("1"));
+  // Emptied degrees: not turned at all.
+  type("rotationDegrees", "");
+  QVERIFY(!document().scene().boxes[0].rotation);
+  QCOMPARE(field("rotationAxis.x")->text(), QString());
+  // Undo walks back through the turn, one field at a time.
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0].rotation == (carom::Rotation{Vec3(1, 1, 0), 30}));
+  QCOMPARE(field("rotationDegrees")->text(), QString("30"));
+  for (int i = 0; i < 4; ++i) document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes[0].halfExtents, Vec3(0.5, 0.25, 0.5));
+  QVERIFY(!document().scene().boxes[0].rotation);
+  document().undoStack()->undo();
+  QCOMPARE(field("halfExtents.y")->text(), QString("0.5"));
+  document().undoStack()->redo();
+  QCOMPARE(field("halfExtents.y")->text(), QString("0.25"));
+  // The ball is untouched throughout.
+  QCOMPARE(document().scene().balls[0].name, std::string("first"));
+  // A turn about a zero axis is refused, whichever component makes it zero.
+  type("rotationDegrees", "10");
+  type("rotationAxis.y", "0");
+  QVERIFY2(properties().message().contains("boxes[0].rotation.axis"),
+           qPrintable(properties().message()));
+  QVERIFY(document().scene().boxes[0].rotation == (carom::Rotation{Vec3::UnitY(), 10}));
+}
+
+void TestEditorDocks::refusesBadBoxValues_data() {
+  QTest::addColumn<QString>("field");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("zero size") << "halfExtents.x"
+                             << "0"
+                             << "boxes[0].halfExtents[0]: must be positive";
+  QTest::newRow("negative size") << "halfExtents.z"
+                                 << "-0.5"
+                                 << "boxes[0].halfExtents[2]: must be positive";
+  QTest::newRow("onto the ball") << "center.x"
+                                 << "0.5"
+                                 << "balls[0].position: overlaps boxes[0]";
+  QTest::newRow("grown into the ball") << "halfExtents.x"
+                                       << "1.8"
+                                       << "overlaps boxes[0]";
+  QTest::newRow("not a number") << "rotationDegrees"
+                                << "lots"
+                                << "“lots” is not a number";
+}
+
+void TestEditorDocks::refusesBadBoxValues() {
+  QFETCH(QString, field);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  addBox();
+  document().setSelection({{ObjectKind::Box, 0}});
+  const carom::Scene before = document().scene();
+  const int commands = document().undoStack()->count();
+  const QString shownBefore = this->field(field)->text();
+  type(field, typed);
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), commands);
+  QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
+  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QCOMPARE(this->field(field)->text(), shownBefore);
 }
 
 void TestEditorDocks::showsOnlyTheFieldsTheSelectionHas() {

@@ -414,6 +414,51 @@
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Centre</source>
+        <translation>Mittelpunkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Half extents</source>
+        <translation>Halbe Kantenlängen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Resize Box</source>
+        <translation>Quadergröße ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation axis</source>
+        <translation>Drehachse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Turn Box</source>
+        <translation>Quader drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation</source>
+        <translation>Drehung</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Degrees about the axis, right-handed; empty: not turned</source>
+        <translation>Grad um die Achse, rechtshändig; leer: nicht gedreht</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::SceneDocument</name>

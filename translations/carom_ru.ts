@@ -416,6 +416,51 @@
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Centre</source>
+        <translation>Центр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Half extents</source>
+        <translation>Половины размеров</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Resize Box</source>
+        <translation>Изменить размер ящика</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation axis</source>
+        <translation>Ось поворота</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Turn Box</source>
+        <translation>Повернуть ящик</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation</source>
+        <translation>Поворот</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Degrees about the axis, right-handed; empty: not turned</source>
+        <translation>Градусы вокруг оси, по правилу правой руки; пусто: без поворота</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::SceneDocument</name>

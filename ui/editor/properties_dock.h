@@ -86,6 +86,8 @@ class PropertiesDock : public QDockWidget {
   void addText(int kinds, const char* name, const char* label, const char* change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
+  // A box's turn: its axis's components and its degrees, all empty for a box not turned.
+  void addRotation();
   // A world setting chosen from `keys`; `choose` sets the index chosen.
   QComboBox* addChoice(const char* name, const char* label, const char* change,
                        const std::vector<std::string_view>& keys, void (*choose)(World&, int));
@@ -107,6 +109,8 @@ class PropertiesDock : public QDockWidget {
   void numberEdited(const NumberEditor& editor);
   void textEdited(const TextEditor& editor);
   void restitutionEdited();
+  // `component` 0 to 2 of the axis, or 3 for the degrees; emptied degrees take the turn away.
+  void rotationEdited(int component);
   void pickColor();
 
   SceneDocument* document_;
@@ -118,6 +122,9 @@ class PropertiesDock : public QDockWidget {
   std::vector<TextEditor> texts_;
   int restitutionRow_ = -1;
   NumberField* restitution_ = nullptr;
+  int rotationAxisRow_ = -1;
+  int rotationDegreesRow_ = -1;
+  NumberField* rotationFields_[4] = {};  // the axis's x, y, z and the degrees
   int colorRow_ = -1;
   QLineEdit* color_ = nullptr;
   QToolButton* colorButton_ = nullptr;
