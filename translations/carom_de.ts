@@ -150,6 +150,11 @@
         <source>Cannot place it there: %1</source>
         <translation>Kann dort nicht platziert werden: %1</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::OutlineDock</name>
@@ -1011,6 +1016,11 @@
         <source>Physics Notes</source>
         <translation>Physik-Notizen</translation>
     </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>carom::ui::MainWindow</name>
@@ -1386,6 +1396,11 @@
         <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
     </message>
 </context>
 <context>

@@ -150,6 +150,11 @@
         <source>Cannot place it there: %1</source>
         <translation>Сюда поставить нельзя: %1</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::OutlineDock</name>
@@ -1015,6 +1020,11 @@
         <source>Physics Notes</source>
         <translation>Заметки по физике</translation>
     </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
+    </message>
 </context>
 <context>
     <name>carom::ui::MainWindow</name>
@@ -1390,6 +1400,11 @@
         <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
     </message>
 </context>
 <context>

@@ -406,8 +406,9 @@ void MainWindow::retranslate() {
 
   toolsMenu_->setTitle(tr("&Tools"));
   toolsBar_->setWindowTitle(tr("Tools"));
-  const QString toolTexts[4] = {tr("Select"), tr("Add Ball"), tr("Add Plane"), tr("Add Cylinder")};
-  for (int i = 0; i < 4; ++i) {
+  const QString toolTexts[] = {tr("Select"), tr("Add Ball"), tr("Add Plane"), tr("Add Cylinder"),
+                               tr("Add Box")};
+  for (int i = 0; i < int(std::size(toolTexts)); ++i) {
     toolActions_[i]->setText(toolTexts[i]);
     toolActions_[i]->setToolTip(tr("%1 (%2)").arg(
         toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
@@ -534,7 +535,8 @@ void MainWindow::buildToolActions() {
   } tools[] = {{editor::EditorTools::Tool::Select, "toolSelect", Qt::Key_V},
                {editor::EditorTools::Tool::AddBall, "toolAddBall", Qt::Key_B},
                {editor::EditorTools::Tool::AddPlane, "toolAddPlane", Qt::Key_P},
-               {editor::EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C}};
+               {editor::EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C},
+               {editor::EditorTools::Tool::AddBox, "toolAddBox", Qt::Key_K}};
   toolsBar_ = addToolBar(QString());
   toolsBar_->setObjectName("tools");
   for (const auto& entry : tools) {

@@ -1,6 +1,7 @@
 #include "ui/editor/editor_tools.h"
 
 #include "sim/ray_cast.h"
+#include "sim/shapes.h"
 #include "ui/editor/scene_document.h"
 #include "ui/render/scene_view.h"
 
@@ -19,6 +20,10 @@ constexpr double kClickSlopPixels = 4.0;  // a press and release closer than thi
 constexpr double kTipGrabPixels = 8.0;
 constexpr double kDefaultBallRadius = 0.5;
 constexpr double kDefaultCylinderRadius = 0.3;
+constexpr double kDefaultBoxHalfExtent = 0.5;
+// Normals closer than this (1 - cosine) count as the same direction: a box on the floor or on
+// an unturned box's top stands unturned.
+constexpr double kSameDirection = 1e-9;
 constexpr int kNudgeRings = 4;  // free spots tried around a refused placement
 
 Vec3 toVec3(const QVector3D& v) {
@@ -278,13 +283,38 @@ bool EditorTools::mouseRelease(QMouseEvent* event) {
   return drag == Drag::Objects || drag == Drag::Handle;
 }
 
+Box EditorTools::boxOn(const Vec3& point, const Vec3& normal,
+                       const std::optional<RayHit>& hit) const {
+  const Scene& scene = document_->scene();
+  Box box;
+  box.halfExtents =
+      scene.boxes.empty() ? Vec3::Constant(kDefaultBoxHalfExtent) : scene.boxes.back().halfExtents;
+  Vec3 up = normal;
+  if (hit && hit->kind == ShapeKind::Box &&
+      1.0 - boxShape(scene.boxes[hit->index]).axes.col(1).dot(normal) < kSameDirection) {
+    // On a box's top it stands turned as that box is, so that stacks line up.
+    box.rotation = scene.boxes[hit->index].rotation;
+  } else if (1.0 - normal.dot(Vec3::UnitY()) >= kSameDirection) {
+    // Elsewhere turned from upright onto the surface; upside down (a ceiling) about x.
+    const Vec3 across = Vec3::UnitY().cross(normal);
+    const Vec3 axis = across.norm() > 1e-12 ? across.normalized() : Vec3::UnitX();
+    const double angle = std::atan2(across.norm(), Vec3::UnitY().dot(normal));
+    box.rotation = Rotation{axis, angle * 180.0 / std::numbers::pi};
+  } else {
+    up = Vec3::UnitY();  // on the floor: upright, with no turn to write to the file
+  }
+  box.center = point + box.halfExtents.y() * up;
+  return box;
+}
+
 void EditorTools::place(const QPointF& position) {
   const Scene& scene = document_->scene();
   const auto [origin, direction] = view_->rayAt(position);
   const Eigen::AlignedBox3d clip = view_->clipBox();
   Vec3 point;
   Vec3 normal = Vec3::UnitY();
-  if (const std::optional<RayHit> hit = castRay(scene, origin, direction, &clip)) {
+  const std::optional<RayHit> hit = castRay(scene, origin, direction, &clip);
+  if (hit) {
     point = hit->point;
     normal = hit->normal;
   } else if (const std::optional<double> t =
@@ -331,6 +361,9 @@ void EditorTools::place(const QPointF& position) {
     plane.normal = facing.norm() > 1e-9 ? facing.normalized() : Vec3::UnitZ();
     added.planes.push_back(plane);
     text = tr("Add Plane");
+  } else if (tool_ == Tool::AddBox) {
+    added.boxes.push_back(boxOn(point, normal, hit));
+    text = tr("Add Box");
   } else {
     // A post standing on the surface clicked.
     Cylinder cylinder;

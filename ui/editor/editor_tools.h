@@ -1,8 +1,9 @@
 #pragma once
 // The view's editing tools, as Tiled's: Select (click to pick, drag to move), Add Ball, Add
-// Plane and Add Cylinder (click to place). They watch the view's mouse and keys and change the
-// scene only through the document, one command per click or drag.
+// Plane, Add Cylinder and Add Box (click to place). They watch the view's mouse and keys and
+// change the scene only through the document, one command per click or drag.
 
+#include "sim/ray_cast.h"
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
 
@@ -24,7 +25,7 @@ class SceneDocument;
 class EditorTools : public QObject {
   Q_OBJECT
  public:
-  enum class Tool { Select, AddBall, AddPlane, AddCylinder };
+  enum class Tool { Select, AddBall, AddPlane, AddCylinder, AddBox };
 
   EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent = nullptr);
 
@@ -62,6 +63,9 @@ class EditorTools : public QObject {
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
   void place(const QPointF& position);
+  // A box resting on the surface clicked at `point`: its bottom face on it, its up axis along
+  // the surface's `normal`.
+  Box boxOn(const Vec3& point, const Vec3& normal, const std::optional<RayHit>& hit) const;
   // The object under the cursor, by ray casting against the true shapes, and where the ray
   // meets it.
   struct Picked {
