@@ -372,8 +372,9 @@ void TestEditor::velocityArrowTipDrags() {
   window_->openScene(moving, {}, "moving");
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Ball, 0}});
-  const std::optional<EditorTools::Handle> arrow = window_->tools()->handle();
-  QVERIFY(arrow);
+  const std::vector<EditorTools::Handle> arrows = window_->tools()->handles();
+  QCOMPARE(arrows.size(), std::size_t{1});
+  const EditorTools::Handle* arrow = &arrows.front();
   QCOMPARE(arrow->tip, Vec3(1, 0.5, 0));  // half a second of flight
   const QPoint tip = at(arrow->tip);
   drag(tip, tip + QPoint(0, -50), [&] { return document().scene().balls[0].velocity.y() > 0.5; });
@@ -386,7 +387,7 @@ void TestEditor::velocityArrowTipDrags() {
 
 void TestEditor::altDragGivesABallAtRestAVelocity() {
   chooseTool("toolSelect");
-  QVERIFY(!window_->tools()->handle());  // at rest: no arrow to grab
+  QVERIFY(window_->tools()->handles().empty());  // at rest: no arrow to grab
   const QPoint from = at(Vec3(0, 0.5, 0));
   const QPoint to = from + QPoint(60, 0);
   QTest::mousePress(&view(), Qt::LeftButton, Qt::AltModifier, from);
@@ -394,7 +395,7 @@ void TestEditor::altDragGivesABallAtRestAVelocity() {
   QTRY_VERIFY(document().scene().balls[0].velocity.norm() > 0.5);
   QTest::mouseRelease(&view(), Qt::LeftButton, Qt::AltModifier, to);
   QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
-  QVERIFY(window_->tools()->handle());
+  QCOMPARE(window_->tools()->handles().size(), std::size_t{1});
 }
 
 void TestEditor::newAsksAboutUnsavedChanges() {

@@ -4,8 +4,10 @@
 // the handles that turn a plane's normal and a cylinder's axis.
 
 #include "sim/io/scene_file.h"
+#include "sim/shapes.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 
@@ -18,6 +20,12 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
 
 using carom::Vec3;
 using carom::editor::ObjectKind;
@@ -48,6 +56,8 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void picksAColour();
   void turnsAPlaneByItsHandle();
   void turnsACylinderByItsHandle();
+  void resizesABoxByItsFaceHandles();
+  void turnsABoxByItsHandle();
   void typesANormal();
   void saveTakesTheValueBeingTyped();
   void toolbarRefusesBadValues_data();
@@ -544,8 +554,9 @@ void TestEditorDocks::picksAColour() {
 void TestEditorDocks::turnsAPlaneByItsHandle() {
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Plane, 1}});  // the wall at x = -4, facing +x
-  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
-  QVERIFY(handle);
+  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  QCOMPARE(handles.size(), std::size_t{1});
+  const carom::editor::EditorTools::Handle* handle = &handles.front();
   QCOMPARE(handle->base, Vec3(-4, 0, 0));
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitX()));
   const QPoint tip = at(handle->tip);
@@ -570,8 +581,9 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   addCylinder();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Cylinder, 0}});
-  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
-  QVERIFY(handle);
+  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  QCOMPARE(handles.size(), std::size_t{1});
+  const carom::editor::EditorTools::Handle* handle = &handles.front();
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitY()));
   const QPoint tip = at(handle->tip);
   drag(tip, tip + QPoint(80, 0),
@@ -580,6 +592,137 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   QVERIFY2(std::abs(axis.y()) < 0.95, qPrintable(QString::number(axis.y())));
   QCOMPARE(document().undoStack()->count(), 2);
   QCOMPARE(document().undoStack()->text(1), QString("Turn Cylinder"));
+}
+
+namespace {
+
+using Handle = carom::editor::EditorTools::Handle;
+using HandleRole = carom::editor::EditorTools::HandleRole;
+
+std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis) {
+  for (const Handle& handle : handles)
+    if (handle.role == role && handle.axis == axis) return handle;
+  return std::nullopt;
+}
+
+}  // namespace
+
+// A face's tip dragged out or in moves that face only: the opposite one stays where it was, so a
+// box on the floor grown upwards still rests on it. Each drag is one command, and shows while it
+// goes; a face dragged through the opposite one is refused.
+void TestEditorDocks::resizesABoxByItsFaceHandles() {
+  addBox();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Box, 0}});
+  QCOMPARE(window_->tools()->handles().size(), std::size_t{4});
+  const int commands = document().undoStack()->count();
+
+  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
+  QVERIFY(face);
+  QCOMPARE(face->base, Vec3(2.5, 0.5, 0));
+  drag(at(face->tip), at(face->tip + Vec3(1, 0, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.x() > 0.9; });
+  const carom::Box wider = document().scene().boxes[0];
+  QVERIFY2(std::abs(wider.halfExtents.x() - 1.0) < 0.05,
+           qPrintable(QString::number(wider.halfExtents.x())));
+  QVERIFY(std::abs(wider.center.x() - wider.halfExtents.x() - 1.5) < 1e-9);  // the -x face
+  QCOMPARE(wider.halfExtents.y(), 0.5);
+  QCOMPARE(wider.center.y(), 0.5);
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Resize Box"));
+
+  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 1);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip + Vec3(0, 0.5, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.y() > 0.7; });
+  const carom::Box taller = document().scene().boxes[0];
+  QVERIFY2(std::abs(taller.halfExtents.y() - 0.75) < 0.05,
+           qPrintable(QString::number(taller.halfExtents.y())));
+  QVERIFY(std::abs(taller.center.y() - taller.halfExtents.y()) < 1e-9);  // still on the floor
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+
+  // Through the opposite face: refused by the validation, the box stays at its last good size.
+  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip - Vec3(0, 0, 1.5)),
+       [&] { return window_->statusMessage().contains("boxes[0].halfExtents[2]"); });
+  QVERIFY(document().scene().boxes[0].halfExtents.z() > 0.0);
+  QVERIFY(std::abs(document().scene().boxes[0].center.z() -
+                   document().scene().boxes[0].halfExtents.z() + 0.5) < 1e-9);
+
+  QCOMPARE(document().undoStack()->count(), commands + 3);  // up to the last good size
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0] == taller);
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0] == wider);
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes[0].halfExtents, Vec3::Constant(0.5));
+  document().undoStack()->redo();
+  QVERIFY(document().scene().boxes[0] == wider);
+}
+
+// The turn handle's tip carried round the box's centre turns it about its up axis by the angle
+// swept, in one command.
+void TestEditorDocks::turnsABoxByItsHandle() {
+  addBox();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Box, 0}});
+  const int commands = document().undoStack()->count();
+  const std::optional<Handle> turn =
+      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+  QVERIFY(turn);
+  QCOMPARE(turn->base, Vec3(2, 1, 0));
+  // 30 degrees anticlockwise seen from above, in steps along the arc.
+  const Vec3 top(2, 1, 0);
+  const auto turnedTip = [&](double degrees) -> Vec3 {
+    return top +
+           Eigen::AngleAxisd(degrees * std::numbers::pi / 180, Vec3::UnitY()) * (turn->tip - top);
+  };
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, at(turn->tip));
+  for (int step = 1; step <= 10; ++step) QTest::mouseMove(&view(), at(turnedTip(3.0 * step)));
+  QTRY_VERIFY(document().scene().boxes[0].rotation &&
+              document().scene().boxes[0].rotation->degrees > 28);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, at(turnedTip(30)));
+  const carom::Box& box = document().scene().boxes[0];
+  QVERIFY(box.rotation);
+  QCOMPARE(box.rotation->axis, Vec3::UnitY());
+  QVERIFY2(std::abs(box.rotation->degrees - 30) < 1.5,
+           qPrintable(QString::number(box.rotation->degrees)));
+  QCOMPARE(box.center, Vec3(2, 0.5, 0));
+  QCOMPARE(box.halfExtents, Vec3::Constant(0.5));
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Turn Box"));
+  // The properties dock shows the turn as it stands.
+  QCOMPARE(field("rotationDegrees")->text(),
+           carom::editor::formatShortNumber(box.rotation->degrees));
+  document().undoStack()->undo();
+  QVERIFY(!document().scene().boxes[0].rotation);
+
+  // A box tilted about x turns about its own tilted up axis: that axis stays, the others turn.
+  carom::Scene tilted = document().scene();
+  tilted.boxes[0].center.y() = 1.0;
+  tilted.boxes[0].rotation = carom::Rotation{Vec3::UnitX(), 20};
+  QVERIFY(carom::testing::applyEdit(document(), tilted, "Tilt").isEmpty());
+  const carom::BoxShape before = carom::boxShape(document().scene().boxes[0]);
+  const std::optional<Handle> tiltedTurn =
+      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+  QVERIFY(tiltedTurn);
+  const Vec3 centre = document().scene().boxes[0].center;
+  const auto aroundUp = [&](double degrees) -> Vec3 {
+    return centre + Eigen::AngleAxisd(degrees * std::numbers::pi / 180, before.axes.col(1)) *
+                        (tiltedTurn->tip - centre);
+  };
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, at(tiltedTurn->tip));
+  for (int step = 1; step <= 10; ++step) QTest::mouseMove(&view(), at(aroundUp(-4.0 * step)));
+  QTRY_VERIFY(carom::boxShape(document().scene().boxes[0]).axes.col(0).dot(before.axes.col(0)) <
+              std::cos(35 * std::numbers::pi / 180));
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, at(aroundUp(-40)));
+  const carom::BoxShape after = carom::boxShape(document().scene().boxes[0]);
+  QVERIFY(after.axes.col(1).isApprox(before.axes.col(1), 1e-9));
+  const double swept = std::acos(std::clamp(after.axes.col(0).dot(before.axes.col(0)), -1.0, 1.0));
+  QVERIFY2(std::abs(swept * 180 / std::numbers::pi - 40) < 2,
+           qPrintable(QString::number(swept * 180 / std::numbers::pi)));
+  QCOMPARE(document().scene().boxes[0].center, centre);
 }
 
 void TestEditorDocks::typesANormal() {

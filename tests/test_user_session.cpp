@@ -213,7 +213,7 @@ void TestUserSession::objectsAddedAwayFromTheBallsAreDrawn() {
 
   // And the picture shows them there: the clicked pixels changed from what was behind them.
   view().setHighlighted({}, {}, {}, {});  // the selection's colour aside
-  view().setHandleArrow(std::nullopt);
+  view().setHandleArrows({});
   const auto changed = [&](const QPoint& at) {
     const QImage after = view().grabFramebuffer();
     const QColor was = before.pixelColor(at * before.devicePixelRatio());
@@ -258,7 +258,7 @@ void TestUserSession::backgroundClicksSelectNothing() {
 
 void TestUserSession::clickTheBackground() {
   document().setSelection({});
-  view().setHandleArrow(std::nullopt);
+  view().setHandleArrows({});
   QTest::qWait(50);  // a frame without the selection's highlight
   const QImage picture = view().grabFramebuffer();
   const QColor background = picture.pixelColor(2, 2);

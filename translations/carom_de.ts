@@ -155,6 +155,16 @@
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Resize Box</source>
+        <translation>Quadergröße ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Turn Box</source>
+        <translation>Quader drehen</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::OutlineDock</name>

@@ -155,6 +155,16 @@
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Resize Box</source>
+        <translation>Изменить размер ящика</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Turn Box</source>
+        <translation>Повернуть ящик</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::OutlineDock</name>

@@ -512,10 +512,10 @@ void MainWindow::showSelection() {
   view_->setHighlighted(
       indices[int(editor::ObjectKind::Ball)], indices[int(editor::ObjectKind::Plane)],
       indices[int(editor::ObjectKind::Cylinder)], indices[int(editor::ObjectKind::Box)]);
-  std::optional<std::pair<Vec3, Vec3>> arrow;
-  if (const std::optional<editor::EditorTools::Handle> handle = tools_->handle())
-    arrow = {handle->base, handle->tip};
-  view_->setHandleArrow(arrow);
+  std::vector<std::pair<Vec3, Vec3>> arrows;
+  for (const editor::EditorTools::Handle& handle : tools_->handles())
+    arrows.emplace_back(handle.base, handle.tip);
+  view_->setHandleArrows(std::move(arrows));
 }
 
 void MainWindow::showMessage(const QString& message) {

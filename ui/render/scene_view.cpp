@@ -540,8 +540,8 @@ void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
   update();
 }
 
-void SceneView::setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
-  handleArrow_ = std::move(fromTo);
+void SceneView::setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows) {
+  handleArrows_ = std::move(arrows);
   update();
 }
 
@@ -658,10 +658,8 @@ void SceneView::paintGL() {
   drawStatics(frame);
   if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
   explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions_.live());
-  if (handleArrow_) {
-    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, handleArrow_->first,
-                             handleArrow_->second, kSelectionColor);
-  }
+  for (const auto& [base, tip] : handleArrows_)
+    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
   if (multisampled) multisample_->blitTo(defaultFramebufferObject());
   endFrame();
   emit frameRendered(static_cast<double>(timer.nsecsElapsed()) / 1e6);
