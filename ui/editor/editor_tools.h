@@ -50,7 +50,7 @@ class EditorTools : public QObject {
     Vec3 base;
     Vec3 tip;
     HandleRole role = HandleRole::Direction;
-    int axis = 0;  // a box face's: the box's own x, y or z
+    int axis = 0;  // the box's own x, y or z: a face's, or y, the axis a turn is about
   };
   // The arrows a single selected object shows: a ball's velocity (none at rest), a plane's
   // normal from its point, a cylinder's axis from its point; a box's faces on its own +x, +y and

@@ -230,8 +230,8 @@ bool OutlineDock::eventFilter(QObject* watched, QEvent* event) {
 }
 
 void OutlineDock::showSelection() {
-  // Runs of consecutive indices become one range each, so Select All on a large scene is one a
-  // kind.
+  // Runs of consecutive indices become one range each, so Select All on a large scene is one
+  // range a kind.
   QItemSelection selection;
   const Selection& refs = document_->selection();
   for (std::size_t i = 0; i < refs.size();) {
