@@ -2,6 +2,7 @@
 
 #include "sim/shapes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -54,6 +55,39 @@ std::optional<Entry> enterRound(const Vec3& offset, const Vec3& unit, double rad
   // Closest approach minus the half chord, with no large terms to cancel.
   const Vec3 normal = (closest - halfChord * unit).stableNormalized();
   return Entry{distance, normal};
+}
+
+// Where a ray from `origin` along `unit` enters the solid box, by the slabs between each pair of
+// opposite faces in the box's own frame: the ray is inside the box where it is inside all three
+// slabs at once, so it enters at the latest of the slabs' entries. None from inside or on the
+// surface, and when the ray misses.
+std::optional<Entry> enterBox(const BoxShape& box, const Vec3& origin, const Vec3& unit) {
+  const Vec3 local = box.toLocal(origin);
+  const Vec3 along = box.axes.transpose() * unit;
+  double entry = -std::numeric_limits<double>::infinity();
+  double exit = std::numeric_limits<double>::infinity();
+  int enteringAxis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (!(std::abs(along[k]) > kParallel)) {
+      // Running along the slab: inside it all the way, or never.
+      if (!(std::abs(local[k]) < box.half[k])) return std::nullopt;
+      continue;
+    }
+    // The face the ray meets first is the one on the side it comes from.
+    const double nearFace = along[k] > 0.0 ? -box.half[k] : box.half[k];
+    const double near = (nearFace - local[k]) / along[k];
+    const double far = (-nearFace - local[k]) / along[k];
+    if (near > entry) {
+      entry = near;
+      enteringAxis = k;
+    }
+    exit = std::min(exit, far);
+  }
+  if (enteringAxis < 0 || !(entry > 0.0) || !(entry < exit) || !std::isfinite(entry))
+    return std::nullopt;
+  Vec3 normal = Vec3::Zero();
+  normal[enteringAxis] = along[enteringAxis] > 0.0 ? -1.0 : 1.0;
+  return Entry{entry, box.axes * normal};
 }
 
 class NearestHit {
@@ -136,6 +170,13 @@ std::optional<RayHit> castRay(const Scene& scene, const Vec3& origin, const Vec3
     const Vec3 axisPoint = shape.point + shape.axis.dot(point - shape.point) * shape.axis;
     if (!nearest.drawn(axisPoint, distance)) continue;
     nearest.offer(ShapeKind::Cylinder, i, distance, point, entry->normal);
+  }
+
+  for (std::size_t i = 0; i < scene.boxes.size(); ++i) {
+    const std::optional<Entry> entry = enterBox(boxShape(scene.boxes[i]), origin, *unit);
+    if (!entry || !nearest.closer(entry->distance)) continue;
+    nearest.offer(ShapeKind::Box, i, entry->distance, origin + entry->distance * *unit,
+                  entry->normal);
   }
   return nearest.best();
 }

@@ -10,7 +10,7 @@
 
 namespace carom {
 
-enum class ShapeKind { Ball, Plane, Cylinder };
+enum class ShapeKind { Ball, Plane, Cylinder, Box };
 
 struct RayHit {
   ShapeKind kind = ShapeKind::Ball;
@@ -23,16 +23,16 @@ struct RayHit {
 // The nearest object that the ray from `origin` along `direction` (any non-zero length) enters
 // at a distance > 0, or none.
 //
-// Only entries count: a ray that starts inside a ball or a cylinder ignores that object (it
-// cannot be clicked from inside), and a plane counts only when the ray meets its front, the side
-// balls live on, since the view does not draw its back. Rays within about 1e-12 radians of
+// Only entries count: a ray that starts inside a ball, a cylinder or a box ignores that object
+// (it cannot be clicked from inside), and a plane counts only when the ray meets its front, the
+// side balls live on, since the view does not draw its back. Rays within about 1e-12 radians of
 // parallel to a plane or a cylinder's axis never meet it: they would do so only absurdly far away.
 //
 // The view draws the infinite shapes clipped to a box; with `clip`, hits that the view does not
 // draw are ignored and the ray goes on to what lies behind: a plane hit farther than
 // `clipMargin` outside the box, and a cylinder hit whose axis point (the view draws the tube
 // around the axis clipped to the box) is. Rounding never clips a shape lying on the box's face.
-// Balls are never clipped.
+// Balls and boxes, being finite, are never clipped.
 std::optional<RayHit> castRay(const Scene& scene, const Vec3& origin, const Vec3& direction,
                               const Eigen::AlignedBox3d* clip = nullptr, double clipMargin = 0.0);
 

@@ -62,6 +62,8 @@ class TestEditActions : public QObject {
   void duplicateGoesAcrossAndKeepsNames();
   void deleteKeepsTheOthersNames();
   void selectAllSelectsEverything();
+  void boxesGoThroughTheClipboardWhole();
+  void insertedBoxesMoveAsideOffBalls();
 
  private:
   std::unique_ptr<SceneDocument> document_;
@@ -147,6 +149,64 @@ void TestEditActions::selectAllSelectsEverything() {
   actions_->deleteSelection();
   QVERIFY(document_->scene().balls.empty() && document_->scene().planes.empty());
   QCOMPARE(document_->undoStack()->count(), 1);
+}
+
+namespace {
+
+carom::Box crate() {
+  carom::Box box;
+  box.center = Vec3(0, 0.5, 3);
+  box.halfExtents = Vec3(0.5, 0.5, 0.5);
+  box.rotation = carom::Rotation{Vec3(0, 1, 0), 30};
+  box.name = "crate";
+  box.color = "#806040";
+  box.restitution = 0.25;
+  return box;
+}
+
+}  // namespace
+
+void TestEditActions::boxesGoThroughTheClipboardWhole() {
+  Scene scene = twoBalls();
+  scene.boxes.push_back(crate());
+  document_->reset(scene, {}, "with a box");
+  document_->setSelection({{ObjectKind::Box, 0}});
+  actions_->copy();
+  actions_->paste();
+  QCOMPARE(document_->scene().boxes.size(), std::size_t{2});
+  QCOMPARE(document_->selection(), (Selection{{ObjectKind::Box, 1}}));
+  // Every field, the turn included, read back from the clipboard's scene file.
+  QVERIFY(document_->scene().boxes[1] == crate());
+  QVERIFY(document_->scene().balls == scene.balls);
+  actions_->selectAll();
+  QCOMPARE(document_->selection().size(), std::size_t{5});
+  document_->setSelection({{ObjectKind::Box, 0}});
+  actions_->duplicate();
+  QCOMPARE(document_->scene().boxes.size(), std::size_t{3});
+  QCOMPARE(document_->undoStack()->undoText(), QString("Duplicate"));
+  actions_->deleteSelection();
+  actions_->deleteSelection();  // the duplicate was selected, then nothing
+  QCOMPARE(document_->scene().boxes.size(), std::size_t{2});
+  document_->undoStack()->undo();
+  document_->undoStack()->undo();
+  document_->undoStack()->undo();
+  QVERIFY(document_->scene() == scene);
+}
+
+// A box inserted where a ball stands moves across in steps of its half diagonal's 2.2 times
+// until it overlaps no ball, as balls do.
+void TestEditActions::insertedBoxesMoveAsideOffBalls() {
+  Scene objects;
+  carom::Box box = crate();
+  box.rotation.reset();
+  box.center = Vec3(0, 0.5, 0);  // on the first ball
+  objects.boxes.push_back(box);
+  actions_->insertObjects(objects, "Paste");
+  QCOMPARE(document_->scene().boxes.size(), std::size_t{1});
+  // One step (1.91 m) would still reach the second ball, at 1.3 m: two steps.
+  const double step = 2.2 * box.halfExtents.norm();
+  QVERIFY((document_->scene().boxes[0].center - Vec3(2 * step, 0.5, 0)).norm() < 1e-9);
+  QCOMPARE(document_->scene().boxes[0].name, std::string("crate"));
 }
 
 QTEST_MAIN(TestEditActions)

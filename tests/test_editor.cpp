@@ -47,6 +47,7 @@ class TestEditor : public carom::testing::EditorFixture {
 
   void addsEachKindByClicking();
   void refusesAPlacementWithNoRoom();
+  void addsBoxesRestingOnWhatIsClicked();
   void selectsByClicking();
   void dragMovesAsOneCommand();
   void dragConstrainedToAnAxis();
@@ -114,6 +115,51 @@ void TestEditor::refusesAPlacementWithNoRoom() {
   QCOMPARE(document().scene().cylinders.size(), std::size_t{0});
   QCOMPARE(document().undoStack()->count(), 0);
   QVERIFY2(window_->statusMessage().contains("overlap"), qPrintable(window_->statusMessage()));
+}
+
+// A box lands with its bottom face on the surface under the cursor: the floor, or the top of a
+// box already there, turned as that box is. One command each; a box that would overlap a ball
+// is refused with the validation's message.
+void TestEditor::addsBoxesRestingOnWhatIsClicked() {
+  chooseTool("toolAddBox");
+  QVERIFY(window_->findChild<QAction*>("toolAddBox")->isChecked());
+  click(Vec3(2, 0, 1));
+  QCOMPARE(document().scene().boxes.size(), std::size_t{1});
+  const carom::Box first = document().scene().boxes[0];
+  QCOMPARE(first.halfExtents, Vec3::Constant(0.5));
+  QCOMPARE(first.center.y(), 0.5);  // resting on the floor exactly
+  QVERIFY((first.center - Vec3(2, 0.5, 1)).norm() < 0.1);
+  QVERIFY(!first.rotation);
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 0}}));
+  QCOMPARE(document().undoStack()->undoText(), QString("Add Box"));
+
+  // Turned by 25 degrees, then a second box clicked onto its top stands on it,
+  // turned the same way.
+  carom::Scene turned = document().scene();
+  turned.boxes[0].rotation = carom::Rotation{Vec3::UnitY(), 25};
+  QVERIFY(carom::testing::applyEdit(document(), turned, "Turn").isEmpty());
+  click(first.center + Vec3(0, 0.5, 0));
+  QCOMPARE(document().scene().boxes.size(), std::size_t{2});
+  const carom::Box& stacked = document().scene().boxes[1];
+  QVERIFY2(std::abs(stacked.center.y() - 1.5) < 1e-9,
+           qPrintable(QString::number(stacked.center.y())));
+  QVERIFY((stacked.center - Vec3(first.center.x(), 1.5, first.center.z())).norm() < 0.1);
+  QVERIFY(stacked.rotation == turned.boxes[0].rotation);
+
+  // Right beside the ball, the box would stand in it.
+  const int commands = document().undoStack()->count();
+  click(Vec3(0.7, 0, 0));
+  QCOMPARE(document().scene().boxes.size(), std::size_t{2});
+  QCOMPARE(document().undoStack()->count(), commands);
+  QVERIFY2(window_->statusMessage().contains("overlaps boxes[2]"),
+           qPrintable(window_->statusMessage()));
+
+  // Undo takes the stacked box away, redo puts it back as it was.
+  const carom::Scene withBoth = document().scene();
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes.size(), std::size_t{1});
+  document().undoStack()->redo();
+  QVERIFY(document().scene() == withBoth);
 }
 
 void TestEditor::selectsByClicking() {
@@ -326,8 +372,9 @@ void TestEditor::velocityArrowTipDrags() {
   window_->openScene(moving, {}, "moving");
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Ball, 0}});
-  const std::optional<EditorTools::Handle> arrow = window_->tools()->handle();
-  QVERIFY(arrow);
+  const std::vector<EditorTools::Handle> arrows = window_->tools()->handles();
+  QCOMPARE(arrows.size(), std::size_t{1});
+  const EditorTools::Handle* arrow = &arrows.front();
   QCOMPARE(arrow->tip, Vec3(1, 0.5, 0));  // half a second of flight
   const QPoint tip = at(arrow->tip);
   drag(tip, tip + QPoint(0, -50), [&] { return document().scene().balls[0].velocity.y() > 0.5; });
@@ -340,7 +387,7 @@ void TestEditor::velocityArrowTipDrags() {
 
 void TestEditor::altDragGivesABallAtRestAVelocity() {
   chooseTool("toolSelect");
-  QVERIFY(!window_->tools()->handle());  // at rest: no arrow to grab
+  QVERIFY(window_->tools()->handles().empty());  // at rest: no arrow to grab
   const QPoint from = at(Vec3(0, 0.5, 0));
   const QPoint to = from + QPoint(60, 0);
   QTest::mousePress(&view(), Qt::LeftButton, Qt::AltModifier, from);
@@ -348,7 +395,7 @@ void TestEditor::altDragGivesABallAtRestAVelocity() {
   QTRY_VERIFY(document().scene().balls[0].velocity.norm() > 0.5);
   QTest::mouseRelease(&view(), Qt::LeftButton, Qt::AltModifier, to);
   QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
-  QVERIFY(window_->tools()->handle());
+  QCOMPARE(window_->tools()->handles().size(), std::size_t{1});
 }
 
 void TestEditor::newAsksAboutUnsavedChanges() {

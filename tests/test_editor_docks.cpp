@@ -4,8 +4,10 @@
 // the handles that turn a plane's normal and a cylinder's axis.
 
 #include "sim/io/scene_file.h"
+#include "sim/shapes.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 
@@ -18,6 +20,12 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
 
 using carom::Vec3;
 using carom::editor::ObjectKind;
@@ -32,6 +40,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
 
   void outlineGroupsEveryObject();
   void outlineFollowsEdits();
+  void boxesAreGroupedPickedAndHighlighted();
   void selectingInTheOutlineSelectsInTheView();
   void selectingInTheViewSelectsInTheOutline();
   void renamingInTheOutline();
@@ -39,11 +48,16 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void refusesBadValues_data();
   void refusesBadValues();
   void editsEverySelectedObject();
+  void editsABox();
+  void refusesBadBoxValues_data();
+  void refusesBadBoxValues();
   void showsOnlyTheFieldsTheSelectionHas();
   void editsTheWorldWhenNothingIsSelected();
   void picksAColour();
   void turnsAPlaneByItsHandle();
   void turnsACylinderByItsHandle();
+  void resizesABoxByItsFaceHandles();
+  void turnsABoxByItsHandle();
   void typesANormal();
   void saveTakesTheValueBeingTyped();
   void toolbarRefusesBadValues_data();
@@ -102,6 +116,20 @@ class TestEditorDocks : public carom::testing::EditorFixture {
       if (auto ref = outline().objectAt(index)) selection.push_back(*ref);
     return carom::editor::normalized(selection);
   }
+  // Adds an unturned box of half size 0.5 resting on the floor at (2, 0, 0), as one command.
+  void addBox() {
+    carom::Scene edited = document().scene();
+    carom::Box crate;
+    crate.center = Vec3(2, 0.5, 0);
+    crate.halfExtents = Vec3(0.5, 0.5, 0.5);
+    edited.boxes.push_back(crate);
+    QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  }
+  bool unitShown(const QString& unit) {
+    for (QLabel* label : properties().findChildren<QLabel*>())
+      if (label->isVisible() && label->text() == unit) return true;
+    return false;
+  }
   // Adds a cylinder standing at (2, 0, -2), away from the ball, as one command.
   void addCylinder() {
     carom::Scene edited = document().scene();
@@ -148,6 +176,49 @@ void TestEditorDocks::outlineFollowsEdits() {
   const QModelIndex planes = outline().groupIndex(ObjectKind::Plane);
   QCOMPARE(outline().rowCount(planes), 2);
   QCOMPARE(outline().index(0, 0, planes).data().toString(), QString("Plane 0"));
+}
+
+// Boxes in their own group, picked in the view by their true shape (a turned box's corner
+// beside it is the floor), and shown in the selection's colour.
+void TestEditorDocks::boxesAreGroupedPickedAndHighlighted() {
+  carom::Scene edited = document().scene();
+  carom::Box crate;
+  crate.center = Vec3(2, 0.5, 0);
+  crate.halfExtents = Vec3(0.5, 0.5, 0.5);
+  crate.rotation = carom::Rotation{Vec3::UnitY(), 45};
+  crate.color = "#3060c0";
+  edited.boxes.push_back(crate);
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  const QModelIndex boxes = outline().groupIndex(ObjectKind::Box);
+  QCOMPARE(boxes.data().toString(), QString("Boxes (1)"));
+  QCOMPARE(outline().index(0, 0, boxes).data().toString(), QString("Box 0"));
+  QCOMPARE(outline().index(0, 0, boxes).data(Qt::ToolTipRole).toString(), QString("boxes[0]"));
+
+  chooseTool("toolSelect");
+  document().setSelection({});  // the addition selected it
+  const QImage before = view().grabFramebuffer();
+  click(Vec3(2, 1.0, 0));  // the middle of its top
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Box, 0}}));
+  QCOMPARE(outlineSelection(), (Selection{{ObjectKind::Box, 0}}));
+  QVERIFY(properties().heading().contains("Box 0"));
+  // The top's middle takes on the selection's orange: more red, less blue.
+  const QImage after = view().grabFramebuffer();
+  const double scale = after.width() / double(view().width());
+  const QPoint top = (view().project(Vec3(2, 1.0, 0)) * scale).toPoint();
+  QVERIFY2(QColor(after.pixel(top)).red() > QColor(before.pixel(top)).red() + 40,
+           qPrintable(QString("%1 -> %2")
+                          .arg(QColor(before.pixel(top)).name(), QColor(after.pixel(top)).name())));
+  // Turned by 45 degrees, the box leaves the floor bare at the corner of its unturned outline.
+  click(Vec3(2.45, 0, 0.45));
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Plane, 0}}));
+  // Deleting it empties the group and leaves the rest alone.
+  const carom::Scene withBox = document().scene();
+  document().setSelection({{ObjectKind::Box, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QCOMPARE(outline().rowCount(boxes), 0);
+  carom::Scene expected = withBox;
+  expected.boxes.clear();
+  QVERIFY(document().scene() == expected);
 }
 
 void TestEditorDocks::selectingInTheOutlineSelectsInTheView() {
@@ -311,6 +382,104 @@ void TestEditorDocks::editsEverySelectedObject() {
   QCOMPARE(document().scene().balls[1].position.x(), 2.0);
 }
 
+// Every field of a box typed in, each one command that undoes; a box not turned shows empty
+// rotation fields, and emptying the degrees takes the turn away.
+void TestEditorDocks::editsABox() {
+  addBox();
+  document().setSelection({{ObjectKind::Box, 0}});
+  QCOMPARE(properties().heading(), QString("Box 0"));
+  QVERIFY(field("center.x")->isVisible() && field("halfExtents.z")->isVisible());
+  QVERIFY(!field("position.x")->isVisible() && !field("point.x")->isVisible());
+  QCOMPARE(field("center.y")->text(), QString("0.5"));
+  QCOMPARE(field("halfExtents.x")->text(), QString("0.5"));
+  QCOMPARE(field("rotationDegrees")->text(), QString());
+  QCOMPARE(field("rotationDegrees")->placeholderText(), QString("none"));
+  QCOMPARE(field("rotationAxis.y")->placeholderText(), QString("1"));
+  QVERIFY(unitShown("m") && unitShown("°") && unitShown("(any length)"));
+
+  const int before = document().undoStack()->count();
+  type("name", "crate");
+  type("center.z", "-1.5");
+  type("halfExtents.y", "0.25");
+  type("rotationDegrees", "30");
+  type("rotationAxis.x", "1");
+  type("restitution", "0.4");
+  type("color", "#204080");
+  const carom::Box& box = document().scene().boxes[0];
+  QCOMPARE(box.name, std::string("crate"));
+  QCOMPARE(box.center, Vec3(2, 0.5, -1.5));
+  QCOMPARE(box.halfExtents, Vec3(0.5, 0.25, 0.5));
+  QVERIFY(box.rotation == (carom::Rotation{Vec3(1, 1, 0), 30}));
+  QCOMPARE(box.restitution, std::optional(0.4));
+  QCOMPARE(box.color, std::string("#204080"));
+  QCOMPARE(document().undoStack()->count(), before + 7);
+  QCOMPARE(document().undoStack()->text(before + 2), QString("Resize Box"));
+  QCOMPARE(document().undoStack()->text(before + 3), QString("Turn Box"));
+  QCOMPARE(properties().heading(), QString("Box: crate"));
+  QCOMPARE(field("rotationAxis.x")->text(), QString("1"));
+  // Emptied degrees: not turned at all.
+  type("rotationDegrees", "");
+  QVERIFY(!document().scene().boxes[0].rotation);
+  QCOMPARE(field("rotationAxis.x")->text(), QString());
+  // Undo walks back through the turn, one field at a time.
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0].rotation == (carom::Rotation{Vec3(1, 1, 0), 30}));
+  QCOMPARE(field("rotationDegrees")->text(), QString("30"));
+  for (int i = 0; i < 4; ++i) document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes[0].halfExtents, Vec3(0.5, 0.25, 0.5));
+  QVERIFY(!document().scene().boxes[0].rotation);
+  document().undoStack()->undo();
+  QCOMPARE(field("halfExtents.y")->text(), QString("0.5"));
+  document().undoStack()->redo();
+  QCOMPARE(field("halfExtents.y")->text(), QString("0.25"));
+  // The ball is untouched throughout.
+  QCOMPARE(document().scene().balls[0].name, std::string("first"));
+  // A turn about a zero axis is refused, whichever component makes it zero.
+  type("rotationDegrees", "10");
+  type("rotationAxis.y", "0");
+  QVERIFY2(properties().message().contains("boxes[0].rotation.axis"),
+           qPrintable(properties().message()));
+  QVERIFY(document().scene().boxes[0].rotation == (carom::Rotation{Vec3::UnitY(), 10}));
+}
+
+void TestEditorDocks::refusesBadBoxValues_data() {
+  QTest::addColumn<QString>("field");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("zero size") << "halfExtents.x"
+                             << "0"
+                             << "boxes[0].halfExtents[0]: must be positive";
+  QTest::newRow("negative size") << "halfExtents.z"
+                                 << "-0.5"
+                                 << "boxes[0].halfExtents[2]: must be positive";
+  QTest::newRow("onto the ball") << "center.x"
+                                 << "0.5"
+                                 << "balls[0].position: overlaps boxes[0]";
+  QTest::newRow("grown into the ball") << "halfExtents.x"
+                                       << "1.8"
+                                       << "overlaps boxes[0]";
+  QTest::newRow("not a number") << "rotationDegrees"
+                                << "lots"
+                                << "“lots” is not a number";
+}
+
+void TestEditorDocks::refusesBadBoxValues() {
+  QFETCH(QString, field);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  addBox();
+  document().setSelection({{ObjectKind::Box, 0}});
+  const carom::Scene before = document().scene();
+  const int commands = document().undoStack()->count();
+  const QString shownBefore = this->field(field)->text();
+  type(field, typed);
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), commands);
+  QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
+  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QCOMPARE(this->field(field)->text(), shownBefore);
+}
+
 void TestEditorDocks::showsOnlyTheFieldsTheSelectionHas() {
   addCylinder();
   document().setSelection({{ObjectKind::Plane, 0}});
@@ -385,8 +554,9 @@ void TestEditorDocks::picksAColour() {
 void TestEditorDocks::turnsAPlaneByItsHandle() {
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Plane, 1}});  // the wall at x = -4, facing +x
-  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
-  QVERIFY(handle);
+  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  QCOMPARE(handles.size(), std::size_t{1});
+  const carom::editor::EditorTools::Handle* handle = &handles.front();
   QCOMPARE(handle->base, Vec3(-4, 0, 0));
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitX()));
   const QPoint tip = at(handle->tip);
@@ -411,8 +581,9 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   addCylinder();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Cylinder, 0}});
-  const std::optional<carom::editor::EditorTools::Handle> handle = window_->tools()->handle();
-  QVERIFY(handle);
+  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  QCOMPARE(handles.size(), std::size_t{1});
+  const carom::editor::EditorTools::Handle* handle = &handles.front();
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitY()));
   const QPoint tip = at(handle->tip);
   drag(tip, tip + QPoint(80, 0),
@@ -421,6 +592,137 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   QVERIFY2(std::abs(axis.y()) < 0.95, qPrintable(QString::number(axis.y())));
   QCOMPARE(document().undoStack()->count(), 2);
   QCOMPARE(document().undoStack()->text(1), QString("Turn Cylinder"));
+}
+
+namespace {
+
+using Handle = carom::editor::EditorTools::Handle;
+using HandleRole = carom::editor::EditorTools::HandleRole;
+
+std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis) {
+  for (const Handle& handle : handles)
+    if (handle.role == role && handle.axis == axis) return handle;
+  return std::nullopt;
+}
+
+}  // namespace
+
+// A face's tip dragged out or in moves that face only: the opposite one stays where it was, so a
+// box on the floor grown upwards still rests on it. Each drag is one command, and shows while it
+// goes; a face dragged through the opposite one is refused.
+void TestEditorDocks::resizesABoxByItsFaceHandles() {
+  addBox();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Box, 0}});
+  QCOMPARE(window_->tools()->handles().size(), std::size_t{4});
+  const int commands = document().undoStack()->count();
+
+  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
+  QVERIFY(face);
+  QCOMPARE(face->base, Vec3(2.5, 0.5, 0));
+  drag(at(face->tip), at(face->tip + Vec3(1, 0, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.x() > 0.9; });
+  const carom::Box wider = document().scene().boxes[0];
+  QVERIFY2(std::abs(wider.halfExtents.x() - 1.0) < 0.05,
+           qPrintable(QString::number(wider.halfExtents.x())));
+  QVERIFY(std::abs(wider.center.x() - wider.halfExtents.x() - 1.5) < 1e-9);  // the -x face
+  QCOMPARE(wider.halfExtents.y(), 0.5);
+  QCOMPARE(wider.center.y(), 0.5);
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Resize Box"));
+
+  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 1);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip + Vec3(0, 0.5, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.y() > 0.7; });
+  const carom::Box taller = document().scene().boxes[0];
+  QVERIFY2(std::abs(taller.halfExtents.y() - 0.75) < 0.05,
+           qPrintable(QString::number(taller.halfExtents.y())));
+  QVERIFY(std::abs(taller.center.y() - taller.halfExtents.y()) < 1e-9);  // still on the floor
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+
+  // Through the opposite face: refused by the validation, the box stays at its last good size.
+  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip - Vec3(0, 0, 1.5)),
+       [&] { return window_->statusMessage().contains("boxes[0].halfExtents[2]"); });
+  QVERIFY(document().scene().boxes[0].halfExtents.z() > 0.0);
+  QVERIFY(std::abs(document().scene().boxes[0].center.z() -
+                   document().scene().boxes[0].halfExtents.z() + 0.5) < 1e-9);
+
+  QCOMPARE(document().undoStack()->count(), commands + 3);  // up to the last good size
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0] == taller);
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0] == wider);
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes[0].halfExtents, Vec3::Constant(0.5));
+  document().undoStack()->redo();
+  QVERIFY(document().scene().boxes[0] == wider);
+}
+
+// The turn handle's tip carried round the box's centre turns it about its up axis by the angle
+// swept, in one command.
+void TestEditorDocks::turnsABoxByItsHandle() {
+  addBox();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Box, 0}});
+  const int commands = document().undoStack()->count();
+  const std::optional<Handle> turn =
+      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+  QVERIFY(turn);
+  QCOMPARE(turn->base, Vec3(2, 1, 0));
+  // 30 degrees anticlockwise seen from above, in steps along the arc.
+  const Vec3 top(2, 1, 0);
+  const auto turnedTip = [&](double degrees) -> Vec3 {
+    return top +
+           Eigen::AngleAxisd(degrees * std::numbers::pi / 180, Vec3::UnitY()) * (turn->tip - top);
+  };
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, at(turn->tip));
+  for (int step = 1; step <= 10; ++step) QTest::mouseMove(&view(), at(turnedTip(3.0 * step)));
+  QTRY_VERIFY(document().scene().boxes[0].rotation &&
+              document().scene().boxes[0].rotation->degrees > 28);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, at(turnedTip(30)));
+  const carom::Box& box = document().scene().boxes[0];
+  QVERIFY(box.rotation);
+  QCOMPARE(box.rotation->axis, Vec3::UnitY());
+  QVERIFY2(std::abs(box.rotation->degrees - 30) < 1.5,
+           qPrintable(QString::number(box.rotation->degrees)));
+  QCOMPARE(box.center, Vec3(2, 0.5, 0));
+  QCOMPARE(box.halfExtents, Vec3::Constant(0.5));
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Turn Box"));
+  // The properties dock shows the turn as it stands.
+  QCOMPARE(field("rotationDegrees")->text(),
+           carom::editor::formatShortNumber(box.rotation->degrees));
+  document().undoStack()->undo();
+  QVERIFY(!document().scene().boxes[0].rotation);
+
+  // A box tilted about x turns about its own tilted up axis: that axis stays, the others turn.
+  carom::Scene tilted = document().scene();
+  tilted.boxes[0].center.y() = 1.0;
+  tilted.boxes[0].rotation = carom::Rotation{Vec3::UnitX(), 20};
+  QVERIFY(carom::testing::applyEdit(document(), tilted, "Tilt").isEmpty());
+  const carom::BoxShape before = carom::boxShape(document().scene().boxes[0]);
+  const std::optional<Handle> tiltedTurn =
+      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+  QVERIFY(tiltedTurn);
+  const Vec3 centre = document().scene().boxes[0].center;
+  const auto aroundUp = [&](double degrees) -> Vec3 {
+    return centre + Eigen::AngleAxisd(degrees * std::numbers::pi / 180, before.axes.col(1)) *
+                        (tiltedTurn->tip - centre);
+  };
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, at(tiltedTurn->tip));
+  for (int step = 1; step <= 10; ++step) QTest::mouseMove(&view(), at(aroundUp(-4.0 * step)));
+  QTRY_VERIFY(carom::boxShape(document().scene().boxes[0]).axes.col(0).dot(before.axes.col(0)) <
+              std::cos(35 * std::numbers::pi / 180));
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, at(aroundUp(-40)));
+  const carom::BoxShape after = carom::boxShape(document().scene().boxes[0]);
+  QVERIFY(after.axes.col(1).isApprox(before.axes.col(1), 1e-9));
+  const double swept = std::acos(std::clamp(after.axes.col(0).dot(before.axes.col(0)), -1.0, 1.0));
+  QVERIFY2(std::abs(swept * 180 / std::numbers::pi - 40) < 2,
+           qPrintable(QString::number(swept * 180 / std::numbers::pi)));
+  QCOMPARE(document().scene().boxes[0].center, centre);
 }
 
 void TestEditorDocks::typesANormal() {

@@ -10,6 +10,7 @@
 #include <string>
 
 using carom::Ball;
+using carom::Box;
 using carom::Cylinder;
 using carom::Plane;
 using carom::Scene;
@@ -44,6 +45,15 @@ Scene namedScene() {
     cylinder.name = "cylinder " + tag;
     cylinder.color = "#3000" + tag + "0";
     scene.cylinders.push_back(cylinder);
+    Box box;
+    box.center = Vec3(0, 20.0 + 3 * i, 0);
+    box.halfExtents = Vec3(0.5 + i, 0.25, 1.0);
+    box.name = "box " + tag;
+    box.color = "#4000" + tag + "0";
+    box.restitution = 0.2 + 0.1 * i;
+    if (i % 2 == 1) box.rotation = carom::Rotation{Vec3(1, 1, 0), 15.0 * i};
+    box.extra = "{\"box\":" + tag + "}";
+    scene.boxes.push_back(box);
   }
   return scene;
 }
@@ -69,13 +79,14 @@ class TestObjectRef : public QObject {
   void insertUndoesRemove_data();
   void insertUndoesRemove();
   void assignWritesBackWhatExtractTook();
+  void boxPositionAndLabel();
 };
 
 void TestObjectRef::removeKeepsEveryOtherObject_data() {
   QTest::addColumn<int>("kind");
   QTest::addColumn<std::vector<int>>("removed");
-  const char* kinds[] = {"ball", "plane", "cylinder"};
-  for (int kind = 0; kind < 3; ++kind) {
+  const char* kinds[] = {"ball", "plane", "cylinder", "box"};
+  for (int kind = 0; kind < carom::editor::kObjectKindCount; ++kind) {
     const auto row = [&](const char* where, std::vector<int> removed) {
       QTest::addRow("%s %s", kinds[kind], where) << kind << removed;
     };
@@ -105,6 +116,7 @@ void TestObjectRef::removeKeepsEveryOtherObject() {
   QVERIFY(after.balls == expect(ObjectKind::Ball, before.balls));
   QVERIFY(after.planes == expect(ObjectKind::Plane, before.planes));
   QVERIFY(after.cylinders == expect(ObjectKind::Cylinder, before.cylinders));
+  QVERIFY(after.boxes == expect(ObjectKind::Box, before.boxes));
   // Spelled out for the fields the old bug emptied, so a failure names them.
   for (const Ball& ball : after.balls) {
     QVERIFY(!ball.name.empty());
@@ -113,6 +125,10 @@ void TestObjectRef::removeKeepsEveryOtherObject() {
   }
   for (const Plane& plane : after.planes) QVERIFY(!plane.name.empty() && !plane.color.empty());
   for (const Cylinder& c : after.cylinders) QVERIFY(!c.name.empty() && !c.color.empty());
+  for (const Box& box : after.boxes) {
+    QVERIFY(!box.name.empty() && !box.color.empty() && !box.extra.empty());
+    QVERIFY(box.restitution.has_value());
+  }
 }
 
 void TestObjectRef::removeIgnoresReferencesToNothing() {
@@ -123,17 +139,23 @@ void TestObjectRef::removeIgnoresReferencesToNothing() {
 
 void TestObjectRef::extractThenAppendCopiesEveryField() {
   const Scene source = namedScene();
-  const Selection picked = {
-      {ObjectKind::Ball, 4}, {ObjectKind::Plane, 0}, {ObjectKind::Cylinder, 2}};
+  const Selection picked = {{ObjectKind::Ball, 4},
+                            {ObjectKind::Plane, 0},
+                            {ObjectKind::Cylinder, 2},
+                            {ObjectKind::Box, 3}};
   const Scene part = carom::editor::extract(source, picked);
   Scene target = namedScene();
   const Selection added = carom::editor::append(target, part);
   QCOMPARE(added, (Selection{{ObjectKind::Ball, kPerKind},
                              {ObjectKind::Plane, kPerKind},
-                             {ObjectKind::Cylinder, kPerKind}}));
+                             {ObjectKind::Cylinder, kPerKind},
+                             {ObjectKind::Box, kPerKind}}));
   QVERIFY(target.balls.back() == source.balls[4]);
   QVERIFY(target.planes.back() == source.planes[0]);
   QVERIFY(target.cylinders.back() == source.cylinders[2]);
+  // Every field of the box, its rotation included.
+  QVERIFY(target.boxes.back() == source.boxes[3]);
+  QVERIFY(target.boxes.back().rotation.has_value());
   // Then removing the copies gives back the original, as Duplicate followed by Delete does.
   carom::editor::remove(target, added);
   QVERIFY(target == namedScene());
@@ -187,8 +209,9 @@ void TestObjectRef::insertUndoesRemove() {
   QFETCH(std::vector<int>, removed);
   Selection refs;
   for (int index : removed) refs.push_back({ObjectKind(kind), index});
-  // And a ball among the planes or cylinders, so that kinds mix.
+  // And a ball among the other kinds, and a box among balls, so that kinds mix.
   if (kind != 0) refs.push_back({ObjectKind::Ball, 2});
+  if (kind == 0) refs.push_back({ObjectKind::Box, 1});
   const Scene before = namedScene();
   Scene scene = before;
   const Scene taken = carom::editor::extract(scene, carom::editor::normalized(refs));
@@ -202,15 +225,22 @@ void TestObjectRef::insertUndoesRemove() {
 // every other object stays as it was.
 void TestObjectRef::assignWritesBackWhatExtractTook() {
   const Scene before = namedScene();
-  const Selection refs{{ObjectKind::Ball, 1}, {ObjectKind::Ball, 4}, {ObjectKind::Cylinder, 2}};
+  const Selection refs{{ObjectKind::Ball, 1},
+                       {ObjectKind::Ball, 4},
+                       {ObjectKind::Cylinder, 2},
+                       {ObjectKind::Box, 0},
+                       {ObjectKind::Box, 3}};
   Scene values = carom::editor::extract(before, refs);
   const Selection local = carom::editor::extractedRefs(refs);
-  QCOMPARE(local,
-           (Selection{{ObjectKind::Ball, 0}, {ObjectKind::Ball, 1}, {ObjectKind::Cylinder, 0}}));
+  QCOMPARE(local, (Selection{{ObjectKind::Ball, 0},
+                             {ObjectKind::Ball, 1},
+                             {ObjectKind::Cylinder, 0},
+                             {ObjectKind::Box, 0},
+                             {ObjectKind::Box, 1}}));
   for (const ObjectRef& ref : local) carom::editor::objectInfo(values, ref).name += " edited";
   Scene scene = before;
   carom::editor::assign(scene, refs, values);
-  for (ObjectKind kind : {ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder}) {
+  for (ObjectKind kind : carom::editor::kObjectKinds) {
     for (int i = 0; i < kPerKind; ++i) {
       const ObjectRef ref{kind, i};
       const bool edited = std::find(refs.begin(), refs.end(), ref) != refs.end();
@@ -220,6 +250,23 @@ void TestObjectRef::assignWritesBackWhatExtractTook() {
     }
   }
   QVERIFY(scene.balls[1].position == before.balls[1].position);
+  QVERIFY(scene.boxes[3].rotation == before.boxes[3].rotation);
+  QVERIFY(scene.boxes[3].extra == before.boxes[3].extra);
+}
+
+// A box's centre is what moves it, and it is named as the other kinds are.
+void TestObjectRef::boxPositionAndLabel() {
+  Scene scene = namedScene();
+  const ObjectRef ref{ObjectKind::Box, 2};
+  QCOMPARE(carom::editor::objectCount(scene, ObjectKind::Box), kPerKind);
+  QVERIFY(carom::editor::objectPosition(scene, ref) == scene.boxes[2].center);
+  carom::editor::setObjectPosition(scene, ref, Vec3(7, 8, 9));
+  QVERIFY(scene.boxes[2].center == Vec3(7, 8, 9));
+  QVERIFY(scene.boxes[2].halfExtents == namedScene().boxes[2].halfExtents);
+  QCOMPARE(carom::editor::objectLabel(scene, ref), QString("box 2"));
+  scene.boxes[2].name.clear();
+  QCOMPARE(carom::editor::objectLabel(scene, ref), QString("Box 2"));
+  QCOMPARE(carom::editor::kindPluralName(ObjectKind::Box), QString("Boxes"));
 }
 
 QTEST_APPLESS_MAIN(TestObjectRef)

@@ -1,5 +1,5 @@
-// Ray casting against balls, planes and cylinders: closed forms, the rules of what counts as a
-// hit, numerically hard rays, and random rays against brute-force marching.
+// Ray casting against balls, planes, cylinders and boxes: closed forms, the rules of what counts as
+// a hit, numerically hard rays, and random rays against brute-force marching.
 
 #include "sim/ray_cast.h"
 
@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <optional>
 #include <random>
 
 using namespace carom;
@@ -36,6 +38,14 @@ Cylinder makeCylinder(const Vec3& point, const Vec3& axis, double radius) {
   return cylinder;
 }
 
+Box makeBox(const Vec3& center, const Vec3& halfExtents, std::optional<Rotation> rotation = {}) {
+  Box box;
+  box.center = center;
+  box.halfExtents = halfExtents;
+  box.rotation = rotation;
+  return box;
+}
+
 const char* kindName(ShapeKind kind) {
   switch (kind) {
     case ShapeKind::Ball:
@@ -44,6 +54,8 @@ const char* kindName(ShapeKind kind) {
       return "plane";
     case ShapeKind::Cylinder:
       return "cylinder";
+    case ShapeKind::Box:
+      return "box";
   }
   return "?";
 }
@@ -103,6 +115,18 @@ double cylinderDistance(const Cylinder& c, const Vec3& x) {
 }
 bool insideCylinder(const Cylinder& c, const Vec3& x) {
   return cylinderDistance(c, x) < c.radius;
+}
+// How far outside the box's slabs `x` is, at most: negative inside, zero on the surface.
+double boxExcess(const Box& b, const Vec3& x) {
+  Eigen::Matrix3d turn = Eigen::Matrix3d::Identity();
+  if (b.rotation)
+    turn = Eigen::AngleAxisd(b.rotation->degrees * std::numbers::pi / 180.0,
+                             b.rotation->axis.normalized())
+               .toRotationMatrix();
+  return ((turn.transpose() * (x - b.center)).cwiseAbs() - b.halfExtents).maxCoeff();
+}
+bool insideBox(const Box& b, const Vec3& x) {
+  return boxExcess(b, x) < 0.0;
 }
 
 // First distance in (0, limit] at which the ray is inside the solid, found by stepping `step` at
@@ -194,6 +218,88 @@ class TestRayCast : public QObject {
     scene.cylinders[0] = makeCylinder({1, 1, 1}, {-2, -2, 0}, 0.5);
     problem = mismatch(castRay(scene, {4, 4, 6}, {0, 0, -1}),
                        {ShapeKind::Cylinder, 0, 4.5, {4, 4, 1.5}, {0, 0, 1}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+  }
+
+  void boxHits() {
+    Scene scene;
+    scene.boxes.push_back(makeBox({1, 2, 3}, {1, 2, 0.5}));
+    // Straight down the z axis onto the front face, and from the side with a long direction.
+    QString problem = mismatch(castRay(scene, {1, 2, 13}, {0, 0, -1}),
+                               {ShapeKind::Box, 0, 9.5, {1, 2, 3.5}, {0, 0, 1}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    problem = mismatch(castRay(scene, {10, 3.5, 3.25}, {-4, 0, 0}),
+                       {ShapeKind::Box, 0, 8, {2, 3.5, 3.25}, {1, 0, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Slanted onto the top, y = 4: 6 down and 3 across, sqrt(45) long.
+    problem = mismatch(castRay(scene, {-2, 10, 3}, {1, -2, 0}),
+                       {ShapeKind::Box, 0, std::sqrt(45.0), {1, 4, 3}, {0, 1, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    QVERIFY(!castRay(scene, {5, 2, 13}, {0, 0, -1}));  // beside it
+    QVERIFY(!castRay(scene, {1, 2, 13}, {0, 0, 1}));   // looking away
+
+    // Past the corner (2, 4) of the z = 3 cross-section, across the diagonal at 0.01 from it:
+    // outside it misses; inside it enters the face x = 2 at s = 0.01 from the corner's line.
+    const Vec3 corner(2, 4, 3);
+    const Vec3 across(-1, 1, 0);
+    const Vec3 outward = Vec3(1, 1, 0).normalized();
+    QVERIFY2(!castRay(scene, corner + 0.01 * outward - 5 * across, across),
+             qPrintable(describe(castRay(scene, corner + 0.01 * outward - 5 * across, across))));
+    const double d = 0.01 / std::sqrt(2.0);  // the offset along each axis
+    problem =
+        mismatch(castRay(scene, corner - 0.01 * outward - 5 * across, across),
+                 {ShapeKind::Box, 0, (5 - d) * std::sqrt(2.0), {2, 4 - 2 * d, 3}, {1, 0, 0}}, 1e-9);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+  }
+
+  void turnedBoxHits() {
+    // A cube turned 45 degrees about y: seen from above, a diamond |x| + |z| <= sqrt(2) * 1.
+    Scene scene;
+    scene.boxes.push_back(makeBox({0, 0, 0}, {1, 1, 1}, Rotation{{0, 3, 0}, 45}));
+    const double root2 = std::sqrt(2.0);
+    QString problem = mismatch(
+        castRay(scene, {0.5, 0, 10}, {0, 0, -1}),
+        {ShapeKind::Box, 0, 10 - (root2 - 0.5), {0.5, 0, root2 - 0.5}, {1 / root2, 0, 1 / root2}},
+        1e-9);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Past the diamond's corner at x = sqrt(2), and over and under the top and bottom faces.
+    QVERIFY(!castRay(scene, {1.45, 0, 10}, {0, 0, -1}));
+    QVERIFY(castRay(scene, {1.4, 0, 10}, {0, 0, -1}));
+    QVERIFY(!castRay(scene, {0.5, 1.01, 10}, {0, 0, -1}));
+    QVERIFY(castRay(scene, {0.5, 0.99, 10}, {0, 0, -1}));
+    QVERIFY(!castRay(scene, {0.5, -1.01, 10}, {0, 0, -1}));
+    // Along its own x axis, turned by 30 degrees about a slanted axis, to the face 2 from the
+    // centre.
+    const Rotation turn{Vec3(1, 2, 3), 30};
+    const Vec3 centre(4, -1, 2);
+    scene.boxes[0] = makeBox(centre, {2, 0.5, 1}, turn);
+    const Vec3 ownX =
+        Eigen::AngleAxisd(30 * std::numbers::pi / 180, turn.axis.normalized()) * Vec3::UnitX();
+    problem = mismatch(castRay(scene, centre + 10 * ownX, -3 * ownX),
+                       {ShapeKind::Box, 0, 8, centre + 2 * ownX, ownX}, 1e-12);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Not from inside, nor from on its surface outwards.
+    QVERIFY(!castRay(scene, centre, {1, 0, 0}));
+    QVERIFY(!castRay(scene, centre + 2 * ownX, ownX));
+  }
+
+  void boxAmongOthers() {
+    // The nearest wins whatever its kind: a box in front of a ball, then behind it.
+    Scene scene;
+    scene.balls.push_back(makeBall({0, 0, 0}, 1.0));
+    scene.boxes.push_back(makeBox({0, 0, 3}, {0.5, 0.5, 0.5}));
+    QString problem = mismatch(castRay(scene, {0, 0, 10}, {0, 0, -1}),
+                               {ShapeKind::Box, 0, 6.5, {0, 0, 3.5}, {0, 0, 1}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    scene.boxes[0].center = Vec3(0, 0, -3);
+    problem = mismatch(castRay(scene, {0, 0, 10}, {0, 0, -1}),
+                       {ShapeKind::Ball, 0, 9, {0, 0, 1}, {0, 0, 1}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Boxes are finite: a clip box never hides them.
+    const Eigen::AlignedBox3d clip(Vec3::Constant(-1), Vec3::Constant(1));
+    scene.balls.clear();
+    problem = mismatch(castRay(scene, {0, 0, 10}, {0, 0, -1}, &clip),
+                       {ShapeKind::Box, 0, 12.5, {0, 0, -2.5}, {0, 0, 1}});
     QVERIFY2(problem.isEmpty(), qPrintable(problem));
   }
 
@@ -557,6 +663,13 @@ class TestRayCast : public QObject {
       for (int i = 0; i < 6; ++i) {
         scene.balls.push_back(makeBall(shift + within(5 * scale), between(0.3, 1.2) * scale));
       }
+      for (int i = 0; i < 2; ++i) {
+        const Vec3 center = shift + within(4 * scale);
+        const Vec3 half(between(0.2, 1.0) * scale, between(0.2, 1.0) * scale,
+                        between(0.2, 1.0) * scale);
+        const Vec3 axis = gaussian();
+        scene.boxes.push_back(makeBox(center, half, Rotation{axis, between(-180, 180)}));
+      }
       for (int ray = 0; ray < 8; ++ray, ++rays) {
         const Vec3 origin = shift + within(8 * scale);
         const Vec3 direction = gaussian() * between(1e-3, 1e3);
@@ -632,6 +745,14 @@ class TestRayCast : public QObject {
                 return !clip || clip->exteriorDistance(onAxis) < 1e-9 * scale;
               },
               [&](const Vec3& x) { return cylinderDistance(cylinder, x) - cylinder.radius; }));
+        }
+        for (int i = 0; i < 2; ++i) {
+          Scene alone;
+          const Box& box = scene.boxes[i];
+          alone.boxes.push_back(box);
+          QVERIFY(check(
+              ShapeKind::Box, i, alone, [&](const Vec3& x) { return insideBox(box, x); }, always,
+              [&](const Vec3& x) { return boxExcess(box, x); }));
         }
         // The whole scene gives the nearest of the objects taken alone.
         const std::optional<RayHit> all = castRay(scene, origin, direction, clip);

@@ -107,8 +107,8 @@ class TestSceneDocument : public QObject {
     QVERIFY(document_.scene() == rowOfBalls());
   }
 
-  // Boxes ride along with every edit (the editor does not edit them yet): deleting and moving
-  // balls leaves them as they were, undo gives back the scene whole, and a ball moved into a box
+  // Boxes ride along with edits of other objects: deleting and moving balls leaves them as they
+  // were, undo gives back the scene whole, and a ball moved into a box
   // is refused with the validation's message.
   void boxesSurviveEditsAndStopOverlaps() {
     Scene withBox = rowOfBalls();
@@ -130,6 +130,67 @@ class TestSceneDocument : public QObject {
     document_.undoStack()->undo();
     document_.undoStack()->undo();
     QVERIFY(document_.scene() == withBox);
+  }
+
+  // Deleting boxes, in the middle and at the end, changes no other object, name or field; undo
+  // and redo give back each state exactly.
+  void deletingABoxKeepsEveryOtherObject() {
+    Scene scene = rowOfBalls();
+    for (int i = 0; i < 4; ++i) {
+      carom::Box box;
+      box.center = Vec3(3.0 * i, 4, -8);
+      box.halfExtents = Vec3(0.5, 0.25 + 0.1 * i, 1);
+      box.name = "box " + std::to_string(i);
+      box.color = "#00ff0" + std::to_string(i);
+      box.restitution = 0.5;
+      if (i != 2) box.rotation = carom::Rotation{Vec3(0, 1, 1), 20.0 * i};
+      box.extra = R"({"tag":)" + std::to_string(i) + "}";
+      scene.boxes.push_back(box);
+    }
+    document_.reset(scene, {});
+    ChangeLog log(document_);
+    const Selection doomed{{ObjectKind::Box, 1}, {ObjectKind::Box, 3}};
+    document_.setSelection(doomed);
+    QCOMPARE(document_.removeObjects(doomed, "Delete"), QString());
+    Scene expected = scene;
+    expected.boxes = {scene.boxes[0], scene.boxes[2]};
+    QVERIFY(document_.scene() == expected);
+    QCOMPARE(document_.scene().boxes[1].name, std::string("box 2"));
+    QVERIFY(!document_.scene().boxes[1].rotation);
+    QCOMPARE(log.changes.back().removed, doomed);
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == scene);
+    QCOMPARE(document_.selection(), doomed);
+    document_.undoStack()->redo();
+    QVERIFY(document_.scene() == expected);
+  }
+
+  // A box's edit is checked by the scene validation: sizes must be positive, the axis not zero,
+  // and no ball may end up inside; a refused edit changes nothing.
+  void boxEditsAreValidated() {
+    Scene scene = rowOfBalls();
+    carom::Box box;
+    box.center = Vec3(1.5, 1, 0);  // between balls 0 and 1, which stand 3 apart
+    box.halfExtents = Vec3(0.25, 0.25, 0.25);
+    scene.boxes.push_back(box);
+    document_.reset(scene, {});
+    const Selection ref{{ObjectKind::Box, 0}};
+    Scene values = carom::editor::extract(document_.scene(), ref);
+    values.boxes[0].halfExtents.y() = 0;
+    QVERIFY(document_.editObjects(ref, values, "Resize").contains("boxes[0].halfExtents[1]"));
+    values.boxes[0].halfExtents = Vec3(1, 0.25, 0.25);  // reaches into both balls
+    QVERIFY(document_.editObjects(ref, values, "Resize").contains("overlaps boxes[0]"));
+    values.boxes[0].halfExtents = Vec3(0.25, 0.25, 0.25);
+    values.boxes[0].rotation = carom::Rotation{Vec3::Zero(), 10};
+    QVERIFY(document_.editObjects(ref, values, "Turn").contains("boxes[0].rotation.axis"));
+    QVERIFY(document_.scene() == scene);
+    QCOMPARE(document_.undoStack()->count(), 0);
+    values.boxes[0].rotation = carom::Rotation{Vec3(0, 2, 0), 10};
+    QCOMPARE(document_.editObjects(ref, values, "Turn"), QString());
+    QCOMPARE(document_.undoStack()->count(), 1);
+    QVERIFY(document_.scene().boxes[0] == values.boxes[0]);
+    document_.undoStack()->undo();
+    QVERIFY(document_.scene() == scene);
   }
 
   void removeAndUndoRestoreEveryField() {

@@ -3,12 +3,15 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
+#include "ui/editor/editor_tools.h"
+#include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
 #include "ui/render/render_scene.h"
 
 #include <QAction>
 #include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
@@ -18,6 +21,9 @@
 #include <QUndoStack>
 
 #include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
 
 using carom::Ball;
 using carom::Scene;
@@ -46,6 +52,7 @@ void compareObjects(const Scene& actual, const Scene& expected) {
   QCOMPARE(actual.balls.size(), expected.balls.size());
   QCOMPARE(actual.planes.size(), expected.planes.size());
   QCOMPARE(actual.cylinders.size(), expected.cylinders.size());
+  QCOMPARE(actual.boxes.size(), expected.boxes.size());
   for (std::size_t i = 0; i < expected.balls.size(); ++i) {
     QCOMPARE(actual.balls[i].name, expected.balls[i].name);
     QCOMPARE(actual.balls[i].color, expected.balls[i].color);
@@ -61,7 +68,22 @@ void compareObjects(const Scene& actual, const Scene& expected) {
     QCOMPARE(actual.cylinders[i].color, expected.cylinders[i].color);
     QVERIFY2(actual.cylinders[i] == expected.cylinders[i], expected.cylinders[i].name.c_str());
   }
+  for (std::size_t i = 0; i < expected.boxes.size(); ++i) {
+    QCOMPARE(actual.boxes[i].name, expected.boxes[i].name);
+    QCOMPARE(actual.boxes[i].color, expected.boxes[i].color);
+    QCOMPARE(actual.boxes[i].rotation.has_value(), expected.boxes[i].rotation.has_value());
+    QVERIFY2(actual.boxes[i] == expected.boxes[i], qPrintable(QString("boxes[%1]").arg(i)));
+  }
   QVERIFY(actual.world == expected.world);
+}
+
+using Handle = carom::editor::EditorTools::Handle;
+using HandleRole = carom::editor::EditorTools::HandleRole;
+
+std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis) {
+  for (const Handle& handle : handles)
+    if (handle.role == role && handle.axis == axis) return handle;
+  return std::nullopt;
 }
 
 }  // namespace
@@ -83,6 +105,7 @@ class TestUserSession : public carom::testing::EditorFixture {
   void newGivesAFloorToBuildOn();
   void statusMessagesLeaveTheReadout();
   void openEditDeleteSaveReopen();
+  void buildWithBoxesSaveReopen();
 
  private:
   void openExample(const QString& title);
@@ -90,6 +113,10 @@ class TestUserSession : public carom::testing::EditorFixture {
   void clickTheBackground();
   void saveAsThroughTheDialog(const QString& file);
   void openThroughTheDialog(const QString& file);
+  // Clicks into the properties dock's field `name`, replaces its text and presses Enter.
+  void type(const QString& name, const QString& text);
+  // Ctrl+Z, then Ctrl+Shift+Z: the scene is `before` in between and `after` at the end.
+  void undoRedo(const Scene& before, const Scene& after);
   QTemporaryDir folder_;
 };
 
@@ -132,6 +159,24 @@ void TestUserSession::openThroughTheDialog(const QString& file) {
   });
   QTest::keyClick(window_.get(), Qt::Key_O, Qt::ControlModifier);
   QVERIFY(answer.answered());
+}
+
+void TestUserSession::type(const QString& name, const QString& text) {
+  auto* edit = window_->propertiesDock()->findChild<QLineEdit*>(name);
+  QVERIFY2(edit && edit->isVisible(), qPrintable(name));
+  QTest::mouseClick(edit, Qt::LeftButton);
+  QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(edit, Qt::Key_Backspace);
+  QTest::keyClicks(edit, text);
+  QTest::keyClick(edit, Qt::Key_Return);
+}
+
+void TestUserSession::undoRedo(const Scene& before, const Scene& after) {
+  QVERIFY(document().scene() == after);
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier);
+  QVERIFY(document().scene() == before);
+  QTest::keyClick(window_.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+  QVERIFY(document().scene() == after);
 }
 
 // Examples > magic-room, click the red ball, Delete, Save As: every other object keeps its name
@@ -212,8 +257,8 @@ void TestUserSession::objectsAddedAwayFromTheBallsAreDrawn() {
   QVERIFY(shown->cylinders[0].start != shown->cylinders[0].end);
 
   // And the picture shows them there: the clicked pixels changed from what was behind them.
-  view().setHighlighted({}, {}, {});  // the selection's colour aside
-  view().setHandleArrow(std::nullopt);
+  view().setHighlighted({}, {}, {}, {});  // the selection's colour aside
+  view().setHandleArrows({});
   const auto changed = [&](const QPoint& at) {
     const QImage after = view().grabFramebuffer();
     const QColor was = before.pixelColor(at * before.devicePixelRatio());
@@ -258,7 +303,7 @@ void TestUserSession::backgroundClicksSelectNothing() {
 
 void TestUserSession::clickTheBackground() {
   document().setSelection({});
-  view().setHandleArrow(std::nullopt);
+  view().setHandleArrows({});
   QTest::qWait(50);  // a frame without the selection's highlight
   const QImage picture = view().grabFramebuffer();
   const QColor background = picture.pixelColor(2, 2);
@@ -447,6 +492,110 @@ void TestUserSession::openEditDeleteSaveReopen() {
   openWindow();
   openThroughTheDialog(file);
   compareObjects(document().scene(), expected);
+  QVERIFY(!document().isModified());
+}
+
+// A scene built with boxes by mouse and keys: Add Box (K) clicks on the floor and on a box's
+// top, a cylinder (C) beside them; a box's fields typed in the properties dock, another resized
+// and turned by its handles, the stacked one deleted; every step undone and redone with the
+// keys; then Save As, a new window, Open, and every field of every object compared.
+void TestUserSession::buildWithBoxesSaveReopen() {
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTest::keyClick(window_.get(), Qt::Key_K);
+  QVERIFY(window_->findChild<QAction*>("toolAddBox")->isChecked());
+  Scene before = document().scene();
+  click(Vec3(2, 0, 1.5));
+  QCOMPARE(document().scene().boxes.size(), std::size_t{1});
+  const carom::Box first = document().scene().boxes[0];
+  QVERIFY2(std::abs(first.center.y() - 0.5) < 1e-9, qPrintable(QString::number(first.center.y())));
+  QVERIFY((first.center - Vec3(2, 0.5, 1.5)).norm() < 0.1);
+  undoRedo(before, document().scene());
+  click(Vec3(-2, 0, 1));
+  click(first.center + Vec3(0, 0.5, 0));  // onto the first box's top
+  QCOMPARE(document().scene().boxes.size(), std::size_t{3});
+  QVERIFY(std::abs(document().scene().boxes[2].center.y() - 1.5) < 1e-9);
+  QTest::keyClick(window_.get(), Qt::Key_C);
+  click(Vec3(-2, 0, -2));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{1});
+
+  // The first box's fields, typed into the properties dock after a click on its front face.
+  QTest::keyClick(window_.get(), Qt::Key_V);
+  click(first.center + Vec3(0, -0.2, 0.5));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 0}}));
+  const auto typed = [&](const QString& field, const QString& text) {
+    const Scene previous = document().scene();
+    type(field, text);
+    QVERIFY2(!(document().scene() == previous), qPrintable(field));
+    undoRedo(previous, document().scene());
+  };
+  typed("name", "crate");
+  typed("color", "#4080c0");
+  typed("restitution", "0.7");
+  typed("halfExtents.z", "0.4");
+  typed("rotationDegrees", "15");
+  const carom::Box& crate = document().scene().boxes[0];
+  QCOMPARE(crate.name, std::string("crate"));
+  QCOMPARE(crate.color, std::string("#4080c0"));
+  QCOMPARE(crate.restitution, std::optional(0.7));
+  QCOMPARE(crate.halfExtents, Vec3(0.5, 0.5, 0.4));
+  QVERIFY(crate.rotation == (carom::Rotation{Vec3::UnitY(), 15}));
+  // Flattened to nothing, it is refused with the validation's message.
+  const Scene typedIn = document().scene();
+  type("halfExtents.y", "0");
+  QVERIFY(document().scene() == typedIn);
+  QVERIFY2(window_->statusMessage().contains("boxes[0].halfExtents[1]: must be positive"),
+           qPrintable(window_->statusMessage()));
+
+  // The second box, made longer by its +x face and turned by its handle.
+  click(document().scene().boxes[1].center + Vec3(0, 0.5, 0));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 1}}));
+  before = document().scene();
+  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip + Vec3(0.5, 0, 0)),
+       [&] { return document().scene().boxes[1].halfExtents.x() > 0.7; });
+  const carom::Box longer = document().scene().boxes[1];
+  QVERIFY(std::abs(longer.center.x() - longer.halfExtents.x() -
+                   (before.boxes[1].center.x() - 0.5)) < 1e-9);
+  undoRedo(before, document().scene());
+  before = document().scene();
+  const std::optional<Handle> turn =
+      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+  QVERIFY(turn);
+  const Vec3 top = turn->base;
+  const auto turnedTip = [&](double degrees) -> Vec3 {
+    return top +
+           Eigen::AngleAxisd(degrees * std::numbers::pi / 180, Vec3::UnitY()) * (turn->tip - top);
+  };
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, at(turn->tip));
+  for (int step = 1; step <= 10; ++step) QTest::mouseMove(&view(), at(turnedTip(3.0 * step)));
+  QTRY_VERIFY(document().scene().boxes[1].rotation &&
+              document().scene().boxes[1].rotation->degrees > 28);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, at(turnedTip(30)));
+  QVERIFY(std::abs(document().scene().boxes[1].rotation->degrees - 30) < 1.5);
+  QCOMPARE(document().scene().boxes[1].center, longer.center);
+  undoRedo(before, document().scene());
+
+  // The stacked box goes; nothing else changes, names and fields included.
+  click(document().scene().boxes[2].center + Vec3(0, 0.5, 0));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 2}}));
+  before = document().scene();
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  Scene expected = before;
+  expected.boxes.pop_back();
+  compareObjects(document().scene(), expected);
+  undoRedo(before, expected);
+
+  const QString file = folder_.filePath("boxes.carom");
+  saveAsThroughTheDialog(file);
+  QVERIFY(!document().isModified());
+  window_.reset();
+  openWindow();
+  openThroughTheDialog(file);
+  compareObjects(document().scene(), expected);
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+  QCOMPARE(document().scene().planes.size(), std::size_t{3});
+  QCOMPARE(document().scene().boxes[0].name, std::string("crate"));
   QVERIFY(!document().isModified());
 }
 

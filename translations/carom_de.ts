@@ -87,6 +87,16 @@
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Boxes</source>
+        <translation>Quader</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::EditorTools</name>
@@ -139,6 +149,21 @@
         <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Kann dort nicht platziert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Resize Box</source>
+        <translation>Quadergröße ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Turn Box</source>
+        <translation>Quader drehen</translation>
     </message>
 </context>
 <context>
@@ -403,6 +428,51 @@
         <location filename="../ui/editor/properties_dock.cpp" line="383"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Centre</source>
+        <translation>Mittelpunkt</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Half extents</source>
+        <translation>Halbe Kantenlängen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Resize Box</source>
+        <translation>Quadergröße ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation axis</source>
+        <translation>Drehachse</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Turn Box</source>
+        <translation>Quader drehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation</source>
+        <translation>Drehung</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Degrees about the axis, right-handed; empty: not turned</source>
+        <translation>Grad um die Achse, rechtshändig; leer: nicht gedreht</translation>
     </message>
 </context>
 <context>
@@ -956,6 +1026,11 @@
         <source>Physics Notes</source>
         <translation>Physik-Notizen</translation>
     </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>carom::ui::MainWindow</name>
@@ -1331,6 +1406,11 @@
         <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
     </message>
 </context>
 <context>

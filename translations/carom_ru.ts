@@ -87,6 +87,16 @@
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Box</source>
+        <translation>Ящик</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/object_ref.cpp"/>
+        <source>Boxes</source>
+        <translation>Ящики</translation>
+    </message>
 </context>
 <context>
     <name>carom::editor::EditorTools</name>
@@ -139,6 +149,21 @@
         <location filename="../ui/editor/editor_tools.cpp" line="331"/>
         <source>Cannot place it there: %1</source>
         <translation>Сюда поставить нельзя: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Resize Box</source>
+        <translation>Изменить размер ящика</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp"/>
+        <source>Turn Box</source>
+        <translation>Повернуть ящик</translation>
     </message>
 </context>
 <context>
@@ -405,6 +430,51 @@
         <location filename="../ui/editor/properties_dock.cpp" line="383"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Centre</source>
+        <translation>Центр</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Half extents</source>
+        <translation>Половины размеров</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Resize Box</source>
+        <translation>Изменить размер ящика</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation axis</source>
+        <translation>Ось поворота</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Turn Box</source>
+        <translation>Повернуть ящик</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Rotation</source>
+        <translation>Поворот</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp"/>
+        <source>Degrees about the axis, right-handed; empty: not turned</source>
+        <translation>Градусы вокруг оси, по правилу правой руки; пусто: без поворота</translation>
     </message>
 </context>
 <context>
@@ -960,6 +1030,11 @@
         <source>Physics Notes</source>
         <translation>Заметки по физике</translation>
     </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
+    </message>
 </context>
 <context>
     <name>carom::ui::MainWindow</name>
@@ -1335,6 +1410,11 @@
         <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
     </message>
 </context>
 <context>

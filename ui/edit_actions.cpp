@@ -51,27 +51,32 @@ void EditActions::deleteSelection() {
 void EditActions::selectAll() {
   const Scene& scene = document_->scene();
   editor::Selection all;
-  for (editor::ObjectKind kind :
-       {editor::ObjectKind::Ball, editor::ObjectKind::Plane, editor::ObjectKind::Cylinder})
+  for (editor::ObjectKind kind : editor::kObjectKinds)
     for (int i = 0; i < editor::objectCount(scene, kind); ++i) all.push_back({kind, i});
   document_->setSelection(all);
 }
 
 void EditActions::insertObjects(Scene objects, const QString& text) {
-  if (objects.balls.empty() && objects.planes.empty() && objects.cylinders.empty()) return;
-  // Balls copied onto themselves would overlap: shift them all sideways until they fit.
+  if (objects.balls.empty() && objects.planes.empty() && objects.cylinders.empty() &&
+      objects.boxes.empty())
+    return;
+  // Balls copied onto themselves would overlap, and a box may land on a ball: shift the balls
+  // and boxes sideways together, in steps of the largest of them, until they fit.
   Vec3 across = across_ ? across_() : Vec3::UnitX();
   if (!across.allFinite() || across.norm() < 0.5) across = Vec3::UnitX();
   double largest = 0.0;
   for (const Ball& ball : objects.balls) largest = std::max(largest, ball.radius);
+  for (const Box& box : objects.boxes) largest = std::max(largest, box.halfExtents.norm());
   QString error;
   for (int attempt = 0; attempt <= kMaxPlacementAttempts; ++attempt) {
     Scene shifted = objects;
     const Vec3 offset = attempt * 2.2 * largest * across;
     for (Ball& ball : shifted.balls) ball.position += offset;
+    for (Box& box : shifted.boxes) box.center += offset;
     error = document_->addObjects(shifted, text);
     if (error.isEmpty()) return;
-    if (objects.balls.empty()) break;  // planes and cylinders never overlap anything
+    // Planes and cylinders never overlap anything.
+    if (objects.balls.empty() && objects.boxes.empty()) break;
   }
   emit message(tr("Cannot place the objects: %1").arg(error));
 }

@@ -98,6 +98,7 @@ QString HelpWindow::keyboardAndMouseHtml() {
         {keys({Qt::Key_B}), tr("Add Ball")},
         {keys({Qt::Key_P}), tr("Add Plane")},
         {keys({Qt::Key_C}), tr("Add Cylinder")},
+        {keys({Qt::Key_K}), tr("Add Box")},
         {tr("Click with an Add tool"),
          tr("Place the object where the cursor points, on a surface or the ground")}}},
       {tr("Selecting and moving"),

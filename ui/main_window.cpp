@@ -406,8 +406,9 @@ void MainWindow::retranslate() {
 
   toolsMenu_->setTitle(tr("&Tools"));
   toolsBar_->setWindowTitle(tr("Tools"));
-  const QString toolTexts[4] = {tr("Select"), tr("Add Ball"), tr("Add Plane"), tr("Add Cylinder")};
-  for (int i = 0; i < 4; ++i) {
+  const QString toolTexts[] = {tr("Select"), tr("Add Ball"), tr("Add Plane"), tr("Add Cylinder"),
+                               tr("Add Box")};
+  for (int i = 0; i < int(std::size(toolTexts)); ++i) {
     toolActions_[i]->setText(toolTexts[i]);
     toolActions_[i]->setToolTip(tr("%1 (%2)").arg(
         toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
@@ -505,16 +506,16 @@ void MainWindow::editWorld(const QString& text, const std::function<void(World&)
 }
 
 void MainWindow::showSelection() {
-  std::vector<int> indices[3];
+  std::vector<int> indices[editor::kObjectKindCount];
   for (const editor::ObjectRef& ref : document_->selection())
     indices[int(ref.kind)].push_back(ref.index);
-  view_->setHighlighted(indices[int(editor::ObjectKind::Ball)],
-                        indices[int(editor::ObjectKind::Plane)],
-                        indices[int(editor::ObjectKind::Cylinder)]);
-  std::optional<std::pair<Vec3, Vec3>> arrow;
-  if (const std::optional<editor::EditorTools::Handle> handle = tools_->handle())
-    arrow = {handle->base, handle->tip};
-  view_->setHandleArrow(arrow);
+  view_->setHighlighted(
+      indices[int(editor::ObjectKind::Ball)], indices[int(editor::ObjectKind::Plane)],
+      indices[int(editor::ObjectKind::Cylinder)], indices[int(editor::ObjectKind::Box)]);
+  std::vector<std::pair<Vec3, Vec3>> arrows;
+  for (const editor::EditorTools::Handle& handle : tools_->handles())
+    arrows.emplace_back(handle.base, handle.tip);
+  view_->setHandleArrows(std::move(arrows));
 }
 
 void MainWindow::showMessage(const QString& message) {
@@ -534,7 +535,8 @@ void MainWindow::buildToolActions() {
   } tools[] = {{editor::EditorTools::Tool::Select, "toolSelect", Qt::Key_V},
                {editor::EditorTools::Tool::AddBall, "toolAddBall", Qt::Key_B},
                {editor::EditorTools::Tool::AddPlane, "toolAddPlane", Qt::Key_P},
-               {editor::EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C}};
+               {editor::EditorTools::Tool::AddCylinder, "toolAddCylinder", Qt::Key_C},
+               {editor::EditorTools::Tool::AddBox, "toolAddBox", Qt::Key_K}};
   toolsBar_ = addToolBar(QString());
   toolsBar_->setObjectName("tools");
   for (const auto& entry : tools) {

@@ -129,7 +129,7 @@ class MainWindow : public QMainWindow {
   SceneFiles* files_ = nullptr;         // New, Open, Save, the recent files, the examples
   EditActions* editActions_ = nullptr;  // copy, paste, duplicate, delete, select all
   editor::EditorTools* tools_ = nullptr;
-  QAction* toolActions_[4] = {};  // in EditorTools::Tool order
+  QAction* toolActions_[5] = {};  // in EditorTools::Tool order
   QAction* snapAction_ = nullptr;
   SimulationSync* sync_ = nullptr;  // keeps the simulation in step with the document
   QAction* newAction_ = nullptr;

@@ -1,6 +1,7 @@
 #include "ui/editor/editor_tools.h"
 
 #include "sim/ray_cast.h"
+#include "sim/shapes.h"
 #include "ui/editor/scene_document.h"
 #include "ui/render/scene_view.h"
 
@@ -19,6 +20,10 @@ constexpr double kClickSlopPixels = 4.0;  // a press and release closer than thi
 constexpr double kTipGrabPixels = 8.0;
 constexpr double kDefaultBallRadius = 0.5;
 constexpr double kDefaultCylinderRadius = 0.3;
+constexpr double kDefaultBoxHalfExtent = 0.5;
+// Normals closer than this (1 - cosine) count as the same direction: a box on the floor or on
+// an unturned box's top stands unturned.
+constexpr double kSameDirection = 1e-9;
 constexpr int kNudgeRings = 4;  // free spots tried around a refused placement
 
 Vec3 toVec3(const QVector3D& v) {
@@ -30,6 +35,46 @@ std::pair<Vec3, Vec3> tangents(const Vec3& normal) {
   const Vec3 helper = std::abs(normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   const Vec3 u = normal.cross(helper).normalized();
   return {u, normal.cross(u)};
+}
+
+ObjectKind objectKindOf(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::Plane:
+      return ObjectKind::Plane;
+    case ShapeKind::Cylinder:
+      return ObjectKind::Cylinder;
+    case ShapeKind::Box:
+      return ObjectKind::Box;
+    case ShapeKind::Ball:
+      break;
+  }
+  return ObjectKind::Ball;
+}
+
+// The point of the line through `point` along the unit `axis` nearest to the ray; none when
+// the ray runs along the line.
+std::optional<Vec3> closestOnLine(const Vec3& origin, const Vec3& direction, const Vec3& point,
+                                  const Vec3& axis) {
+  const Vec3 w = origin - point;
+  const double b = axis.dot(direction);
+  const double denominator = 1.0 - b * b;
+  if (denominator < 1e-9) return std::nullopt;
+  const double s = (axis.dot(w) - b * direction.dot(w)) / denominator;
+  return point + s * axis;
+}
+
+// `rotation` followed by a turn of `degrees` about the unit `axis`. A turn about the axis the
+// box already turns about (always the case for an upright box turned about y) only changes its
+// degrees, so that the file keeps the numbers the user expects.
+Rotation turnedAbout(const std::optional<Rotation>& rotation, const Vec3& axis, double degrees) {
+  if (!rotation) return Rotation{axis, degrees};
+  const Vec3 own = rotation->axis.normalized();
+  if (std::abs(own.dot(axis)) > 1.0 - 1e-12)
+    return Rotation{rotation->axis, rotation->degrees + (own.dot(axis) > 0 ? degrees : -degrees)};
+  constexpr double kRadians = std::numbers::pi / 180.0;
+  const Eigen::AngleAxisd turned(Eigen::AngleAxisd(degrees * kRadians, axis) *
+                                 Eigen::AngleAxisd(rotation->degrees * kRadians, own));
+  return Rotation{turned.axis(), turned.angle() / kRadians};
 }
 
 }  // namespace
@@ -76,43 +121,59 @@ std::optional<EditorTools::Picked> EditorTools::pick(const QPointF& position) co
   const Eigen::AlignedBox3d clip = view_->clipBox();
   const std::optional<RayHit> hit = castRay(document_->scene(), origin, direction, &clip);
   if (!hit) return std::nullopt;
-  const ObjectKind kind = hit->kind == ShapeKind::Ball    ? ObjectKind::Ball
-                          : hit->kind == ShapeKind::Plane ? ObjectKind::Plane
-                                                          : ObjectKind::Cylinder;
-  return Picked{{kind, hit->index}, hit->point};
+  return Picked{{objectKindOf(hit->kind), hit->index}, hit->point};
 }
 
-std::optional<EditorTools::Handle> EditorTools::handle() const {
+std::vector<EditorTools::Handle> EditorTools::handles() const {
   const Selection& selection = document_->selection();
-  if (selection.size() != 1) return std::nullopt;
+  if (selection.size() != 1) return {};
   const ObjectRef& ref = selection.front();
   const Scene& scene = document_->scene();
-  const auto length = [this] {
-    return kDirectionArrowFraction * view_->clipBox().diagonal().norm();
-  };
+  const double length = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
   switch (ref.kind) {
     case ObjectKind::Ball: {
       const Ball& ball = scene.balls[ref.index];
-      if (ball.velocity.isZero()) return std::nullopt;
-      return Handle{ball.position, ball.position + kArrowSeconds * ball.velocity};
+      if (ball.velocity.isZero()) return {};
+      return {{ball.position, ball.position + kArrowSeconds * ball.velocity}};
     }
     case ObjectKind::Plane: {
       const Plane& plane = scene.planes[ref.index];
-      return Handle{plane.point, plane.point + length() * plane.normal.normalized()};
+      return {{plane.point, plane.point + length * plane.normal.normalized()}};
     }
     case ObjectKind::Cylinder: {
       const Cylinder& cylinder = scene.cylinders[ref.index];
-      return Handle{cylinder.point, cylinder.point + length() * cylinder.axis.normalized()};
+      return {{cylinder.point, cylinder.point + length * cylinder.axis.normalized()}};
+    }
+    case ObjectKind::Box: {
+      const Box& box = scene.boxes[ref.index];
+      const BoxShape shape = boxShape(box);
+      std::vector<Handle> arrows;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 face = box.center + box.halfExtents[k] * shape.axes.col(k);
+        arrows.push_back({face, face + length * shape.axes.col(k), HandleRole::BoxFace, k});
+      }
+      const Vec3 top = box.center + box.halfExtents.y() * shape.axes.col(1);
+      const Vec3 toCorner =
+          box.halfExtents.x() * shape.axes.col(0) + box.halfExtents.z() * shape.axes.col(2);
+      arrows.push_back(
+          {top, top + toCorner + length * toCorner.normalized(), HandleRole::BoxTurn, 1});
+      return arrows;
     }
   }
-  return std::nullopt;
+  return {};
 }
 
-bool EditorTools::nearHandleTip(const QPointF& position) const {
-  const std::optional<Handle> arrow = handle();
-  if (!arrow) return false;
-  const QPointF tip = view_->project(arrow->tip);
-  return std::hypot(tip.x() - position.x(), tip.y() - position.y()) <= kTipGrabPixels;
+std::optional<EditorTools::Handle> EditorTools::handleAt(const QPointF& position) const {
+  std::optional<Handle> nearest;
+  double nearestPixels = kTipGrabPixels;
+  for (const Handle& arrow : handles()) {
+    const QPointF tip = view_->project(arrow.tip);
+    const double pixels = std::hypot(tip.x() - position.x(), tip.y() - position.y());
+    if (pixels > nearestPixels) continue;
+    nearest = arrow;
+    nearestPixels = pixels;
+  }
+  return nearest;
 }
 
 QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const {
@@ -129,6 +190,28 @@ QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& 
       if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
       return tr("Turn Cylinder");
     }
+    case ObjectKind::Box: {
+      Box& box = scene.boxes[ref.index];
+      const BoxShape shape = boxShape(box);
+      if (grabbedHandle_.role == HandleRole::BoxTurn) {
+        // The angle the tip has swept about the up axis through the centre since the press.
+        const Vec3 up = shape.axes.col(1);
+        Vec3 from = grabPoint_ - box.center;
+        Vec3 to = point - box.center;
+        from -= up.dot(from) * up;
+        to -= up.dot(to) * up;
+        const double radians = std::atan2(up.dot(from.cross(to)), from.dot(to));
+        box.rotation = turnedAbout(box.rotation, up, radians * 180.0 / std::numbers::pi);
+        return tr("Turn Box");
+      }
+      const int k = grabbedHandle_.axis;
+      const Vec3 along = shape.axes.col(k);
+      const Vec3 fixedFace = box.center - box.halfExtents[k] * along;
+      // The face follows the tip; the validation refuses a box turned inside out.
+      box.halfExtents[k] += 0.5 * along.dot(point - grabPoint_);
+      box.center = fixedFace + box.halfExtents[k] * along;
+      return tr("Resize Box");
+    }
     case ObjectKind::Ball:
       break;
   }
@@ -140,17 +223,20 @@ QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& 
 std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3& point) const {
   const auto [origin, direction] = view_->rayAt(position);
   const Vec3 facing = toVec3(view_->camera().eye() - view_->camera().target()).normalized();
-  if (axisLock_ >= 0) {
-    // The point of the locked axis through `point` nearest to the cursor's ray.
-    const Vec3 axis = Vec3::Unit(axisLock_);
-    const Vec3 w = origin - point;
-    const double b = axis.dot(direction);
-    const double denominator = 1.0 - b * b;
-    if (denominator < 1e-9) return std::nullopt;  // looking along the axis
-    const double s = (axis.dot(w) - b * direction.dot(w)) / denominator;
-    return point + s * axis;
-  }
+  // On the locked axis through `point`, nowhere when looking along it.
+  if (axisLock_ >= 0) return closestOnLine(origin, direction, point, Vec3::Unit(axisLock_));
   const std::optional<double> t = rayPlaneDistance(origin, direction, point, facing);
+  if (!t) return std::nullopt;
+  return origin + *t * direction;
+}
+
+std::optional<Vec3> EditorTools::onBoxHandlePath(const QPointF& position) const {
+  const auto [origin, direction] = view_->rayAt(position);
+  const BoxShape shape = boxShape(draggedAtPress_.boxes.front());
+  if (grabbedHandle_.role == HandleRole::BoxFace)
+    return closestOnLine(origin, direction, grabPoint_, shape.axes.col(grabbedHandle_.axis));
+  const Vec3 up = shape.axes.col(1);
+  const std::optional<double> t = rayPlaneDistance(origin, direction, grabPoint_, up);
   if (!t) return std::nullopt;
   return origin + *t * direction;
 }
@@ -165,8 +251,9 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   }
   const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
   const bool altDrag = event->modifiers() & Qt::AltModifier;
-  if (!extend && nearHandleTip(pressPosition_)) {
-    grabPoint_ = handle()->tip;
+  if (const std::optional<Handle> grabbed = extend ? std::nullopt : handleAt(pressPosition_)) {
+    grabbedHandle_ = *grabbed;
+    grabPoint_ = grabbed->tip;
     beginDrag(Drag::Handle, document_->selection());
     return true;
   }
@@ -192,6 +279,7 @@ bool EditorTools::mousePress(QMouseEvent* event) {
     // Alt-drag from a ball draws its velocity from the centre, for balls at rest.
     document_->setSelection({hit});
     grabPoint_ = document_->scene().balls[hit.index].position;
+    grabbedHandle_ = Handle{grabPoint_, grabPoint_};
     beginDrag(Drag::Handle, {hit});
     return true;
   }
@@ -209,7 +297,9 @@ void EditorTools::beginDrag(Drag drag, const Selection& objects) {
 
 bool EditorTools::mouseMove(QMouseEvent* event) {
   if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
-  const std::optional<Vec3> point = onDragPlane(event->position(), grabPoint_);
+  const bool boxHandle = drag_ == Drag::Handle && grabbedHandle_.role != HandleRole::Direction;
+  const std::optional<Vec3> point =
+      boxHandle ? onBoxHandlePath(event->position()) : onDragPlane(event->position(), grabPoint_);
   if (!point) return true;
   // Only the dragged objects are copied and changed, never the whole scene.
   const Selection local = extractedRefs(dragged_);
@@ -264,13 +354,38 @@ bool EditorTools::mouseRelease(QMouseEvent* event) {
   return drag == Drag::Objects || drag == Drag::Handle;
 }
 
+Box EditorTools::boxOn(const Vec3& point, const Vec3& normal,
+                       const std::optional<RayHit>& hit) const {
+  const Scene& scene = document_->scene();
+  Box box;
+  box.halfExtents =
+      scene.boxes.empty() ? Vec3::Constant(kDefaultBoxHalfExtent) : scene.boxes.back().halfExtents;
+  Vec3 up = normal;
+  if (hit && hit->kind == ShapeKind::Box &&
+      1.0 - boxShape(scene.boxes[hit->index]).axes.col(1).dot(normal) < kSameDirection) {
+    // On a box's top it stands turned as that box is, so that stacks line up.
+    box.rotation = scene.boxes[hit->index].rotation;
+  } else if (1.0 - normal.dot(Vec3::UnitY()) >= kSameDirection) {
+    // Elsewhere turned from upright onto the surface; upside down (a ceiling) about x.
+    const Vec3 across = Vec3::UnitY().cross(normal);
+    const Vec3 axis = across.norm() > 1e-12 ? across.normalized() : Vec3::UnitX();
+    const double angle = std::atan2(across.norm(), Vec3::UnitY().dot(normal));
+    box.rotation = Rotation{axis, angle * 180.0 / std::numbers::pi};
+  } else {
+    up = Vec3::UnitY();  // on the floor: upright, with no turn to write to the file
+  }
+  box.center = point + box.halfExtents.y() * up;
+  return box;
+}
+
 void EditorTools::place(const QPointF& position) {
   const Scene& scene = document_->scene();
   const auto [origin, direction] = view_->rayAt(position);
   const Eigen::AlignedBox3d clip = view_->clipBox();
   Vec3 point;
   Vec3 normal = Vec3::UnitY();
-  if (const std::optional<RayHit> hit = castRay(scene, origin, direction, &clip)) {
+  const std::optional<RayHit> hit = castRay(scene, origin, direction, &clip);
+  if (hit) {
     point = hit->point;
     normal = hit->normal;
   } else if (const std::optional<double> t =
@@ -317,6 +432,9 @@ void EditorTools::place(const QPointF& position) {
     plane.normal = facing.norm() > 1e-9 ? facing.normalized() : Vec3::UnitZ();
     added.planes.push_back(plane);
     text = tr("Add Plane");
+  } else if (tool_ == Tool::AddBox) {
+    added.boxes.push_back(boxOn(point, normal, hit));
+    text = tr("Add Box");
   } else {
     // A post standing on the surface clicked.
     Cylinder cylinder;

@@ -1,8 +1,9 @@
 #pragma once
 // The view's editing tools, as Tiled's: Select (click to pick, drag to move), Add Ball, Add
-// Plane and Add Cylinder (click to place). They watch the view's mouse and keys and change the
-// scene only through the document, one command per click or drag.
+// Plane, Add Cylinder and Add Box (click to place). They watch the view's mouse and keys and
+// change the scene only through the document, one command per click or drag.
 
+#include "sim/ray_cast.h"
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
 
@@ -10,6 +11,7 @@
 #include <QPointF>
 
 #include <optional>
+#include <vector>
 
 class QMouseEvent;
 
@@ -24,7 +26,7 @@ class SceneDocument;
 class EditorTools : public QObject {
   Q_OBJECT
  public:
-  enum class Tool { Select, AddBall, AddPlane, AddCylinder };
+  enum class Tool { Select, AddBall, AddPlane, AddCylinder, AddBox };
 
   EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent = nullptr);
 
@@ -40,13 +42,20 @@ class EditorTools : public QObject {
   // A plane's normal and a cylinder's axis arrows are this fraction of the view's clip box.
   static constexpr double kDirectionArrowFraction = 0.12;
 
-  // The arrow a single selected object shows, whose tip drags: a ball's velocity (none at
-  // rest), a plane's normal from its point, a cylinder's axis from its point.
+  // What dragging a handle's tip does: point the object's direction at the cursor (a ball's
+  // velocity, a plane's normal, a cylinder's axis), move a box's face along its axis with the
+  // opposite face fixed, or turn a box about its own up axis.
+  enum class HandleRole { Direction, BoxFace, BoxTurn };
   struct Handle {
     Vec3 base;
     Vec3 tip;
+    HandleRole role = HandleRole::Direction;
+    int axis = 0;  // the box's own x, y or z: a face's, or y, the axis a turn is about
   };
-  std::optional<Handle> handle() const;
+  // The arrows a single selected object shows: a ball's velocity (none at rest), a plane's
+  // normal from its point, a cylinder's axis from its point; a box's faces on its own +x, +y and
+  // +z sides, and over its top, out past a corner, the handle that turns it.
+  std::vector<Handle> handles() const;
 
  signals:
   void toolChanged(Tool tool);
@@ -62,6 +71,9 @@ class EditorTools : public QObject {
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
   void place(const QPointF& position);
+  // A box resting on the surface clicked at `point`: its bottom face on it, its up axis along
+  // the surface's `normal`.
+  Box boxOn(const Vec3& point, const Vec3& normal, const std::optional<RayHit>& hit) const;
   // The object under the cursor, by ray casting against the true shapes, and where the ray
   // meets it.
   struct Picked {
@@ -69,12 +81,16 @@ class EditorTools : public QObject {
     Vec3 point;
   };
   std::optional<Picked> pick(const QPointF& position) const;
-  bool nearHandleTip(const QPointF& position) const;
-  // The edit a handle drag to `point` makes of `ref` in `scene`; returns the command's text.
-  // Both name the object's copy that the drag edits.
+  // The handle whose tip is under the cursor, if any.
+  std::optional<Handle> handleAt(const QPointF& position) const;
+  // The edit a drag of the grabbed handle to `point` makes of `ref` in `scene`; returns the
+  // command's text. Both name the object's copy that the drag edits, as it was at the press.
   QString dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
+  // Where the grabbed box handle's tip follows the cursor: along the face's axis, or in the
+  // plane across the box's up axis.
+  std::optional<Vec3> onBoxHandlePath(const QPointF& position) const;
   void beginDrag(Drag drag, const Selection& objects);
 
   SceneDocument* document_;
@@ -86,6 +102,7 @@ class EditorTools : public QObject {
   Drag drag_ = Drag::None;
   QPointF pressPosition_;
   Vec3 grabPoint_ = Vec3::Zero();
+  Handle grabbedHandle_;
   // The dragged objects, and their values when the drag began (as extract() gives them).
   Selection dragged_;
   Scene draggedAtPress_;

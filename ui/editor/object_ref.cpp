@@ -21,6 +21,8 @@ int objectCount(const Scene& scene, ObjectKind kind) {
       return static_cast<int>(scene.planes.size());
     case ObjectKind::Cylinder:
       return static_cast<int>(scene.cylinders.size());
+    case ObjectKind::Box:
+      return static_cast<int>(scene.boxes.size());
   }
   return 0;
 }
@@ -35,6 +37,8 @@ const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref) {
       return scene.planes[ref.index];
     case ObjectKind::Cylinder:
       return scene.cylinders[ref.index];
+    case ObjectKind::Box:
+      return scene.boxes[ref.index];
     case ObjectKind::Ball:
       break;
   }
@@ -46,12 +50,12 @@ ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref) {
 }
 
 // In ObjectKind's order.
-constexpr const char* kKindNames[] = {QT_TRANSLATE_NOOP("ObjectRef", "Ball"),
-                                      QT_TRANSLATE_NOOP("ObjectRef", "Plane"),
-                                      QT_TRANSLATE_NOOP("ObjectRef", "Cylinder")};
-constexpr const char* kKindPluralNames[] = {QT_TRANSLATE_NOOP("ObjectRef", "Balls"),
-                                            QT_TRANSLATE_NOOP("ObjectRef", "Planes"),
-                                            QT_TRANSLATE_NOOP("ObjectRef", "Cylinders")};
+constexpr const char* kKindNames[] = {
+    QT_TRANSLATE_NOOP("ObjectRef", "Ball"), QT_TRANSLATE_NOOP("ObjectRef", "Plane"),
+    QT_TRANSLATE_NOOP("ObjectRef", "Cylinder"), QT_TRANSLATE_NOOP("ObjectRef", "Box")};
+constexpr const char* kKindPluralNames[] = {
+    QT_TRANSLATE_NOOP("ObjectRef", "Balls"), QT_TRANSLATE_NOOP("ObjectRef", "Planes"),
+    QT_TRANSLATE_NOOP("ObjectRef", "Cylinders"), QT_TRANSLATE_NOOP("ObjectRef", "Boxes")};
 
 QString kindName(ObjectKind kind) {
   return QCoreApplication::translate("ObjectRef", kKindNames[static_cast<int>(kind)]);
@@ -74,6 +78,8 @@ Vec3 objectPosition(const Scene& scene, const ObjectRef& ref) {
       return scene.planes[ref.index].point;
     case ObjectKind::Cylinder:
       return scene.cylinders[ref.index].point;
+    case ObjectKind::Box:
+      return scene.boxes[ref.index].center;
     case ObjectKind::Ball:
       break;
   }
@@ -87,6 +93,9 @@ void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position)
       return;
     case ObjectKind::Cylinder:
       scene.cylinders[ref.index].point = position;
+      return;
+    case ObjectKind::Box:
+      scene.boxes[ref.index].center = position;
       return;
     case ObjectKind::Ball:
       scene.balls[ref.index].position = position;
@@ -109,6 +118,9 @@ Scene extract(const Scene& scene, const Selection& selection) {
       case ObjectKind::Cylinder:
         part.cylinders.push_back(scene.cylinders[ref.index]);
         break;
+      case ObjectKind::Box:
+        part.boxes.push_back(scene.boxes[ref.index]);
+        break;
     }
   }
   return part;
@@ -124,6 +136,10 @@ Selection append(Scene& scene, const Scene& objects) {
     added.push_back({ObjectKind::Cylinder, static_cast<int>(scene.cylinders.size())});
     scene.cylinders.push_back(cylinder);
   }
+  for (const Box& box : objects.boxes) {
+    added.push_back({ObjectKind::Box, static_cast<int>(scene.boxes.size())});
+    scene.boxes.push_back(box);
+  }
   for (const Ball& ball : objects.balls) {
     added.push_back({ObjectKind::Ball, static_cast<int>(scene.balls.size())});
     scene.balls.push_back(ball);
@@ -132,7 +148,7 @@ Selection append(Scene& scene, const Scene& objects) {
 }
 
 Selection extractedRefs(const Selection& selection) {
-  int next[3] = {0, 0, 0};
+  int next[kObjectKindCount] = {};
   Selection refs;
   for (const ObjectRef& ref : normalized(selection))
     refs.push_back({ref.kind, next[int(ref.kind)]++});
@@ -202,12 +218,14 @@ void assign(Scene& scene, const Selection& selection, const Scene& objects) {
   assignIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
   assignIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
   assignIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
+  assignIndices(scene.boxes, sorted, ObjectKind::Box, objects.boxes);
 }
 
 void remove(Scene& scene, const Selection& selection) {
   eraseIndices(scene.balls, selection, ObjectKind::Ball);
   eraseIndices(scene.planes, selection, ObjectKind::Plane);
   eraseIndices(scene.cylinders, selection, ObjectKind::Cylinder);
+  eraseIndices(scene.boxes, selection, ObjectKind::Box);
 }
 
 void insert(Scene& scene, const Selection& selection, const Scene& objects) {
@@ -215,6 +233,7 @@ void insert(Scene& scene, const Selection& selection, const Scene& objects) {
   insertIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
   insertIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
   insertIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
+  insertIndices(scene.boxes, sorted, ObjectKind::Box, objects.boxes);
 }
 
 }  // namespace carom::editor

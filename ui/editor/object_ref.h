@@ -10,7 +10,11 @@
 
 namespace carom::editor {
 
-enum class ObjectKind { Ball, Plane, Cylinder };
+enum class ObjectKind { Ball, Plane, Cylinder, Box };
+inline constexpr int kObjectKindCount = 4;
+// Every kind, in ObjectKind's order (the outline's groups, a sorted selection's).
+inline constexpr ObjectKind kObjectKinds[kObjectKindCount] = {
+    ObjectKind::Ball, ObjectKind::Plane, ObjectKind::Cylinder, ObjectKind::Box};
 
 struct ObjectRef {
   ObjectKind kind = ObjectKind::Ball;
@@ -28,18 +32,19 @@ int objectCount(const Scene& scene, ObjectKind kind);
 // The shared fields of any object: name, colour, restitution, unknown keys.
 const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref);
 ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref);
-// The point an object is placed and dragged by: a ball's centre, a plane's or cylinder's point.
+// The point an object is placed and dragged by: a ball's or box's centre, a plane's or
+// cylinder's point.
 Vec3 objectPosition(const Scene& scene, const ObjectRef& ref);
 void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position);
 
-// "Ball", "Plane", "Cylinder", and the plural for groups, translated.
+// "Ball", "Plane", "Cylinder", "Box", and the plural for groups, translated.
 QString kindName(ObjectKind kind);
 QString kindPluralName(ObjectKind kind);
 // What the editor calls an object: its name, or its kind and index ("Ball 3") when it has none.
 QString objectLabel(const Scene& scene, const ObjectRef& ref);
 
 // The selected objects copied into a scene of their own (world settings kept), and the reverse:
-// `objects`' planes, cylinders and balls appended to `scene`, returning the new references.
+// `objects`' planes, cylinders, boxes and balls appended to `scene`, returning the new references.
 Scene extract(const Scene& scene, const Selection& selection);
 Selection append(Scene& scene, const Scene& objects);
 // Where extract() puts each selected object: the same kinds, numbered from 0 per kind.

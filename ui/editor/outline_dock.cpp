@@ -25,21 +25,23 @@ ObjectKind kindOfGroup(int row) {
 
 OutlineModel::OutlineModel(SceneDocument* document, QObject* parent)
     : QAbstractItemModel(parent), document_(document) {
-  for (int g = 0; g < 3; ++g) counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
+  for (int g = 0; g < kObjectKindCount; ++g)
+    counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
   connect(document_, &SceneDocument::sceneChanged, this, &OutlineModel::sync);
 }
 
 void OutlineModel::sync(const SceneChange& change) {
   if (change.replaced) {
     beginResetModel();
-    for (int g = 0; g < 3; ++g) counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
+    for (int g = 0; g < kObjectKindCount; ++g)
+      counts_[g] = objectCount(document_->scene(), kindOfGroup(g));
     endResetModel();
     return;
   }
   // Rows are removed and inserted where the objects were and are, in runs of neighbours, and
   // only rows whose label may have changed are announced: edited objects, and those whose
   // index moved ("Ball 7" becomes "Ball 6").
-  for (int g = 0; g < 3; ++g) {
+  for (int g = 0; g < kObjectKindCount; ++g) {
     const ObjectKind kind = kindOfGroup(g);
     const QModelIndex group = index(g, 0);
     std::vector<int> removed, inserted;
@@ -86,7 +88,8 @@ void OutlineModel::sync(const SceneChange& change) {
 
 QModelIndex OutlineModel::index(int row, int column, const QModelIndex& parent) const {
   if (column != 0 || row < 0) return {};
-  if (!parent.isValid()) return row < 3 ? createIndex(row, 0, kGroupId) : QModelIndex();
+  if (!parent.isValid())
+    return row < kObjectKindCount ? createIndex(row, 0, kGroupId) : QModelIndex();
   if (parent.internalId() != kGroupId || row >= counts_[parent.row()]) return {};
   return createIndex(row, 0, quintptr(parent.row() + 1));
 }
@@ -97,7 +100,7 @@ QModelIndex OutlineModel::parent(const QModelIndex& child) const {
 }
 
 int OutlineModel::rowCount(const QModelIndex& parent) const {
-  if (!parent.isValid()) return 3;
+  if (!parent.isValid()) return kObjectKindCount;
   if (parent.internalId() != kGroupId) return 0;
   return counts_[parent.row()];
 }
@@ -116,7 +119,7 @@ QModelIndex OutlineModel::indexOf(const ObjectRef& ref) const {
 
 void OutlineModel::retranslate() {
   // Group names and unnamed objects' labels ("Ball 3") are made in the current language.
-  for (int g = 0; g < 3; ++g) {
+  for (int g = 0; g < kObjectKindCount; ++g) {
     const QModelIndex group = index(g, 0);
     emit dataChanged(group, group, {Qt::DisplayRole});
     if (counts_[g] > 0)
@@ -148,10 +151,9 @@ QVariant OutlineModel::data(const QModelIndex& index, int role) const {
     case Qt::EditRole:
       return QString::fromStdString(objectInfo(scene, *ref).name);
     case Qt::ToolTipRole: {
-      const char* list = ref->kind == ObjectKind::Ball    ? "balls"
-                         : ref->kind == ObjectKind::Plane ? "planes"
-                                                          : "cylinders";
-      return QString("%1[%2]").arg(list).arg(ref->index);
+      // The scene file's list names, in ObjectKind's order, as the validation's messages use.
+      constexpr const char* kLists[kObjectKindCount] = {"balls", "planes", "cylinders", "boxes"};
+      return QString("%1[%2]").arg(kLists[int(ref->kind)]).arg(ref->index);
     }
     case Qt::DecorationRole: {
       const QColor color(QString::fromStdString(objectInfo(scene, *ref).color));
@@ -228,7 +230,8 @@ bool OutlineDock::eventFilter(QObject* watched, QEvent* event) {
 }
 
 void OutlineDock::showSelection() {
-  // Runs of consecutive indices become one range each, so Select All on a large scene is three.
+  // Runs of consecutive indices become one range each, so Select All on a large scene is one
+  // range a kind.
   QItemSelection selection;
   const Selection& refs = document_->selection();
   for (std::size_t i = 0; i < refs.size();) {

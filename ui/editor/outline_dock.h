@@ -49,7 +49,7 @@ class OutlineModel : public QAbstractItemModel {
 
   SceneDocument* document_;
   // The rows each group has in the views' eyes, updated with insert and remove notices.
-  std::array<int, 3> counts_{};
+  std::array<int, kObjectKindCount> counts_{};
 };
 
 class OutlineDock : public QDockWidget {

@@ -156,6 +156,13 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
       kCylinders, "cylinderRadius", QT_TR_NOOP("Radius"), QT_TR_NOOP("Change Radius"), m,
       [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].radius; });
 
+  addVector(kBoxes, "center", QT_TR_NOOP("Centre"), QT_TR_NOOP("Move"), m,
+            [](const Scene& scene, const ObjectRef& r) { return &scene.boxes[r.index].center; });
+  addVector(
+      kBoxes, "halfExtents", QT_TR_NOOP("Half extents"), QT_TR_NOOP("Resize Box"), m,
+      [](const Scene& scene, const ObjectRef& r) { return &scene.boxes[r.index].halfExtents; });
+  addRotation();
+
   addVector(kWorld, "gravity", QT_TR_NOOP("Gravity"), QT_TR_NOOP("Change Gravity"), mPerS2,
             [](const Scene& scene, const ObjectRef&) { return &scene.world.gravity; });
   addNumber(kWorld, "timeStep", QT_TR_NOOP("Time step"), QT_TR_NOOP("Change Time Step"), s,
@@ -205,6 +212,10 @@ void PropertiesDock::retranslate() {
       editor.edit->setName(QString("%1 %2").arg(label(editor.row), axes[editor.component]));
   }
   restitution_->setName(label(restitutionRow_), tr("0 to 1; empty: the world's restitution"));
+  for (int a = 0; a < 3; ++a)
+    rotationFields_[a]->setName(QString("%1 %2").arg(label(rotationAxisRow_), axes[a]));
+  rotationFields_[3]->setName(label(rotationDegreesRow_),
+                              tr("Degrees about the axis, right-handed; empty: not turned"));
   colorButton_->setText(tr("…"));
   colorButton_->setToolTip(tr("Choose a colour"));
   if (auto* dialog = findChild<QColorDialog*>()) dialog->setWindowTitle(tr("Object Colour"));
@@ -301,6 +312,27 @@ void PropertiesDock::addRestitution() {
   connect(restitution_, &QLineEdit::editingFinished, this, &PropertiesDock::restitutionEdited);
 }
 
+void PropertiesDock::addRotation() {
+  auto* axisFields = new QWidget;
+  auto* line = new QHBoxLayout(axisFields);
+  line->setContentsMargins(0, 0, 0, 0);
+  rotationAxisRow_ = addRow(kBoxes, QT_TR_NOOP("Rotation axis"), QT_TR_NOOP("Turn Box"), axisFields,
+                            QT_TR_NOOP("(any length)"));
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    rotationFields_[a] = new NumberField;
+    rotationFields_[a]->setObjectName(QString("rotationAxis.%1").arg(axes[a]));
+    line->addWidget(rotationFields_[a]);
+  }
+  rotationFields_[3] = new NumberField;
+  rotationFields_[3]->setObjectName("rotationDegrees");
+  rotationDegreesRow_ = addRow(kBoxes, QT_TR_NOOP("Rotation"), QT_TR_NOOP("Turn Box"),
+                               rotationFields_[3], QT_TR_NOOP("°"));
+  for (int component = 0; component < 4; ++component)
+    connect(rotationFields_[component], &QLineEdit::editingFinished, this,
+            [this, component] { rotationEdited(component); });
+}
+
 QComboBox* PropertiesDock::addChoice(const char* name, const char* label, const char* change,
                                      const std::vector<std::string_view>& keys,
                                      void (*choose)(World&, int)) {
@@ -332,7 +364,7 @@ void PropertiesDock::refresh() {
     heading_->setText(objectInfo(scene, ref).name.empty()
                           ? objectLabel(scene, ref)
                           : tr("%1: %2").arg(kindName(ref.kind), objectLabel(scene, ref)));
-  } else if (kinds == kBalls || kinds == kPlanes || kinds == kCylinders) {
+  } else if (std::has_single_bit(static_cast<unsigned>(kinds))) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
                           .arg(kindPluralName(kindOfFlag(kinds))));
   } else {
@@ -383,6 +415,21 @@ void PropertiesDock::refresh() {
           tr("world's (%1)").arg(formatNumber(scene.world.restitution)));
     else
       restitution_->setPlaceholderText(QString());
+  }
+  if (shown[rotationDegreesRow_]) {
+    const auto value = common<std::optional<Rotation>>(
+        refs, [&](const ObjectRef& ref) { return scene.boxes[ref.index].rotation; });
+    // A box not turned shows empty fields with the axis a turn would start from.
+    const Rotation unturned;
+    for (int a = 0; a < 3; ++a) {
+      rotationFields_[a]->setValue(value && *value ? std::optional((*value)->axis[a])
+                                                   : std::nullopt);
+      rotationFields_[a]->setPlaceholderText(!value   ? mixed
+                                             : *value ? QString()
+                                                      : formatNumber(unturned.axis[a]));
+    }
+    rotationFields_[3]->setValue(value && *value ? std::optional((*value)->degrees) : std::nullopt);
+    rotationFields_[3]->setPlaceholderText(!value ? mixed : *value ? QString() : tr("none"));
   }
   if (kinds == kWorld) {
     const QSignalBlocker methodBlocker(method_);
@@ -473,6 +520,33 @@ void PropertiesDock::restitutionEdited() {
   }
   commit(restitutionRow_,
          [&](Scene& values, const ObjectRef& ref) { objectInfo(values, ref).restitution = value; });
+}
+
+void PropertiesDock::rotationEdited(int component) {
+  NumberField* edit = rotationFields_[component];
+  if (!edit->isModified()) {
+    message_->clear();
+    return;
+  }
+  edit->setModified(false);
+  const bool degrees = component == 3;
+  const int row = degrees ? rotationDegreesRow_ : rotationAxisRow_;
+  if (degrees && edit->text().trimmed().isEmpty()) {
+    commit(row, [](Scene& values, const ObjectRef& ref) { values.boxes[ref.index].rotation = {}; });
+    return;
+  }
+  const ParsedNumber parsed = parseNumber(edit->text());
+  if (!parsed.value) {
+    refuse(tr("%1: %2").arg(label(row), parsed.problem));
+    return;
+  }
+  const double value = *parsed.value;
+  commit(row, [&](Scene& values, const ObjectRef& ref) {
+    // A box not turned starts from no turn about the default axis.
+    Rotation rotation = values.boxes[ref.index].rotation.value_or(Rotation{});
+    (degrees ? rotation.degrees : rotation.axis[component]) = value;
+    values.boxes[ref.index].rotation = rotation;
+  });
 }
 
 void PropertiesDock::pickColor() {

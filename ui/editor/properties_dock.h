@@ -47,7 +47,7 @@ class PropertiesDock : public QDockWidget {
  private:
   // Which objects a row applies to; a row shows when every selected object is of its kinds.
   // The object bits are 1 << ObjectKind.
-  enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kObjects = 7, kWorld = 8 };
+  enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kBoxes = 8, kObjects = 15, kWorld = 16 };
   // Accessors return the field inside a scene, for one object (unused for world rows). The
   // scene is const for reading; a write goes through the same accessor on the edited copy.
   using NumberAccess = const double* (*)(const Scene&, const ObjectRef&);
@@ -86,6 +86,8 @@ class PropertiesDock : public QDockWidget {
   void addText(int kinds, const char* name, const char* label, const char* change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
+  // A box's turn: its axis's components and its degrees, all empty for a box not turned.
+  void addRotation();
   // A world setting chosen from `keys`; `choose` sets the index chosen.
   QComboBox* addChoice(const char* name, const char* label, const char* change,
                        const std::vector<std::string_view>& keys, void (*choose)(World&, int));
@@ -107,6 +109,8 @@ class PropertiesDock : public QDockWidget {
   void numberEdited(const NumberEditor& editor);
   void textEdited(const TextEditor& editor);
   void restitutionEdited();
+  // `component` 0 to 2 of the axis, or 3 for the degrees; emptied degrees take the turn away.
+  void rotationEdited(int component);
   void pickColor();
 
   SceneDocument* document_;
@@ -118,6 +122,9 @@ class PropertiesDock : public QDockWidget {
   std::vector<TextEditor> texts_;
   int restitutionRow_ = -1;
   NumberField* restitution_ = nullptr;
+  int rotationAxisRow_ = -1;
+  int rotationDegreesRow_ = -1;
+  NumberField* rotationFields_[4] = {};  // the axis's x, y, z and the degrees
   int colorRow_ = -1;
   QLineEdit* color_ = nullptr;
   QToolButton* colorButton_ = nullptr;

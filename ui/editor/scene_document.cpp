@@ -15,10 +15,21 @@ namespace {
 SceneObjectIndices indicesOf(const Selection& refs) {
   SceneObjectIndices indices;
   for (const ObjectRef& ref : refs) {
-    auto& list = ref.kind == ObjectKind::Ball    ? indices.balls
-                 : ref.kind == ObjectKind::Plane ? indices.planes
-                                                 : indices.cylinders;
-    list.push_back(static_cast<std::size_t>(ref.index));
+    const auto index = static_cast<std::size_t>(ref.index);
+    switch (ref.kind) {
+      case ObjectKind::Ball:
+        indices.balls.push_back(index);
+        break;
+      case ObjectKind::Plane:
+        indices.planes.push_back(index);
+        break;
+      case ObjectKind::Cylinder:
+        indices.cylinders.push_back(index);
+        break;
+      case ObjectKind::Box:
+        indices.boxes.push_back(index);
+        break;
+    }
   }
   return indices;
 }
@@ -153,12 +164,14 @@ QString SceneDocument::editObjects(const Selection& refs, const Scene& values, c
 }
 
 QString SceneDocument::addObjects(const Scene& objects, const QString& text) {
-  const std::size_t sizes[3] = {scene_.balls.size(), scene_.planes.size(), scene_.cylinders.size()};
+  const std::size_t sizes[kObjectKindCount] = {scene_.balls.size(), scene_.planes.size(),
+                                               scene_.cylinders.size(), scene_.boxes.size()};
   const Selection added = append(scene_, objects);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(added), 1);
-  scene_.balls.resize(sizes[0]);
-  scene_.planes.resize(sizes[1]);
-  scene_.cylinders.resize(sizes[2]);
+  scene_.balls.resize(sizes[int(ObjectKind::Ball)]);
+  scene_.planes.resize(sizes[int(ObjectKind::Plane)]);
+  scene_.cylinders.resize(sizes[int(ObjectKind::Cylinder)]);
+  scene_.boxes.resize(sizes[int(ObjectKind::Box)]);
   if (!errors.empty()) return QString::fromStdString(errors.front().text());
   if (added.empty()) return {};
   auto* command = new SceneEditCommand(this, text, added);

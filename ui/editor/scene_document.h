@@ -49,7 +49,7 @@ class SceneDocument : public QObject {
   // drag) merge into one command.
   QString editObjects(const Selection& refs, const Scene& values, const QString& text,
                       int gesture = 0);
-  // Appends the planes, cylinders and balls of `objects` and selects them.
+  // Appends the planes, cylinders, boxes and balls of `objects` and selects them.
   QString addObjects(const Scene& objects, const QString& text);
   // Removes the objects `refs` names and clears the selection.
   QString removeObjects(const Selection& refs, const QString& text);

@@ -37,7 +37,7 @@ PackedColor pack(const QColor& color) {
 
 const QColor kSelectionColor(255, 140, 13);
 
-// Selected planes and cylinders take on the selection's colour.
+// Selected planes, cylinders and boxes take on the selection's colour.
 QColor shown(const QColor& color, bool selected) {
   if (!selected) return color;
   return QColor((color.red() + kSelectionColor.red()) / 2,
@@ -531,16 +531,17 @@ void SceneView::sortBallsFrontToBack(const QVector3D& eye) {
 }
 
 void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
-                               std::vector<int> cylinders) {
+                               std::vector<int> cylinders, std::vector<int> boxes) {
   highlightedBalls_ = std::move(balls);
   highlightedPlanes_ = std::move(planes);
   highlightedCylinders_ = std::move(cylinders);
+  highlightedBoxes_ = std::move(boxes);
   staticDataDirty_ = true;
   update();
 }
 
-void SceneView::setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo) {
-  handleArrow_ = std::move(fromTo);
+void SceneView::setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows) {
+  handleArrows_ = std::move(arrows);
   update();
 }
 
@@ -608,11 +609,14 @@ void SceneView::uploadStaticData() {
                            static_cast<float>(cylinder.radius),
                            pack(shown(cylinder.color, selectedCylinders[index]))});
     }
-    for (const RenderBox& box : scene_->boxes)
+    const std::vector<bool> selectedBoxes = membership(highlightedBoxes_, scene_->boxes.size());
+    for (std::size_t index = 0; index < scene_->boxes.size(); ++index) {
+      const RenderBox& box = scene_->boxes[index];
       boxes.push_back(
           {toFloat3(box.center),
            {toFloat3(box.halfAxes[0]), toFloat3(box.halfAxes[1]), toFloat3(box.halfAxes[2])},
-           pack(box.color)});
+           pack(shown(box.color, selectedBoxes[index]))});
+    }
     boxGridSpacing_ = static_cast<float>(scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0);
   }
   uploadBuffer(this, ballAttributeBuffer_, balls, GL_STATIC_DRAW);
@@ -654,10 +658,8 @@ void SceneView::paintGL() {
   drawStatics(frame);
   if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
   explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions_.live());
-  if (handleArrow_) {
-    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, handleArrow_->first,
-                             handleArrow_->second, kSelectionColor);
-  }
+  for (const auto& [base, tip] : handleArrows_)
+    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
   if (multisampled) multisample_->blitTo(defaultFramebufferObject());
   endFrame();
   emit frameRendered(static_cast<double>(timer.nsecsElapsed()) / 1e6);

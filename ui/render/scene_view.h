@@ -64,11 +64,12 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
 
   // The box the view clips infinite planes and cylinders to: picking ignores what lies outside.
   Eigen::AlignedBox3d clipBox() const;
-  // Shown in the selection's colour (indices into the scene's balls, planes, cylinders).
-  void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders);
-  // An arrow drawn on top of everything: the editor's handle of a ball's velocity, a plane's
-  // normal or a cylinder's axis.
-  void setHandleArrow(std::optional<std::pair<Vec3, Vec3>> fromTo);
+  // Shown in the selection's colour (indices into the scene's balls, planes, cylinders, boxes).
+  void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders,
+                      std::vector<int> boxes);
+  // Arrows drawn on top of everything, each from its base to its tip: the editor's handles of a
+  // ball's velocity, a plane's normal, a cylinder's axis, or a box's faces and turn.
+  void setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows);
 
   // The camera target tracks this ball; -1 stops. Panning or Home stop it too.
   void setFollowedBall(int index);
@@ -151,7 +152,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::vector<int> highlightedBalls_;
   std::vector<int> highlightedPlanes_;
   std::vector<int> highlightedCylinders_;
-  std::optional<std::pair<Vec3, Vec3>> handleArrow_;
+  std::vector<int> highlightedBoxes_;
+  std::vector<std::pair<Vec3, Vec3>> handleArrows_;
   std::optional<bool> antialiasingChoice_;
   bool softwareRenderer_ = false;
   QElapsedTimer clock_;
