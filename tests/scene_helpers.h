@@ -3,7 +3,25 @@
 
 #include "sim/scene.h"
 
+#include <QTest>
+
+#include <initializer_list>
+
 namespace carom::testing {
+
+// An empty elastic world under 9.81 m/s^2 downwards.
+inline Scene elasticSceneWithGravity() {
+  Scene s;
+  s.world.gravity = Vec3(0, -9.81, 0);
+  s.world.restitution = 1.0;
+  return s;
+}
+
+// QTest data rows, one per method, in an int column "method".
+inline void addMethodRows(std::initializer_list<Method> methods) {
+  QTest::addColumn<int>("method");
+  for (const Method method : methods) QTest::newRow(methodName(method).data()) << int(method);
+}
 
 inline Ball makeBall(const Vec3& position, const Vec3& velocity, double radius = 0.1,
                      double mass = 1.0) {

@@ -21,13 +21,6 @@ using carom::testing::makePlane;
 namespace {
 constexpr double kG = 9.81;
 
-Scene sceneWithGravity() {
-  Scene s;
-  s.world.gravity = Vec3(0, -kG, 0);
-  s.world.restitution = 1.0;
-  return s;
-}
-
 // Largest depth of any ball inside any box, and whether a centre is inside one.
 struct Inside {
   double depth = 0.0;
@@ -46,16 +39,12 @@ Inside insideBoxes(const Scene& scene, const std::vector<Vec3>& positions) {
   return inside;
 }
 
-void addRows(std::initializer_list<Method> methods) {
-  QTest::addColumn<int>("method");
-  for (const Method method : methods) QTest::newRow(methodName(method).data()) << int(method);
-}
 void addMethodRows() {
-  addRows({Method::Exact, Method::Swept, Method::Discrete});
+  testing::addMethodRows({Method::Exact, Method::Swept, Method::Discrete});
 }
 // The methods that go from contact to contact (and rest balls).
 void addEventMethodRows() {
-  addRows({Method::Exact, Method::Swept});
+  testing::addMethodRows({Method::Exact, Method::Swept});
 }
 }  // namespace
 
@@ -65,7 +54,7 @@ class TestBoxes : public QObject {
   // A ball dropped onto a box's top face meets it at t = sqrt(2 h / g) and, elastic, comes back
   // up to where it started; the contact is counted as ball-box.
   void dropOntoATopFace() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.boxes.push_back(makeBox({0, 0, 0}, {1, 0.5, 1}));
     s.balls.push_back(makeBall({0.2, 2.6, -0.3}, {0, 0, 0}, 0.1));
     Simulation sim(s);
@@ -85,7 +74,7 @@ class TestBoxes : public QObject {
   // Onto a corner: it bounces along the line from the corner to its centre, so that its speed
   // after is the reflection of the fall's about that normal.
   void dropOntoACornerBouncesAlongTheCornerLine() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.boxes.push_back(makeBox({0, 0, 0}, {1, 0.5, 1}));
     const double r = 0.2, dx = 0.08, dz = 0.05;
     s.balls.push_back(makeBall({1 + dx, 3, 1 + dz}, {0, 0, 0}, r));
@@ -110,7 +99,7 @@ class TestBoxes : public QObject {
   void inelasticBallRestsOnABoxTop_data() { addEventMethodRows(); }
   void inelasticBallRestsOnABoxTop() {
     QFETCH(int, method);
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.world.method = Method(method);
     s.world.restitution = 0.6;
     s.boxes.push_back(makeBox({0, 0, 0}, {1, 0.5, 1}));
@@ -129,7 +118,7 @@ class TestBoxes : public QObject {
   void slidesAlongABoxTopAndLeavesItsEdge_data() { addEventMethodRows(); }
   void slidesAlongABoxTopAndLeavesItsEdge() {
     QFETCH(int, method);
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.world.method = Method(method);
     s.boxes.push_back(makeBox({0, 0, 0}, {1, 0.5, 1}));
     const double r = 0.1, speed = 1.5;
@@ -154,7 +143,7 @@ class TestBoxes : public QObject {
       QVERIFY2(sim.stats().events < 10, qPrintable(QString::number(sim.stats().events)));
   }
   void slidesDownATurnedBoxTop() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     const double degrees = 20.0, angle = degrees * std::numbers::pi / 180.0;
     s.boxes.push_back(makeBox({0, 0, 0}, {3, 0.5, 1}, Rotation{Vec3::UnitZ(), -degrees}));
     // On the top face, touching, at rest: x along the slope from the centre.
@@ -173,7 +162,7 @@ class TestBoxes : public QObject {
   // A turned box: its ridge (a unit cube on an edge) sends a ball dropped beside the ridge line
   // off sideways, and it lands on the floor on the side it fell.
   void turnedBoxSendsABallOffItsSlope() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.planes.push_back(makePlane({0, -1.5, 0}, Vec3::UnitY()));
     s.boxes.push_back(makeBox({0, 0, 0}, {1, 1, 1}, Rotation{Vec3::UnitZ(), 45.0}));
     s.balls.push_back(makeBall({0.3, 3, 0}, {0, 0, 0}, 0.1));
@@ -187,7 +176,7 @@ class TestBoxes : public QObject {
   // An elastic scene of balls and boxes (some turned) in a closed room under gravity: a million
   // events under `exact` with its energy kept to 1e-9, and no ball ever inside a box.
   void elasticRoomOfBoxesKeepsItsEnergy() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     for (int a = 0; a < 3; ++a)
       for (const double side : {-1.0, 1.0})
         s.planes.push_back(makePlane(side * 3.0 * Vec3::Unit(a), -side * Vec3::Unit(a)));
@@ -224,7 +213,7 @@ class TestBoxes : public QObject {
   void binOfBoxesHoldsASettlingPile_data() { addMethodRows(); }
   void binOfBoxesHoldsASettlingPile() {
     QFETCH(int, method);
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.world.method = Method(method);
     s.world.restitution = 0.5;
     s.planes.push_back(makePlane({0, 0, 0}, Vec3::UnitY()));

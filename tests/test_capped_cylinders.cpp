@@ -21,17 +21,6 @@ using carom::testing::makePlane;
 namespace {
 constexpr double kG = 9.81;
 
-Scene sceneWithGravity() {
-  Scene s;
-  s.world.gravity = Vec3(0, -kG, 0);
-  s.world.restitution = 1.0;
-  return s;
-}
-
-void addRows(std::initializer_list<Method> methods) {
-  QTest::addColumn<int>("method");
-  for (const Method method : methods) QTest::newRow(methodName(method).data()) << int(method);
-}
 }  // namespace
 
 class TestCappedCylinders : public QObject {
@@ -40,7 +29,7 @@ class TestCappedCylinders : public QObject {
   // Dropped onto the cap of an upright cylinder: it meets it at t = sqrt(2 h / g), counted as
   // ball-cylinder, and comes back up to where it started.
   void dropOntoTheCap() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.cylinders.push_back(makeCylinder({0, 0, 0}, {0, 1, 0}, 0.5, 2.0));
     s.balls.push_back(makeBall({0.2, 3.0, -0.1}, {0, 0, 0}, 0.1));
     Simulation sim(s);
@@ -58,7 +47,7 @@ class TestCappedCylinders : public QObject {
 
   // Onto the rim: it bounces along the line from the rim point to its centre.
   void dropOntoTheRimBouncesAlongTheRimLine() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.cylinders.push_back(makeCylinder({0, 0, 0}, {0, 1, 0}, 0.5, 2.0));
     const double r = 0.2, dx = 0.1;
     s.balls.push_back(makeBall({0.5 + dx, 3.0, 0}, {0, 0, 0}, r));
@@ -79,7 +68,7 @@ class TestCappedCylinders : public QObject {
 
   // Onto the side of a lying cylinder, and past its end.
   void dropOntoTheSideAndPastTheEnd() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.cylinders.push_back(makeCylinder({0, 0, 0}, {1, 0, 0}, 0.5, 4.0));
     s.balls.push_back(makeBall({1.9, 3.0, 0}, {0, 0, 0}, 0.2));
     s.balls.push_back(makeBall({2.21, 3.0, 2.0}, {0, 0, 0}, 0.2));
@@ -95,10 +84,10 @@ class TestCappedCylinders : public QObject {
   }
 
   // An inelastic ball dropped onto a cap comes to rest on it, touching it.
-  void inelasticBallRestsOnACap_data() { addRows({Method::Exact, Method::Swept}); }
+  void inelasticBallRestsOnACap_data() { testing::addMethodRows({Method::Exact, Method::Swept}); }
   void inelasticBallRestsOnACap() {
     QFETCH(int, method);
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.world.method = Method(method);
     s.world.restitution = 0.6;
     s.cylinders.push_back(makeCylinder({0, 0, 0}, {0, 1, 0}, 0.8, 1.0));
@@ -117,7 +106,7 @@ class TestCappedCylinders : public QObject {
   // tilted), elastic, under gravity: a million events keep the energy to 1e-9 under `exact`, and
   // no ball is ever inside a solid.
   void elasticRoomOfFiniteShapesKeepsItsEnergy() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     for (int a = 0; a < 3; ++a)
       for (const double side : {-1.0, 1.0})
         s.planes.push_back(makePlane(side * 3.0 * Vec3::Unit(a), -side * Vec3::Unit(a)));
@@ -160,7 +149,7 @@ class TestCappedCylinders : public QObject {
   // `discrete` pushes a ball that sank into a cap or a side out by the closest point, and the
   // measures count no ball inside; a fast ball never passes through a thin disc (exact, swept).
   void discreteKeepsBallsOutOfACylinder() {
-    Scene s = sceneWithGravity();
+    Scene s = testing::elasticSceneWithGravity();
     s.world.method = Method::Discrete;
     s.world.restitution = 0.5;
     s.planes.push_back(makePlane({0, 0, 0}, Vec3::UnitY()));
@@ -175,7 +164,9 @@ class TestCappedCylinders : public QObject {
     QVERIFY(sim.stats().collisions.ballCylinder > 0);
   }
 
-  void fastBallDoesNotPassThroughAThinDisc_data() { addRows({Method::Exact, Method::Swept}); }
+  void fastBallDoesNotPassThroughAThinDisc_data() {
+    testing::addMethodRows({Method::Exact, Method::Swept});
+  }
   void fastBallDoesNotPassThroughAThinDisc() {
     QFETCH(int, method);
     for (const double speed : {1.0, 1e3, 1e6}) {
