@@ -90,6 +90,38 @@ std::optional<Entry> enterBox(const BoxShape& box, const Vec3& origin, const Vec
   return Entry{entry, box.axes * normal};
 }
 
+// Where a ray enters a solid cylinder: its side (between the caps, for a capped one) or, for a
+// capped one, a cap's disc. None from inside or on the surface, and when the ray misses.
+std::optional<Entry> enterCylinder(const CylinderShape& shape, const Vec3& origin,
+                                   const Vec3& unit) {
+  std::optional<Entry> best;
+  // In the plane across the axis the cylinder is a disc, crossed at `across` per unit of the
+  // ray's length.
+  const Vec3 across = shape.perpendicular(unit);
+  const double acrossSpeed = across.norm();
+  if (acrossSpeed > kParallel) {
+    if (const std::optional<Entry> side = enterRound(shape.perpendicular(origin - shape.point),
+                                                     across / acrossSpeed, shape.radius)) {
+      const double distance = side->distance / acrossSpeed;
+      const double along = shape.axis.dot(origin + distance * unit - shape.point);
+      if (std::abs(along) <= shape.halfLength) best = Entry{distance, side->normal};
+    }
+  }
+  if (!shape.capped()) return best;
+  const double start = shape.axis.dot(origin - shape.point);
+  const double axisSpeed = shape.axis.dot(unit);
+  // From beyond a cap, towards it: the cap's plane crossed within the radius.
+  if (std::abs(start) > shape.halfLength && axisSpeed * start < 0.0) {
+    const double side = start > 0.0 ? 1.0 : -1.0;
+    const double distance = (side * shape.halfLength - start) / axisSpeed;
+    const Vec3 point = origin + distance * unit;
+    if (shape.perpendicular(point - shape.point).norm() <= shape.radius &&
+        (!best || distance < best->distance))
+      best = Entry{distance, side * shape.axis};
+  }
+  return best;
+}
+
 class NearestHit {
  public:
   NearestHit(const Vec3& origin, const Eigen::AlignedBox3d* clip, double clipMargin)
@@ -156,20 +188,13 @@ std::optional<RayHit> castRay(const Scene& scene, const Vec3& origin, const Vec3
 
   for (std::size_t i = 0; i < scene.cylinders.size(); ++i) {
     const CylinderShape shape = cylinderShape(scene.cylinders[i]);
-    // In the plane across the axis the cylinder is a disc, crossed at `across` per unit of the
-    // ray's length.
-    const Vec3 across = shape.perpendicular(*unit);
-    const double acrossSpeed = across.norm();
-    if (!(acrossSpeed > kParallel)) continue;
-    const std::optional<Entry> entry =
-        enterRound(shape.perpendicular(origin - shape.point), across / acrossSpeed, shape.radius);
-    if (!entry) continue;
-    const double distance = entry->distance / acrossSpeed;
-    if (!std::isfinite(distance) || !nearest.closer(distance)) continue;
-    const Vec3 point = origin + distance * *unit;
+    const std::optional<Entry> entry = enterCylinder(shape, origin, *unit);
+    if (!entry || !std::isfinite(entry->distance) || !nearest.closer(entry->distance)) continue;
+    const Vec3 point = origin + entry->distance * *unit;
     const Vec3 axisPoint = shape.point + shape.axis.dot(point - shape.point) * shape.axis;
-    if (!nearest.drawn(axisPoint, distance)) continue;
-    nearest.offer(ShapeKind::Cylinder, i, distance, point, entry->normal);
+    // A capped cylinder is drawn whole; an infinite one only within the clip.
+    if (!shape.capped() && !nearest.drawn(axisPoint, entry->distance)) continue;
+    nearest.offer(ShapeKind::Cylinder, i, entry->distance, point, entry->normal);
   }
 
   for (std::size_t i = 0; i < scene.boxes.size(); ++i) {

@@ -198,6 +198,33 @@ class TestRayCast : public QObject {
     QVERIFY(!castRay(scene, {3, 3, 3}, {1, 0.5, 0}));
   }
 
+  // A capped cylinder is picked on its side between the caps and on its caps, never beyond.
+  void cappedCylinderHits() {
+    Scene scene;
+    Cylinder stump = makeCylinder({0, 0, 0}, {0, 3, 0}, 0.5);
+    stump.length = 2.0;
+    scene.cylinders.push_back(stump);
+    // Straight down the axis onto the top cap.
+    QString problem = mismatch(castRay(scene, {0.2, 5, 0}, {0, -1, 0}),
+                               {ShapeKind::Cylinder, 0, 4.0, {0.2, 1, 0}, {0, 1, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Up onto the bottom cap.
+    problem = mismatch(castRay(scene, {0, -4, 0.1}, {0, 2, 0}),
+                       {ShapeKind::Cylinder, 0, 3.0, {0, -1, 0.1}, {0, -1, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // The side between the caps.
+    problem = mismatch(castRay(scene, {3, 0.5, 0}, {-1, 0, 0}),
+                       {ShapeKind::Cylinder, 0, 2.5, {0.5, 0.5, 0}, {1, 0, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+    // Above the top cap and beside the bottom one: nothing there.
+    QVERIFY(!castRay(scene, {3, 1.5, 0}, {-1, 0, 0}));
+    QVERIFY(!castRay(scene, {0.7, 5, 0}, {0, -1, 0}));
+    // Slanting down past the side's top edge onto the cap: enters at y = 1 through the cap.
+    problem = mismatch(castRay(scene, {1.4, 2, 0}, {-1, -1, 0}),
+                       {ShapeKind::Cylinder, 0, std::sqrt(2.0), {0.4, 1, 0}, {0, 1, 0}});
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
+  }
+
   void cylinderHits() {
     Scene scene;
     scene.cylinders.push_back(makeCylinder({0, 0, 0}, {0, 5, 0}, 1.0));
