@@ -84,17 +84,20 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   struct Surface {
     Vec3 normal;
     double restitution;
+    ContactKind kind;  // a plane's, or a box face's
   };
   Surface planes[2];
   std::size_t count = 0;
   for (const int k : {p.slidePlane, p.creasePlane}) {
     if (k < 0) continue;
-    planes[count++] = {slideSurfaces_[k].plane.normal, surfaceRestitution(i, k)};
+    const ContactKind kind =
+        k < static_cast<int>(bodies_.planes.size()) ? ContactKind::BallPlane : ContactKind::BallBox;
+    planes[count++] = {slideSurfaces_[k].plane.normal, surfaceRestitution(i, k), kind};
     noteRestitution(planes[count - 1].restitution);
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
                  tolerance::kMaxSimultaneousReflections,
-                 [&](std::size_t, double) { ++stats.collisions.ballPlane; });
+                 [&](std::size_t k, double) { stats.collisions.add(planes[k].kind); });
   dropPlanesLeft(i);
   keepOnPlane(i);
   changed(i);

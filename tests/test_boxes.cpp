@@ -142,6 +142,21 @@ class TestBoxes : public QObject {
     if (Method(method) == Method::Exact)
       QVERIFY2(sim.stats().events < 10, qPrintable(QString::number(sim.stats().events)));
   }
+  // A ball falling onto one sliding on a box's top presses it into the face: the face answers as
+  // a ball-box contact (it was counted as a ball-plane one, in a scene with no plane).
+  void aPressedSlideOnABoxCountsAsBallBox() {
+    Scene s = testing::elasticSceneWithGravity();
+    s.boxes.push_back(makeBox({0, 0, 0}, {1, 0.5, 1}));
+    s.balls.push_back(makeBall({0, 0.6, 0}, {0.2, 0, 0}, 0.1));
+    s.balls.push_back(makeBall({0.1, 1.3, 0}, {0, 0, 0}, 0.1));
+    Simulation sim(s);
+    sim.advanceTo(1.0);
+    const CollisionCounts& counts = sim.stats().collisions;
+    QVERIFY2(counts.ballBall > 0 && counts.ballBox > 1,
+             qPrintable(QString("%1 %2").arg(counts.ballBall).arg(counts.ballBox)));
+    QCOMPARE(counts.ballPlane, std::uint64_t(0));
+  }
+
   void slidesDownATurnedBoxTop() {
     Scene s = testing::elasticSceneWithGravity();
     const double degrees = 20.0, angle = degrees * std::numbers::pi / 180.0;
