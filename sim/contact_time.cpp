@@ -130,6 +130,12 @@ Rebased rebase(const Vec3& u0, const Vec3& u1, const Vec3& u2, double t0) {
   return {u0 + (u1 + u2 * t0) * t0, u1 + 2.0 * t0 * u2, u2};
 }
 
+// When a path inside a part (gap <= 0) first leaves it: the first entry of the negated gap.
+double exitTime(Polynomial gap, double horizon) {
+  for (double& c : gap.c) c = -c;
+  return firstEntry(gap, horizon);
+}
+
 // The first entry of |u(t)| into rho within [0, end], for a part of the capped cylinder that the
 // ball may be inside at the start without having entered it (touching a face and leaving, or
 // sliding on it): then the part is entered again only after the path has left it.
@@ -137,10 +143,7 @@ double reentry(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho, doubl
                bool approaching) {
   if (!inside) return sphereEntry(u0, u1, u2, rho, end);
   if (approaching) return 0.0;
-  // Leaving the disc is entering its outside, |u|^2 - rho^2 turning positive.
-  Polynomial outside = squaredLengthMinus(u0, u1, u2, rho);
-  for (double& c : outside.c) c = -c;
-  const double exit = firstEntry(outside, end);
+  const double exit = exitTime(squaredLengthMinus(u0, u1, u2, rho), end);
   if (!(exit < end)) return kNever;
   const Rebased after = rebase(u0, u1, u2, exit);
   const double t = sphereEntry(after.u0, after.u1, after.u2, rho, end - exit);
@@ -229,9 +232,7 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
     double start = 0.0;
     if (inside) {
       // Touching the rim and leaving: entered again only after being clear of it.
-      Polynomial outside = gap;
-      for (double& c : outside.c) c = -c;
-      start = firstEntry(outside, std::min(horizon, first));
+      start = exitTime(gap, std::min(horizon, first));
       if (!(start < kNever)) continue;
       const Rebased q = rebase(q0, v, a, start);
       f = rimGap(q.u0, q.u1, q.u2, R, radius);
