@@ -101,7 +101,7 @@ void EventEngine::buildGrid(const std::vector<BallState>& state) {
   // without balls (being built in the editor) gets one unit cell.
   const double cellSize =
       particles_.empty() ? 1.0 : std::max(2.0 * bodies_.maxRadius * (1.0 + 1e-9), 1e-300);
-  const std::size_t maxCells = 4 * particles_.size() + 64;
+  const std::size_t maxCells = 32 * particles_.size() + 64;
   grid_ = CellGrid(lower, upper, cellSize, maxCells);
   members_.reset(grid_.cellCount(), static_cast<int>(particles_.size()));
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
@@ -118,7 +118,7 @@ void EventEngine::buildStaticLists() {
   sharedStatics_ = false;
   // Many shapes in many cells would take more memory than the lists save time: then every cell
   // shares one list of all shapes.
-  const std::size_t budget = 16 * (particles_.size() + 1024);
+  const std::size_t budget = 16 * (particles_.size() + 1024) + 4 * std::size_t(cells);
   const double reach = bodies_.maxRadius * (1.0 + 1e-9);
   for (int cell = 0; cell < cells; ++cell) {
     staticStart_[cell] = static_cast<int>(statics_.size());
@@ -202,21 +202,31 @@ void EventEngine::predict(int i) {
   predictions_[i].crossing = {};
   if (!particles_[i].resting) {
     const BallPath path = pathAt(i, now_);
-    findStaticContact(i, path);
+    // Neighbours first: in a pile the next ball contact is near, and a static shape's contact
+    // time need only be solved for up to it (ballBoxContactTime then skips the quartics of
+    // corners out of reach). A static contact at the same instant still comes first.
     findBallContacts(i, path, [&](auto&& visit) { forEachNeighbour(i, visit); });
+    const Contact ball = predictions_[i].contact;
+    predictions_[i].contact = {};
+    findStaticContact(i, path, ball.time);
+    if (ball.time < predictions_[i].contact.time) predictions_[i].contact = ball;
     findCrossing(i, path);
   }
   schedule(i);
 }
 
-void EventEngine::findStaticContact(int i, const BallPath& path) {
+void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
   Contact& best = predictions_[i].contact;
+  // Contacts up to `until` are all found, a touch beyond it too, so that one at `until` itself
+  // is not lost to rounding.
+  const double bound =
+      until < kNever ? until + 1e-9 * (until - now_) + std::numeric_limits<double>::min() : kNever;
   const double r = bodies_.radius[i];
   const Particle& p = particles_[i];
   for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
     const StaticRef ref = statics_[s];
     if (slidesAgainst(p, ref)) continue;  // it slides along, never into it
-    const double horizon = std::min(best.time, horizon_) - now_;
+    const double horizon = std::min({best.time, horizon_, bound}) - now_;
     double t = kNever;
     EventKind kind = EventKind::Plane;
     switch (ref.kind) {
@@ -505,6 +515,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
                                                  : std::min(restSpeed_[i], restSpeed_[j]);
     const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
+    // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
+    const double lossless = pressed || restitution >= 1.0 ? 0.0 : separation;
     // What the exchange alone gives each ball, without the minimum separation: the energy an
     // elastic pair's books keep (closeBooks).
     Vec3 exchangedA = ma.velocity, exchangedB = mb.velocity;
@@ -513,7 +525,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     exchangedI = 0.5 * (exchangedA.squaredNorm() - ma.velocity.squaredNorm());
     exchangedJ = 0.5 * (exchangedB.squaredNorm() - mb.velocity.squaredNorm());
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
-                    restitution, minimum);
+                    restitution, minimum, lossless);
     changed(i);
     changed(j);
     updateSlide(i, stats);

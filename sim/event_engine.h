@@ -119,7 +119,9 @@ class EventEngine {
   void predictAll();
   // Predicts ball i's next contact and crossing from scratch.
   void predict(int i);
-  void findStaticContact(int i, const BallPath& path);
+  // The earliest contact with a static shape, solved for no further ahead than `until`.
+  void findStaticContact(int i, const BallPath& path,
+                         double until = std::numeric_limits<double>::infinity());
   void findBallContact(int i, const BallPath& path, int k);
   // Tests every ball that forEachBall(visit) visits.
   template <typename ForEachBall>

@@ -6,14 +6,14 @@
 namespace carom {
 
 double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
-                       double restitution, double minimumSeparation) {
+                       double restitution, double minimumSeparation, double lossless) {
   const double approach = (va - vb).dot(n);
   const double totalInverse = inverseMassA + inverseMassB;
   if (totalInverse <= 0.0) return approach;
   // A pair that (by round-off) already separates keeps separating at no less than the minimum.
   const double closing = std::max(approach, 0.0);
   const double separation =
-      std::max(separationSpeed(closing, restitution, minimumSeparation), -approach);
+      std::max(separationSpeed(closing, restitution, minimumSeparation, lossless), -approach);
   // Change of relative normal speed, shared in proportion to inverse mass; written with weights
   // rather than an impulse so that mass ratios of 1e12 lose nothing to rounding.
   const double change = approach + separation;

@@ -8,9 +8,13 @@
 namespace carom {
 
 // The speed at which a contact separates: restitution times the approach speed, but never less
-// than `minimum` (the rest policy's floor, see docs/physics.md).
-inline double separationSpeed(double approach, double restitution, double minimum) {
-  const double s = restitution * approach;
+// than `minimum` (the rest policy's floor, see docs/physics.md), and restitution takes nothing of
+// an approach below `lossless` nor cuts a faster one below it (rule 8 of rest_policy.h).
+inline double separationSpeed(double approach, double restitution, double minimum,
+                              double lossless = 0.0) {
+  double s = restitution * approach;
+  const double kept = approach < lossless ? approach : lossless;
+  if (s < kept) s = kept;
   return s < minimum ? minimum : s;
 }
 
@@ -18,7 +22,7 @@ inline double separationSpeed(double approach, double restitution, double minimu
 // immovable ball. Only the normal components change; momentum is conserved for finite masses.
 // Returns the approach speed.
 double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
-                       double restitution, double minimumSeparation);
+                       double restitution, double minimumSeparation, double lossless = 0.0);
 
 // A ball against an immovable surface with unit normal `n` pointing to the ball. When the
 // minimum separation speed exceeds what restitution gives, the extra normal speed is taken from

@@ -16,6 +16,9 @@
 //     that touches it from above (it may rest on it). A gentler hit treats it as immovable.
 //  5. Without gravity, collisions separate at no less than kCollapseSpeedFraction of the scene's
 //     initial RMS speed, which stops inelastic collapse in a free gas.
+//  8. Under gravity, restitution takes nothing from two balls that meet slower than the rest
+//     speed, and parts faster ones at no less than it (never faster than they met): real
+//     restitution tends to one at low speed, and a pile flowing down a slope cannot collapse.
 
 #include "sim/scene.h"
 

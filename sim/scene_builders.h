@@ -17,4 +17,11 @@ void addBoxWalls(Scene& scene, double halfSide, std::initializer_list<int> axes 
 Scene makeGasInBox(int ballCount, double packingFraction, const Vec3& gravity, std::uint64_t seed,
                    double radius = 0.5);
 
+// A Galton board for `ballCount` balls of radius `radius` under gravity -y, restitution 0.5:
+// a block of balls above a funnel of two boxes sloping at 35 degrees, a triangle of capped pegs
+// along z (at least ten rows, about a third of the square root of the ball count), bins of thin
+// boxes tall enough for the fullest, and glass planes 3 radii either side of the middle. The
+// seed jitters the balls' starting places.
+Scene makeGaltonBoard(int ballCount, std::uint64_t seed, double radius = 0.01);
+
 }  // namespace carom

@@ -4,11 +4,13 @@
 
 #include "scene_helpers.h"
 #include "sim/measures.h"
+#include "sim/scene_builders.h"
 #include "sim/simulation.h"
 #include "sim/validation.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -180,6 +182,35 @@ class TestCappedCylinders : public QObject {
       QVERIFY2(sim.positions()[0].x() < 0.0, qPrintable(QString::number(speed)));
       QCOMPARE(sim.stats().collisions.ballCylinder, std::uint64_t(1));
     }
+  }
+  // The benchmark's Galton board: valid as built, at least 300 finite pegs and boxes for
+  // 10,000 balls, and its balls pour through the funnel and pegs without entering any solid.
+  void galtonBoardPoursWithoutEnteringASolid() {
+    const Scene big = makeGaltonBoard(10000, 1);
+    QVERIFY(validateScene(big).empty());
+    QVERIFY2(big.cylinders.size() + big.boxes.size() >= 300,
+             qPrintable(QString::number(big.cylinders.size() + big.boxes.size())));
+    for (const Cylinder& peg : big.cylinders) QVERIFY(peg.length.has_value());
+    const Scene scene = makeGaltonBoard(150, 2, 0.02);
+    QVERIFY(validateScene(scene).empty());
+    Simulation sim(scene);
+    double worst = 0.0;
+    int escaped = 0;
+    for (int k = 1; k <= 40; ++k) {
+      sim.advanceTo(0.025 * k);
+      const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
+      worst = std::max(worst, overlaps.maxPenetration);
+      escaped += overlaps.escaped;
+    }
+    QVERIFY(escaped == 0);
+    // A known fault, left open in issue 13: a ball that slides off the inner end of a funnel
+    // board sometimes sinks into the board's edge (0.3 mm for 2 cm balls here, at t = 0.75 s).
+    QEXPECT_FAIL("", "a ball sliding off a box's edge can sink into the edge", Continue);
+    QVERIFY2(worst < 1e-9 * 0.02, qPrintable(QString::number(worst)));
+    // By then the balls have met the funnel, the pegs and one another.
+    QVERIFY(sim.stats().collisions.ballBox > 0);
+    QVERIFY(sim.stats().collisions.ballCylinder > 0);
+    QVERIFY(sim.stats().collisions.ballBall > 0);
   }
 };
 
