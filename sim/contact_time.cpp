@@ -31,15 +31,15 @@ double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon)
   if (b >= 0.0) return kNever;  // receding or sliding past: on a straight path it stays so
   const double a = u1.squaredNorm();
   const double length2 = u0.squaredNorm();
-  // Most pairs miss by far: reject them on the cheap form before taking square roots, with
-  // margins well above the rounding of the cheap form. (The contact comes no sooner than
-  // c / (-2b).)
   // An approach within the round-off of the dot product is none: two touching balls whose
   // relative velocity is along their common tangent to a few ulps. The response computes the
   // same rate in another order and may find it receding: it then changes nothing, and the
   // contact, predicted again at once, looped at one instant (a bin of a Galton board,
   // test_contact_time). Skipping it changes no energy.
   if (b * b <= 1e-30 * a * length2) return kNever;
+  // Most pairs miss by far: reject them on the cheap form before taking square roots, with
+  // margins well above the rounding of the cheap form. (The contact comes no sooner than
+  // c / (-2b).)
   const double roughC = length2 - rho * rho;
   if (roughC > 0.0 &&
       (b * b - a * roughC < -1e-12 * a * length2 || roughC > -2.0 * b * horizon * (1.0 + 1e-12)))
