@@ -15,6 +15,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
@@ -48,6 +49,7 @@ class TestEditor : public carom::testing::EditorFixture {
   void addsEachKindByClicking();
   void refusesAPlacementWithNoRoom();
   void addsBoxesRestingOnWhatIsClicked();
+  void addsCappedCylindersAfterACappedOne();
   void selectsByClicking();
   void dragMovesAsOneCommand();
   void dragConstrainedToAnAxis();
@@ -59,6 +61,7 @@ class TestEditor : public carom::testing::EditorFixture {
   void unsavedChangesPrompt();
   void titleShowsModified();
   void dragSnapsToTheGrid();
+  void handleDragsSnapToTheGrid();
   void velocityArrowTipDrags();
   void altDragGivesABallAtRestAVelocity();
   void newAsksAboutUnsavedChanges();
@@ -160,6 +163,50 @@ void TestEditor::addsBoxesRestingOnWhatIsClicked() {
   QCOMPARE(document().scene().boxes.size(), std::size_t{1});
   document().undoStack()->redo();
   QVERIFY(document().scene() == withBoth);
+}
+
+// After a capped cylinder, the Add Cylinder tool adds capped ones of its length and radius,
+// standing with the lower cap on the surface clicked; the dock's length field, emptied, makes
+// the new one infinite, and the next one added is infinite too.
+void TestEditor::addsCappedCylindersAfterACappedOne() {
+  carom::Scene edited = document().scene();
+  carom::Cylinder post;
+  post.point = Vec3(2, 0.75, -2);
+  post.radius = 0.4;
+  post.length = 1.5;
+  edited.cylinders.push_back(post);
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+
+  chooseTool("toolAddCylinder");
+  click(Vec3(-2, 0, -1));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{2});
+  const carom::Cylinder added = document().scene().cylinders[1];
+  QCOMPARE(added.length, std::optional(1.5));
+  QCOMPARE(added.radius, 0.4);
+  QVERIFY(added.axis.normalized().isApprox(Vec3::UnitY()));
+  QVERIFY2(std::abs(added.point.y() - 0.75) < 1e-9, qPrintable(QString::number(added.point.y())));
+  QVERIFY((added.point - Vec3(-2, 0.75, -1)).norm() < 0.1);
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Cylinder, 1}}));
+  QCOMPARE(document().undoStack()->undoText(), QString("Add Cylinder"));
+
+  auto* length = window_->findChild<QLineEdit*>("cylinderLength");
+  QVERIFY(length && length->isVisible());
+  QCOMPARE(length->text(), QString("1.5"));
+  QTest::mouseClick(length, Qt::LeftButton);
+  QTest::keyClick(length, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(length, Qt::Key_Backspace);
+  QTest::keyClick(length, Qt::Key_Return);
+  QCOMPARE(document().scene().cylinders[1].length, std::nullopt);
+  click(Vec3(-2, 0, 1));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{3});
+  QCOMPARE(document().scene().cylinders[2].length, std::nullopt);
+  QVERIFY(std::abs(document().scene().cylinders[2].point.y()) < 1e-9);
+
+  document().undoStack()->undo();
+  document().undoStack()->undo();
+  QVERIFY(document().scene().cylinders[1] == added);
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{1});
 }
 
 void TestEditor::selectsByClicking() {
@@ -364,6 +411,59 @@ void TestEditor::dragSnapsToTheGrid() {
     QVERIFY2(std::abs(steps - std::round(steps)) < 1e-9, qPrintable(QString::number(moved[a])));
   }
   QVERIFY(moved.x() >= 0.25);
+}
+
+// With snapping on, a box's face and a capped cylinder's end dragged by their handles make the
+// size and the length whole grid steps; the other face and end stay, so that a box whose faces
+// were on the grid keeps them there.
+void TestEditor::handleDragsSnapToTheGrid() {
+  carom::Scene edited = document().scene();
+  carom::Box crate;
+  crate.center = Vec3(2, 0.5, 0);
+  edited.boxes.push_back(crate);
+  carom::Cylinder post;
+  post.point = Vec3(-2, 0.5, -2);
+  post.radius = 0.3;
+  post.length = 1.0;
+  edited.cylinders.push_back(post);
+  QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  chooseTool("toolSelect");
+  window_->findChild<QAction*>("snapToGrid")->trigger();
+  QVERIFY(window_->tools()->snapToGrid());
+  const double step = EditorTools::gridStep();
+  const auto onGrid = [&](double value) {
+    return std::abs(value / step - std::round(value / step)) < 1e-9;
+  };
+
+  document().setSelection({{ObjectKind::Box, 0}});
+  EditorTools::Handle face;
+  for (const EditorTools::Handle& handle : window_->tools()->handles())
+    if (handle.role == EditorTools::HandleRole::BoxFace && handle.axis == 0 && handle.side == 1)
+      face = handle;
+  QCOMPARE(face.base, Vec3(2.5, 0.5, 0));
+  // 0.6 m out, between the grid's 0.5 and 0.75.
+  drag(at(face.tip), at(face.tip + Vec3(0.6, 0, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.x() > 0.74; });
+  const carom::Box wider = document().scene().boxes[0];
+  const double size = 2 * wider.halfExtents.x();
+  QVERIFY2(onGrid(size) && size > 1.4 && size < 1.8, qPrintable(QString::number(size)));
+  QVERIFY2(onGrid(wider.center.x() + wider.halfExtents.x()),
+           qPrintable(QString::number(wider.center.x() + wider.halfExtents.x())));
+  QCOMPARE(wider.center.x() - wider.halfExtents.x(), 1.5);
+
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  EditorTools::Handle end;
+  for (const EditorTools::Handle& handle : window_->tools()->handles())
+    if (handle.role == EditorTools::HandleRole::CylinderEnd && handle.side == 1) end = handle;
+  QCOMPARE(end.base, Vec3(-2, 1, -2));
+  drag(at(end.tip), at(end.tip + Vec3(0, 0.35, 0)),
+       [&] { return document().scene().cylinders[0].length.value_or(0) > 1.2; });
+  const carom::Cylinder longer = document().scene().cylinders[0];
+  QVERIFY2(onGrid(*longer.length) && *longer.length > 1.2 && *longer.length < 1.6,
+           qPrintable(QString::number(*longer.length)));
+  QCOMPARE(longer.point.y() - 0.5 * *longer.length, 0.0);
+  QVERIFY(onGrid(longer.point.y() + 0.5 * *longer.length));
+  QCOMPARE(document().undoStack()->count(), 3);
 }
 
 void TestEditor::velocityArrowTipDrags() {

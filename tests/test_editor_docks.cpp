@@ -1,11 +1,13 @@
 // The editor's docks and handles as a user drives them: the outline (grouped objects, selection
 // shared with the view, renaming), the properties dock (typed fields, units, the shared
-// validation refusing bad values, multi-selection, the world settings, the colour picker), and
-// the handles that turn a plane's normal and a cylinder's axis.
+// validation refusing bad values, multi-selection, the world settings, the colour picker, a
+// cylinder's length), and the handles that turn a plane's normal and a cylinder's axis, move a
+// box's faces and a capped cylinder's ends.
 
 #include "sim/io/scene_file.h"
 #include "sim/shapes.h"
 #include "tests/editor_fixture.h"
+#include "tests/scene_helpers.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
@@ -57,6 +59,12 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void turnsAPlaneByItsHandle();
   void turnsACylinderByItsHandle();
   void resizesABoxByItsFaceHandles();
+  void resizesABoxFromItsNegativeFaces();
+  void editsACylindersLength();
+  void refusesBadLengths_data();
+  void refusesBadLengths();
+  void editsTheLengthOfSeveralCylinders();
+  void resizesACappedCylinderByItsEnds();
   void turnsABoxByItsHandle();
   void typesANormal();
   void saveTakesTheValueBeingTyped();
@@ -137,6 +145,12 @@ class TestEditorDocks : public carom::testing::EditorFixture {
     post.point = Vec3(2, 0, -2);
     post.radius = 0.3;
     edited.cylinders.push_back(post);
+    QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
+  }
+  // Adds a capped cylinder, as one command.
+  void addCappedCylinder(const Vec3& middle, const Vec3& axis, double length) {
+    carom::Scene edited = document().scene();
+    edited.cylinders.push_back(carom::testing::makeCylinder(middle, axis, 0.3, length));
     QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   }
 };
@@ -599,9 +613,10 @@ namespace {
 using Handle = carom::editor::EditorTools::Handle;
 using HandleRole = carom::editor::EditorTools::HandleRole;
 
-std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis) {
+std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis,
+                                 int side = 1) {
   for (const Handle& handle : handles)
-    if (handle.role == role && handle.axis == axis) return handle;
+    if (handle.role == role && handle.axis == axis && handle.side == side) return handle;
   return std::nullopt;
 }
 
@@ -614,7 +629,7 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   addBox();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Box, 0}});
-  QCOMPARE(window_->tools()->handles().size(), std::size_t{4});
+  QCOMPARE(window_->tools()->handles().size(), std::size_t{7});  // six faces and the turn
   const int commands = document().undoStack()->count();
 
   std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
@@ -659,6 +674,235 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   QCOMPARE(document().scene().boxes[0].halfExtents, Vec3::Constant(0.5));
   document().undoStack()->redo();
   QVERIFY(document().scene().boxes[0] == wider);
+}
+
+// The -x face dragged outwards and the -z face inwards: each moves that face only, the +x and
+// +z faces stay where they were.
+void TestEditorDocks::resizesABoxFromItsNegativeFaces() {
+  addBox();
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Box, 0}});
+  const int commands = document().undoStack()->count();
+  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0, -1);
+  QVERIFY(face);
+  QCOMPARE(face->base, Vec3(1.5, 0.5, 0));
+  QVERIFY((face->tip - face->base).normalized().isApprox(-Vec3::UnitX()));
+  drag(at(face->tip), at(face->tip - Vec3(0.4, 0, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.x() > 0.65; });
+  const carom::Box wider = document().scene().boxes[0];
+  QVERIFY2(std::abs(wider.halfExtents.x() - 0.7) < 0.05,
+           qPrintable(QString::number(wider.halfExtents.x())));
+  QVERIFY(std::abs(wider.center.x() + wider.halfExtents.x() - 2.5) < 1e-9);  // the +x face
+  QCOMPARE(wider.halfExtents.y(), 0.5);
+  QCOMPARE(wider.halfExtents.z(), 0.5);
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Resize Box"));
+
+  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2, -1);
+  QVERIFY(face);
+  QCOMPARE(face->base, Vec3(wider.center.x(), 0.5, -0.5));
+  drag(at(face->tip), at(face->tip + Vec3(0, 0, 0.3)),
+       [&] { return document().scene().boxes[0].halfExtents.z() < 0.4; });
+  const carom::Box shallower = document().scene().boxes[0];
+  QVERIFY2(std::abs(shallower.halfExtents.z() - 0.35) < 0.05,
+           qPrintable(QString::number(shallower.halfExtents.z())));
+  QVERIFY(std::abs(shallower.center.z() + shallower.halfExtents.z() - 0.5) < 1e-9);
+  QCOMPARE(shallower.center.x(), wider.center.x());
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+  document().undoStack()->undo();
+  QVERIFY(document().scene().boxes[0] == wider);
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().boxes[0].center, Vec3(2, 0.5, 0));
+  QCOMPARE(document().scene().boxes[0].halfExtents, Vec3::Constant(0.5));
+  document().undoStack()->redo();
+  QVERIFY(document().scene().boxes[0] == wider);
+}
+
+// A cylinder's length, in metres, typed in; emptied, the cylinder is infinite again. Each is one
+// command that undoes, and the point (the axis segment's middle) stays where it was.
+void TestEditorDocks::editsACylindersLength() {
+  addCylinder();
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  QLineEdit* length = field("cylinderLength");
+  QVERIFY(length && length->isVisible());
+  QCOMPARE(length->text(), QString());
+  QCOMPARE(length->placeholderText(), QString("infinite"));
+  QVERIFY2(length->toolTip().contains("empty: infinite"), qPrintable(length->toolTip()));
+  QVERIFY(unitShown("m"));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  QVERIFY(!length->isVisible());
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+
+  const int commands = document().undoStack()->count();
+  type("cylinderLength", "2");
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(2.0));
+  QCOMPARE(document().scene().cylinders[0].point, Vec3(2, 0, -2));
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Resize Cylinder"));
+  QCOMPARE(length->text(), QString("2"));
+  QVERIFY(properties().message().isEmpty());
+  type("cylinderLength", "");
+  QCOMPARE(document().scene().cylinders[0].length, std::nullopt);
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+  QCOMPARE(length->placeholderText(), QString("infinite"));
+  // Left as it is, it changes nothing.
+  QTest::mouseClick(length, Qt::LeftButton);
+  QTest::keyClick(length, Qt::Key_Return);
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(2.0));
+  QCOMPARE(length->text(), QString("2"));
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().cylinders[0].length, std::nullopt);
+  document().undoStack()->redo();
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(2.0));
+}
+
+void TestEditorDocks::refusesBadLengths_data() {
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("negative") << "-1"
+                            << "cylinders[0].length: must be positive";
+  QTest::newRow("zero") << "0"
+                        << "cylinders[0].length: must be positive";
+  QTest::newRow("not a number") << "long"
+                                << "“long” is not a number";
+  QTest::newRow("infinity") << "inf"
+                            << "cylinders[0].length: must be finite";
+  QTest::newRow("grown into the ball") << "4"
+                                       << "balls[0].position: overlaps cylinders[0]";
+  QTest::newRow("made infinite through the ball") << ""
+                                                  << "balls[0].position: overlaps cylinders[0]";
+}
+
+// A capped cylinder lying along x beside the ball: each bad length is refused with a message
+// and leaves the scene, the undo stack and the field as they were.
+void TestEditorDocks::refusesBadLengths() {
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  addCappedCylinder(Vec3(2, 0.5, 0), Vec3::UnitX(), 1.0);
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  const carom::Scene before = document().scene();
+  const int commands = document().undoStack()->count();
+  type("cylinderLength", typed);
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), commands);
+  QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
+  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QCOMPARE(field("cylinderLength")->text(), QString("1"));
+}
+
+// Several cylinders of different lengths show an empty field marked "mixed": left empty it
+// changes none of them; typed into and emptied, it makes them all infinite; a number gives them
+// all that length.
+void TestEditorDocks::editsTheLengthOfSeveralCylinders() {
+  addCappedCylinder(Vec3(2, 0.5, -2), Vec3::UnitY(), 1.0);
+  addCappedCylinder(Vec3(-2, 1, -2), Vec3::UnitY(), 2.0);
+  const Selection both{{ObjectKind::Cylinder, 0}, {ObjectKind::Cylinder, 1}};
+  document().setSelection(both);
+  QLineEdit* length = field("cylinderLength");
+  QCOMPARE(length->text(), QString());
+  QCOMPARE(length->placeholderText(), QString("mixed"));
+  const carom::Scene before = document().scene();
+  const int commands = document().undoStack()->count();
+  type("cylinderLength", "");  // cleared while already empty: left as it was
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), commands);
+
+  QTest::mouseClick(length, Qt::LeftButton);
+  QTest::keyClicks(length, "3");
+  QTest::keyClick(length, Qt::Key_Backspace);
+  QCOMPARE(length->placeholderText(), QString("infinite"));  // what Enter now does
+  QTest::keyClick(length, Qt::Key_Return);
+  QCOMPARE(document().scene().cylinders[0].length, std::nullopt);
+  QCOMPARE(document().scene().cylinders[1].length, std::nullopt);
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  document().undoStack()->undo();
+  QVERIFY(document().scene() == before);
+  QCOMPARE(length->placeholderText(), QString("mixed"));
+
+  type("cylinderLength", "1.5");
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(1.5));
+  QCOMPARE(document().scene().cylinders[1].length, std::optional(1.5));
+  QCOMPARE(document().scene().cylinders[1].point, Vec3(-2, 1, -2));
+  QCOMPARE(length->text(), QString("1.5"));
+  // With an infinite one among them the lengths differ again.
+  addCylinder();
+  document().setSelection({{ObjectKind::Cylinder, 0}, {ObjectKind::Cylinder, 2}});
+  QCOMPARE(length->placeholderText(), QString("mixed"));
+}
+
+// A capped cylinder shows a handle at each end and, beyond the upper one, the one that turns
+// it. An end's tip dragged along the axis moves that end only; each drag is one command, an axis
+// key held changes nothing, and an end dragged through the other is refused once, keeping the
+// last good length.
+void TestEditorDocks::resizesACappedCylinderByItsEnds() {
+  addCappedCylinder(Vec3(2, 0.5, -2), Vec3::UnitY(), 1.0);  // from the floor up to y = 1
+  chooseTool("toolSelect");
+  document().setSelection({{ObjectKind::Cylinder, 0}});
+  const std::vector<Handle> handles = window_->tools()->handles();
+  QCOMPARE(handles.size(), std::size_t{3});
+  std::optional<Handle> top = findHandle(handles, HandleRole::CylinderEnd, 0, 1);
+  const std::optional<Handle> bottom = findHandle(handles, HandleRole::CylinderEnd, 0, -1);
+  const std::optional<Handle> turn = findHandle(handles, HandleRole::Direction, 0);
+  QVERIFY(top && bottom && turn);
+  QCOMPARE(top->base, Vec3(2, 1, -2));
+  QCOMPARE(bottom->base, Vec3(2, 0, -2));
+  QVERIFY((bottom->tip - bottom->base).normalized().isApprox(-Vec3::UnitY()));
+  QCOMPARE(turn->base, top->tip);
+  const int commands = document().undoStack()->count();
+
+  drag(at(top->tip), at(top->tip + Vec3(0, 0.5, 0)),
+       [&] { return document().scene().cylinders[0].length.value_or(0) > 1.45; });
+  const carom::Cylinder longer = document().scene().cylinders[0];
+  QVERIFY2(std::abs(*longer.length - 1.5) < 0.05, qPrintable(QString::number(*longer.length)));
+  QVERIFY(std::abs(longer.point.y() - 0.5 * *longer.length) < 1e-9);  // still on the floor
+  QCOMPARE(longer.point.x(), 2.0);
+  QCOMPARE(longer.point.z(), -2.0);
+  QCOMPARE(longer.axis, Vec3::UnitY());
+  QCOMPARE(document().undoStack()->count(), commands + 1);
+  QCOMPARE(document().undoStack()->undoText(), QString("Resize Cylinder"));
+  QCOMPARE(field("cylinderLength")->text(), carom::editor::formatShortNumber(*longer.length));
+  document().undoStack()->undo();
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(1.0));
+  QCOMPARE(document().scene().cylinders[0].point, Vec3(2, 0.5, -2));
+  document().undoStack()->redo();
+  QVERIFY(document().scene().cylinders[0] == longer);
+
+  // The lower end raised, with X held: the upper end stays.
+  const std::optional<Handle> lower =
+      findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, -1);
+  QVERIFY(lower);
+  const QPoint from = at(lower->tip), to = at(lower->tip + Vec3(0, 0.4, 0));
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
+  QTest::keyPress(&view(), Qt::Key_X);
+  for (int i = 1; i <= 10; ++i) QTest::mouseMove(&view(), from + (to - from) * i / 10);
+  QTRY_VERIFY(document().scene().cylinders[0].length.value_or(0) < *longer.length - 0.35);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, to);
+  QTest::keyRelease(&view(), Qt::Key_X);
+  const carom::Cylinder raised = document().scene().cylinders[0];
+  QVERIFY2(std::abs(*raised.length - (*longer.length - 0.4)) < 0.05,
+           qPrintable(QString::number(*raised.length)));
+  QVERIFY(std::abs(raised.point.y() + 0.5 * *raised.length - *longer.length) < 1e-9);
+  QCOMPARE(raised.point.x(), 2.0);
+  QCOMPARE(raised.point.z(), -2.0);
+  QCOMPARE(document().undoStack()->count(), commands + 2);
+
+  // The upper end pulled down through the lower one: refused once, at the last good length.
+  int refusals = 0;
+  connect(window_->tools(), &carom::editor::EditorTools::refused, this, [&] { ++refusals; });
+  top = findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, 1);
+  QVERIFY(top);
+  drag(at(top->tip), at(top->tip - Vec3(0, 1.6, 0)),
+       [&] { return window_->statusMessage().contains("cylinders[0].length: must be positive"); });
+  QCOMPARE(refusals, 1);
+  const carom::Cylinder shortest = document().scene().cylinders[0];
+  QVERIFY(*shortest.length > 0.0 && *shortest.length < *raised.length);
+  const double lowerEnd = raised.point.y() - 0.5 * *raised.length;
+  QVERIFY(std::abs(shortest.point.y() - 0.5 * *shortest.length - lowerEnd) < 1e-9);
+  QCOMPARE(document().undoStack()->count(), commands + 3);
+  document().undoStack()->undo();
+  QVERIFY(document().scene().cylinders[0] == raised);
 }
 
 // The turn handle's tip carried round the box's centre turns it about its up axis by the angle

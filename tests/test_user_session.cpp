@@ -66,6 +66,7 @@ void compareObjects(const Scene& actual, const Scene& expected) {
   for (std::size_t i = 0; i < expected.cylinders.size(); ++i) {
     QCOMPARE(actual.cylinders[i].name, expected.cylinders[i].name);
     QCOMPARE(actual.cylinders[i].color, expected.cylinders[i].color);
+    QCOMPARE(actual.cylinders[i].length, expected.cylinders[i].length);
     QVERIFY2(actual.cylinders[i] == expected.cylinders[i], expected.cylinders[i].name.c_str());
   }
   for (std::size_t i = 0; i < expected.boxes.size(); ++i) {
@@ -80,9 +81,10 @@ void compareObjects(const Scene& actual, const Scene& expected) {
 using Handle = carom::editor::EditorTools::Handle;
 using HandleRole = carom::editor::EditorTools::HandleRole;
 
-std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis) {
+std::optional<Handle> findHandle(const std::vector<Handle>& handles, HandleRole role, int axis,
+                                 int side = 1) {
   for (const Handle& handle : handles)
-    if (handle.role == role && handle.axis == axis) return handle;
+    if (handle.role == role && handle.axis == axis && handle.side == side) return handle;
   return std::nullopt;
 }
 
@@ -106,6 +108,7 @@ class TestUserSession : public carom::testing::EditorFixture {
   void statusMessagesLeaveTheReadout();
   void openEditDeleteSaveReopen();
   void buildWithBoxesSaveReopen();
+  void buildWithCappedCylindersSaveReopen();
 
  private:
   void openExample(const QString& title);
@@ -596,6 +599,107 @@ void TestUserSession::buildWithBoxesSaveReopen() {
   QCOMPARE(document().scene().balls.size(), std::size_t{1});
   QCOMPARE(document().scene().planes.size(), std::size_t{3});
   QCOMPARE(document().scene().boxes[0].name, std::string("crate"));
+  QVERIFY(!document().isModified());
+}
+
+// A box and capped cylinders built with the tools, the keys and the properties dock: a post
+// added, given a length and stood on the floor; a second added capped like it, lengthened by its
+// end handle and named; the box narrowed by its -x face; the first post made infinite and capped
+// again; every step undone and redone with the keys; then Save As, a new window, Open, and
+// every field of every object compared.
+void TestUserSession::buildWithCappedCylindersSaveReopen() {
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTest::keyClick(window_.get(), Qt::Key_K);
+  click(Vec3(2, 0, 1.5));
+  QCOMPARE(document().scene().boxes.size(), std::size_t{1});
+  QTest::keyClick(window_.get(), Qt::Key_C);
+  QVERIFY(window_->findChild<QAction*>("toolAddCylinder")->isChecked());
+  Scene before = document().scene();
+  click(Vec3(-2, 0, -2));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{1});
+  QCOMPARE(document().scene().cylinders[0].length, std::nullopt);  // the first: infinite
+  undoRedo(before, document().scene());
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Cylinder, 0}}));
+  const auto typed = [&](const QString& field, const QString& text) {
+    const Scene previous = document().scene();
+    type(field, text);
+    QVERIFY2(!(document().scene() == previous), qPrintable(field));
+    undoRedo(previous, document().scene());
+  };
+  typed("cylinderLength", "1.2");
+  typed("point.y", "0.6");
+  const carom::Cylinder first = document().scene().cylinders[0];
+  QCOMPARE(first.length, std::optional(1.2));
+  QVERIFY(std::abs(first.point.x() + 2) < 0.1 && std::abs(first.point.z() + 2) < 0.1);
+  QCOMPARE(first.point.y(), 0.6);
+  // No length at all is refused with the validation's message, and changes nothing.
+  const Scene standing = document().scene();
+  const int commands = document().undoStack()->count();
+  type("cylinderLength", "0");
+  QVERIFY(document().scene() == standing);
+  QCOMPARE(document().undoStack()->count(), commands);
+  QVERIFY2(window_->statusMessage().contains("cylinders[0].length: must be positive"),
+           qPrintable(window_->statusMessage()));
+
+  // The next post is capped like the last one, with its lower cap on the floor.
+  before = document().scene();
+  click(Vec3(-2, 0, 1));
+  QCOMPARE(document().scene().cylinders.size(), std::size_t{2});
+  const carom::Cylinder second = document().scene().cylinders[1];
+  QCOMPARE(second.length, std::optional(1.2));
+  QVERIFY2(std::abs(second.point.y() - 0.6) < 1e-9, qPrintable(QString::number(second.point.y())));
+  undoRedo(before, document().scene());
+
+  // Taller by its upper end's handle, then named and coloured.
+  QTest::keyClick(window_.get(), Qt::Key_V);
+  before = document().scene();
+  std::optional<Handle> end =
+      findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, 1);
+  QVERIFY(end);
+  drag(at(end->tip), at(end->tip + Vec3(0, 0.5, 0)),
+       [&] { return document().scene().cylinders[1].length.value_or(0) > 1.65; });
+  const carom::Cylinder taller = document().scene().cylinders[1];
+  QVERIFY2(std::abs(*taller.length - 1.7) < 0.05, qPrintable(QString::number(*taller.length)));
+  QVERIFY(std::abs(taller.point.y() - 0.5 * *taller.length - (second.point.y() - 0.6)) < 1e-9);
+  undoRedo(before, document().scene());
+  typed("name", "post");
+  typed("color", "#c08040");
+  typed("restitution", "0.8");
+  typed("cylinderRadius", "0.25");
+
+  // The box narrowed by its -x face; its +x face stays.
+  click(document().scene().boxes[0].center + Vec3(0, 0.5, 0));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 0}}));
+  before = document().scene();
+  const std::optional<Handle> face =
+      findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0, -1);
+  QVERIFY(face);
+  drag(at(face->tip), at(face->tip + Vec3(0.4, 0, 0)),
+       [&] { return document().scene().boxes[0].halfExtents.x() < 0.35; });
+  const carom::Box narrower = document().scene().boxes[0];
+  QVERIFY(std::abs(narrower.center.x() + narrower.halfExtents.x() -
+                   (before.boxes[0].center.x() + 0.5)) < 1e-9);
+  undoRedo(before, document().scene());
+  typed("name", "crate");
+
+  // The first post made infinite, then capped again by typing.
+  click(first.point + Vec3(0, 0.3, 0.3));
+  QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Cylinder, 0}}));
+  typed("cylinderLength", "");
+  QCOMPARE(document().scene().cylinders[0].length, std::nullopt);
+  typed("cylinderLength", "0.8");
+  QCOMPARE(document().scene().cylinders[0].length, std::optional(0.8));
+
+  const Scene expected = document().scene();
+  const QString file = folder_.filePath("posts.carom");
+  saveAsThroughTheDialog(file);
+  QVERIFY(!document().isModified());
+  window_.reset();
+  openWindow();
+  openThroughTheDialog(file);
+  compareObjects(document().scene(), expected);
+  QCOMPARE(document().scene().cylinders[1].name, std::string("post"));
+  QCOMPARE(document().scene().cylinders[1].radius, 0.25);
   QVERIFY(!document().isModified());
 }
 

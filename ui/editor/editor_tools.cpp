@@ -129,7 +129,7 @@ std::vector<EditorTools::Handle> EditorTools::handles() const {
   if (selection.size() != 1) return {};
   const ObjectRef& ref = selection.front();
   const Scene& scene = document_->scene();
-  const double length = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
+  const double arrow = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
   switch (ref.kind) {
     case ObjectKind::Ball: {
       const Ball& ball = scene.balls[ref.index];
@@ -138,25 +138,39 @@ std::vector<EditorTools::Handle> EditorTools::handles() const {
     }
     case ObjectKind::Plane: {
       const Plane& plane = scene.planes[ref.index];
-      return {{plane.point, plane.point + length * plane.normal.normalized()}};
+      return {{plane.point, plane.point + arrow * plane.normal.normalized()}};
     }
     case ObjectKind::Cylinder: {
       const Cylinder& cylinder = scene.cylinders[ref.index];
-      return {{cylinder.point, cylinder.point + length * cylinder.axis.normalized()}};
+      const Vec3 axis = cylinder.axis.normalized();
+      if (!cylinder.length) return {{cylinder.point, cylinder.point + arrow * axis}};
+      std::vector<Handle> arrows;
+      for (const int side : {1, -1}) {
+        const Vec3 end = cylinder.point + side * 0.5 * *cylinder.length * axis;
+        arrows.push_back({end, end + side * arrow * axis, HandleRole::CylinderEnd, 0, side});
+      }
+      // The turn goes on from the end's arrow, so that the two tips stay an arrow apart however
+      // short the cylinder is.
+      const Vec3 beyond = arrows.front().tip;
+      arrows.push_back({beyond, beyond + arrow * axis});
+      return arrows;
     }
     case ObjectKind::Box: {
       const Box& box = scene.boxes[ref.index];
       const BoxShape shape = boxShape(box);
       std::vector<Handle> arrows;
       for (int k = 0; k < 3; ++k) {
-        const Vec3 face = box.center + box.halfExtents[k] * shape.axes.col(k);
-        arrows.push_back({face, face + length * shape.axes.col(k), HandleRole::BoxFace, k});
+        for (const int side : {1, -1}) {
+          const Vec3 along = side * shape.axes.col(k);
+          const Vec3 face = box.center + box.halfExtents[k] * along;
+          arrows.push_back({face, face + arrow * along, HandleRole::BoxFace, k, side});
+        }
       }
       const Vec3 top = box.center + box.halfExtents.y() * shape.axes.col(1);
       const Vec3 toCorner =
           box.halfExtents.x() * shape.axes.col(0) + box.halfExtents.z() * shape.axes.col(2);
       arrows.push_back(
-          {top, top + toCorner + length * toCorner.normalized(), HandleRole::BoxTurn, 1});
+          {top, top + toCorner + arrow * toCorner.normalized(), HandleRole::BoxTurn, 1});
       return arrows;
     }
   }
@@ -186,6 +200,14 @@ QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& 
     }
     case ObjectKind::Cylinder: {
       Cylinder& cylinder = scene.cylinders[ref.index];
+      if (grabbedHandle_.role == HandleRole::CylinderEnd) {
+        const Vec3 along = grabbedHandle_.side * cylinder.axis.normalized();
+        const Vec3 fixedEnd = cylinder.point - 0.5 * *cylinder.length * along;
+        // The end follows the tip; the validation refuses a length of zero or less.
+        cylinder.length = draggedSize(*cylinder.length + along.dot(point - grabPoint_));
+        cylinder.point = fixedEnd + 0.5 * *cylinder.length * along;
+        return tr("Resize Cylinder");
+      }
       const Vec3 direction = point - cylinder.point;
       if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
       return tr("Turn Cylinder");
@@ -205,10 +227,11 @@ QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& 
         return tr("Turn Box");
       }
       const int k = grabbedHandle_.axis;
-      const Vec3 along = shape.axes.col(k);
+      const Vec3 along = grabbedHandle_.side * shape.axes.col(k);
       const Vec3 fixedFace = box.center - box.halfExtents[k] * along;
       // The face follows the tip; the validation refuses a box turned inside out.
-      box.halfExtents[k] += 0.5 * along.dot(point - grabPoint_);
+      box.halfExtents[k] =
+          0.5 * draggedSize(2.0 * box.halfExtents[k] + along.dot(point - grabPoint_));
       box.center = fixedFace + box.halfExtents[k] * along;
       return tr("Resize Box");
     }
@@ -230,8 +253,17 @@ std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3
   return origin + *t * direction;
 }
 
-std::optional<Vec3> EditorTools::onBoxHandlePath(const QPointF& position) const {
+double EditorTools::draggedSize(double size) const {
+  // Never snapped to nothing while the drag still leaves some size: one step is the least.
+  if (!snapToGrid_ || size <= 0.0) return size;
+  return std::max(1.0, std::round(size / gridStep())) * gridStep();
+}
+
+std::optional<Vec3> EditorTools::onHandlePath(const QPointF& position) const {
   const auto [origin, direction] = view_->rayAt(position);
+  if (grabbedHandle_.role == HandleRole::CylinderEnd)
+    return closestOnLine(origin, direction, grabPoint_,
+                         draggedAtPress_.cylinders.front().axis.normalized());
   const BoxShape shape = boxShape(draggedAtPress_.boxes.front());
   if (grabbedHandle_.role == HandleRole::BoxFace)
     return closestOnLine(origin, direction, grabPoint_, shape.axes.col(grabbedHandle_.axis));
@@ -297,9 +329,10 @@ void EditorTools::beginDrag(Drag drag, const Selection& objects) {
 
 bool EditorTools::mouseMove(QMouseEvent* event) {
   if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
-  const bool boxHandle = drag_ == Drag::Handle && grabbedHandle_.role != HandleRole::Direction;
+  // A face, end or turn handle keeps to its own path whatever axis key is held.
+  const bool onPath = drag_ == Drag::Handle && grabbedHandle_.role != HandleRole::Direction;
   const std::optional<Vec3> point =
-      boxHandle ? onBoxHandlePath(event->position()) : onDragPlane(event->position(), grabPoint_);
+      onPath ? onHandlePath(event->position()) : onDragPlane(event->position(), grabPoint_);
   if (!point) return true;
   // Only the dragged objects are copied and changed, never the whole scene.
   const Selection local = extractedRefs(dragged_);
@@ -436,12 +469,17 @@ void EditorTools::place(const QPointF& position) {
     added.boxes.push_back(boxOn(point, normal, hit));
     text = tr("Add Box");
   } else {
-    // A post standing on the surface clicked.
+    // A post standing on the surface clicked, with the last cylinder's radius and length: an
+    // infinite one through the point, a capped one with its lower cap on it.
     Cylinder cylinder;
-    cylinder.point = point;
     cylinder.axis = normal;
-    cylinder.radius =
-        scene.cylinders.empty() ? kDefaultCylinderRadius : scene.cylinders.back().radius;
+    if (!scene.cylinders.empty()) {
+      cylinder.radius = scene.cylinders.back().radius;
+      cylinder.length = scene.cylinders.back().length;
+    } else {
+      cylinder.radius = kDefaultCylinderRadius;
+    }
+    cylinder.point = point + 0.5 * cylinder.length.value_or(0.0) * normal;
     added.cylinders.push_back(cylinder);
     text = tr("Add Cylinder");
   }

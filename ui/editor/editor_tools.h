@@ -43,18 +43,22 @@ class EditorTools : public QObject {
   static constexpr double kDirectionArrowFraction = 0.12;
 
   // What dragging a handle's tip does: point the object's direction at the cursor (a ball's
-  // velocity, a plane's normal, a cylinder's axis), move a box's face along its axis with the
-  // opposite face fixed, or turn a box about its own up axis.
-  enum class HandleRole { Direction, BoxFace, BoxTurn };
+  // velocity, a plane's normal, a cylinder's axis), move a box's face or a capped cylinder's end
+  // along its line with the opposite one fixed, or turn a box about its own up axis. With
+  // snapping on, a moved face or end makes the box's size or the cylinder's length a whole
+  // number of grid steps.
+  enum class HandleRole { Direction, BoxFace, CylinderEnd, BoxTurn };
   struct Handle {
     Vec3 base;
     Vec3 tip;
     HandleRole role = HandleRole::Direction;
     int axis = 0;  // the box's own x, y or z: a face's, or y, the axis a turn is about
+    int side = 1;  // a face or an end: +1 on the side its axis points to, -1 on the other
   };
   // The arrows a single selected object shows: a ball's velocity (none at rest), a plane's
-  // normal from its point, a cylinder's axis from its point; a box's faces on its own +x, +y and
-  // +z sides, and over its top, out past a corner, the handle that turns it.
+  // normal from its point, an infinite cylinder's axis from its point; a capped cylinder's two
+  // ends, and the axis beyond the end its axis points to; a box's six faces, and over its top,
+  // out past a corner, the handle that turns it.
   std::vector<Handle> handles() const;
 
  signals:
@@ -88,9 +92,11 @@ class EditorTools : public QObject {
   QString dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
-  // Where the grabbed box handle's tip follows the cursor: along the face's axis, or in the
-  // plane across the box's up axis.
-  std::optional<Vec3> onBoxHandlePath(const QPointF& position) const;
+  // Where the grabbed face, end or turn handle's tip follows the cursor: along the face's axis
+  // or the cylinder's, or in the plane across the box's up axis.
+  std::optional<Vec3> onHandlePath(const QPointF& position) const;
+  // A box's size or a cylinder's length a face or end drag gives: on the grid when snapping.
+  double draggedSize(double size) const;
   void beginDrag(Drag drag, const Selection& objects);
 
   SceneDocument* document_;

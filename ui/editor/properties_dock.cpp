@@ -155,6 +155,7 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
   addNumber(
       kCylinders, "cylinderRadius", QT_TR_NOOP("Radius"), QT_TR_NOOP("Change Radius"), m,
       [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].radius; });
+  addLength();
 
   addVector(kBoxes, "center", QT_TR_NOOP("Centre"), QT_TR_NOOP("Move"), m,
             [](const Scene& scene, const ObjectRef& r) { return &scene.boxes[r.index].center; });
@@ -212,6 +213,7 @@ void PropertiesDock::retranslate() {
       editor.edit->setName(QString("%1 %2").arg(label(editor.row), axes[editor.component]));
   }
   restitution_->setName(label(restitutionRow_), tr("0 to 1; empty: the world's restitution"));
+  length_->setName(label(lengthRow_), tr("Between the caps; empty: infinite"));
   for (int a = 0; a < 3; ++a)
     rotationFields_[a]->setName(QString("%1 %2").arg(label(rotationAxisRow_), axes[a]));
   rotationFields_[3]->setName(label(rotationDegreesRow_),
@@ -309,7 +311,29 @@ void PropertiesDock::addRestitution() {
   restitution_->setObjectName("restitution");
   restitutionRow_ =
       addRow(kObjects, QT_TR_NOOP("Restitution"), QT_TR_NOOP("Change Restitution"), restitution_);
-  connect(restitution_, &QLineEdit::editingFinished, this, &PropertiesDock::restitutionEdited);
+  connect(restitution_, &QLineEdit::editingFinished, this, [this] {
+    optionalNumberEdited(restitution_, restitutionRow_,
+                         [](Scene& values, const ObjectRef& ref, std::optional<double> value) {
+                           objectInfo(values, ref).restitution = value;
+                         });
+  });
+}
+
+void PropertiesDock::addLength() {
+  length_ = new NumberField;
+  length_->setObjectName("cylinderLength");
+  lengthRow_ = addRow(kCylinders, QT_TR_NOOP("Length"), QT_TR_NOOP("Resize Cylinder"), length_,
+                      QT_TR_NOOP("m"));
+  connect(length_, &QLineEdit::editingFinished, this, [this] {
+    optionalNumberEdited(length_, lengthRow_,
+                         [](Scene& values, const ObjectRef& ref, std::optional<double> value) {
+                           values.cylinders[ref.index].length = value;
+                         });
+  });
+  // Once the user has typed, an empty field makes them all infinite, even where it showed
+  // "mixed" (left untouched, it changes nothing): the placeholder says what Enter will do.
+  connect(length_, &QLineEdit::textEdited, this,
+          [this] { length_->setPlaceholderText(tr("infinite")); });
 }
 
 void PropertiesDock::addRotation() {
@@ -416,6 +440,12 @@ void PropertiesDock::refresh() {
     else
       restitution_->setPlaceholderText(QString());
   }
+  if (shown[lengthRow_]) {
+    const auto value = common<std::optional<double>>(
+        refs, [&](const ObjectRef& ref) { return scene.cylinders[ref.index].length; });
+    length_->setValue(value ? *value : std::nullopt);
+    length_->setPlaceholderText(!value ? mixed : *value ? QString() : tr("infinite"));
+  }
   if (shown[rotationDegreesRow_]) {
     const auto value = common<std::optional<Rotation>>(
         refs, [&](const ObjectRef& ref) { return scene.boxes[ref.index].rotation; });
@@ -503,23 +533,25 @@ void PropertiesDock::textEdited(const TextEditor& editor) {
   });
 }
 
-void PropertiesDock::restitutionEdited() {
-  if (!restitution_->isModified()) {
+void PropertiesDock::optionalNumberEdited(NumberField* edit, int row,
+                                          void (*set)(Scene&, const ObjectRef&,
+                                                      std::optional<double>)) {
+  // Not edited: left empty (several that differ) or as it was, which changes nothing.
+  if (!edit->isModified()) {
     message_->clear();
     return;
   }
-  restitution_->setModified(false);
+  edit->setModified(false);
   std::optional<double> value;
-  if (!restitution_->text().trimmed().isEmpty()) {
-    const ParsedNumber parsed = parseNumber(restitution_->text());
+  if (!edit->text().trimmed().isEmpty()) {
+    const ParsedNumber parsed = parseNumber(edit->text());
     if (!parsed.value) {
-      refuse(tr("%1: %2").arg(label(restitutionRow_), parsed.problem));
+      refuse(tr("%1: %2").arg(label(row), parsed.problem));
       return;
     }
     value = parsed.value;
   }
-  commit(restitutionRow_,
-         [&](Scene& values, const ObjectRef& ref) { objectInfo(values, ref).restitution = value; });
+  commit(row, [&](Scene& values, const ObjectRef& ref) { set(values, ref, value); });
 }
 
 void PropertiesDock::rotationEdited(int component) {

@@ -12,6 +12,7 @@
 #include <QString>
 #include <functional>
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -86,6 +87,8 @@ class PropertiesDock : public QDockWidget {
   void addText(int kinds, const char* name, const char* label, const char* change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
+  // A cylinder's length: empty for an infinite one.
+  void addLength();
   // A box's turn: its axis's components and its degrees, all empty for a box not turned.
   void addRotation();
   // A world setting chosen from `keys`; `choose` sets the index chosen.
@@ -108,7 +111,10 @@ class PropertiesDock : public QDockWidget {
   void refuse(const QString& message);
   void numberEdited(const NumberEditor& editor);
   void textEdited(const TextEditor& editor);
-  void restitutionEdited();
+  // A field whose emptied text means none (the restitution, the length); `set` stores the
+  // value typed, or none, into one selected object.
+  void optionalNumberEdited(NumberField* edit, int row,
+                            void (*set)(Scene&, const ObjectRef&, std::optional<double>));
   // `component` 0 to 2 of the axis, or 3 for the degrees; emptied degrees take the turn away.
   void rotationEdited(int component);
   void pickColor();
@@ -122,6 +128,8 @@ class PropertiesDock : public QDockWidget {
   std::vector<TextEditor> texts_;
   int restitutionRow_ = -1;
   NumberField* restitution_ = nullptr;
+  int lengthRow_ = -1;
+  NumberField* length_ = nullptr;
   int rotationAxisRow_ = -1;
   int rotationDegreesRow_ = -1;
   NumberField* rotationFields_[4] = {};  // the axis's x, y, z and the degrees
