@@ -4,27 +4,27 @@
 <context>
     <name>About</name>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="147"/>
+        <location filename="../ui/help_dialogs.cpp" line="148"/>
         <source>About Carom</source>
         <translation>Über Carom</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="150"/>
+        <location filename="../ui/help_dialogs.cpp" line="151"/>
         <source>Carom %1</source>
         <translation>Carom %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="153"/>
+        <location filename="../ui/help_dialogs.cpp" line="154"/>
         <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
         <translation>Sandbox und Szeneneditor für Stoßphysik: Kugeln, Ebenen und Zylinder unter Schwerkraft, exakt oder in Schritten gelöst.</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="158"/>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
         <source>Qt version %1</source>
         <translation>Qt-Version %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <location filename="../ui/help_dialogs.cpp" line="160"/>
         <source>Released under the MIT licence.</source>
         <translation>Veröffentlicht unter der MIT-Lizenz.</translation>
     </message>
@@ -53,47 +53,47 @@
 <context>
     <name>ObjectRef</name>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="50"/>
+        <location filename="../ui/editor/object_ref.cpp" line="54"/>
         <source>Plane</source>
         <translation>Ebene</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="51"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Cylinder</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="49"/>
+        <location filename="../ui/editor/object_ref.cpp" line="54"/>
         <source>Ball</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="53"/>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
         <source>Planes</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Cylinders</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="52"/>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
         <source>Balls</source>
         <translation>Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="68"/>
+        <location filename="../ui/editor/object_ref.cpp" line="72"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Box</source>
         <translation>Quader</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Boxes</source>
         <translation>Quader</translation>
     </message>
@@ -101,67 +101,72 @@
 <context>
     <name>carom::editor::EditorTools</name>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="124"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="199"/>
         <source>Turn Plane</source>
         <translation>Ebene drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="130"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="209"/>
+        <source>Resize Cylinder</source>
+        <translation>Zylinderlänge ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="213"/>
         <source>Turn Cylinder</source>
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="243"/>
         <source>Change Velocity</source>
         <translation>Geschwindigkeit ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="231"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="354"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="281"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="429"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Klicken Sie auf eine Fläche oder den Boden, um ein Objekt zu platzieren.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="451"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="456"/>
         <source>No room for a ball there: %1</source>
         <translation>Dort ist kein Platz für eine Kugel: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="319"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="467"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="328"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="484"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="331"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="487"/>
         <source>Cannot place it there: %1</source>
         <translation>Kann dort nicht platziert werden: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="470"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="236"/>
         <source>Resize Box</source>
         <translation>Quadergröße ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="227"/>
         <source>Turn Box</source>
         <translation>Quader drehen</translation>
     </message>
@@ -169,7 +174,7 @@
 <context>
     <name>carom::editor::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="208"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="217"/>
         <source>Outline</source>
         <translation>Übersicht</translation>
     </message>
@@ -177,12 +182,12 @@
 <context>
     <name>carom::editor::OutlineModel</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="133"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="166"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="175"/>
         <source>Rename</source>
         <translation>Umbenennen</translation>
     </message>
@@ -191,14 +196,16 @@
     <name>carom::editor::PropertiesDock</name>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="60"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="334"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="469"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="390"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="512"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="549"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="326"/>
         <source>m</source>
         <translation>m</translation>
     </message>
@@ -224,6 +231,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="344"/>
         <source>(any length)</source>
         <translation>(beliebige Länge)</translation>
     </message>
@@ -255,6 +263,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="138"/>
         <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <source>Move</source>
         <translation>Verschieben</translation>
     </message>
@@ -316,90 +325,111 @@
         <translation>Zylinder drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="171"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="313"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="171"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="313"/>
         <source>Change Restitution</source>
         <translation>Stoßzahl ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="173"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="173"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="175"/>
         <source>Integrator</source>
         <translation>Integrator</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="175"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="195"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="203"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="207"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="215"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="208"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="216"/>
+        <source>Between the caps; empty: infinite</source>
+        <translation>Zwischen den Deckeln; leer: unendlich</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="221"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="222"/>
         <source>Choose a colour</source>
         <translation>Farbe wählen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="223"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="589"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>Resize Cylinder</source>
+        <translation>Zylinderlänge ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <source>infinite</source>
+        <translation>unendlich</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="384"/>
         <source>World (nothing selected)</source>
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="392"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -407,7 +437,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="339"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -415,62 +445,63 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="349"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="425"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="439"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <source>Centre</source>
         <translation>Mittelpunkt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Half extents</source>
         <translation>Halbe Kantenlängen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Resize Box</source>
         <translation>Quadergröße ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
         <source>Rotation axis</source>
         <translation>Drehachse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="353"/>
         <source>Turn Box</source>
         <translation>Quader drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="353"/>
         <source>Rotation</source>
         <translation>Drehung</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="354"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="462"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="220"/>
         <source>Degrees about the axis, right-handed; empty: not turned</source>
         <translation>Grad um die Achse, rechtshändig; leer: nicht gedreht</translation>
     </message>
@@ -478,12 +509,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="95"/>
+        <location filename="../ui/editor/scene_document.cpp" line="106"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="109"/>
+        <location filename="../ui/editor/scene_document.cpp" line="120"/>
         <source>floor</source>
         <translation>Boden</translation>
     </message>
@@ -626,7 +657,7 @@
         <translation>Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/edit_actions.cpp" line="76"/>
+        <location filename="../ui/edit_actions.cpp" line="81"/>
         <source>Cannot place the objects: %1</source>
         <translation>Die Objekte können nicht platziert werden: %1</translation>
     </message>
@@ -807,217 +838,217 @@
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="101"/>
+        <location filename="../ui/help_dialogs.cpp" line="102"/>
         <source>Click with an Add tool</source>
         <translation>Klick mit einem Hinzufügen-Werkzeug</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="102"/>
+        <location filename="../ui/help_dialogs.cpp" line="103"/>
         <source>Place the object where the cursor points, on a surface or the ground</source>
         <translation>Das Objekt dort platzieren, wohin der Zeiger weist, auf einer Fläche oder dem Boden</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="103"/>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
         <source>Selecting and moving</source>
         <translation>Auswählen und Verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
         <source>Click</source>
         <translation>Klick</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
         <source>Select the object under the cursor; on nothing, clear the selection</source>
         <translation>Das Objekt unter dem Zeiger auswählen; ins Leere: die Auswahl aufheben</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
         <source>Ctrl+click, Shift+click</source>
         <translation>Strg+Klick, Umschalt+Klick</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
         <source>Add the object to the selection or take it out</source>
         <translation>Das Objekt zur Auswahl hinzufügen oder herausnehmen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
         <source>Drag a selected object</source>
         <translation>Ein ausgewähltes Objekt ziehen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
         <source>Move the selection in the plane facing the camera</source>
         <translation>Die Auswahl in der Ebene verschieben, die der Kamera zugewandt ist</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
         <source>X, Y or Z held while dragging</source>
         <translation>X, Y oder Z beim Ziehen gedrückt</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
         <source>Move along that axis only</source>
         <translation>Nur entlang dieser Achse verschieben</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="108"/>
+        <location filename="../ui/help_dialogs.cpp" line="109"/>
         <source>Drag the tip of the arrow</source>
         <translation>Die Pfeilspitze ziehen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="109"/>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
         <source>Change a ball&apos;s velocity, a plane&apos;s normal or a cylinder&apos;s axis</source>
         <translation>Die Geschwindigkeit einer Kugel, die Normale einer Ebene oder die Achse eines Zylinders ändern</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
         <source>Alt+drag from a ball</source>
         <translation>Alt+Ziehen von einer Kugel aus</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
         <source>Draw the ball&apos;s velocity, also for a ball at rest</source>
         <translation>Die Geschwindigkeit der Kugel zeichnen, auch für eine ruhende Kugel</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="111"/>
+        <location filename="../ui/help_dialogs.cpp" line="112"/>
         <source>Edit</source>
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
         <source>Copy the selection (as scene text)</source>
         <translation>Die Auswahl kopieren (als Szenentext)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
         <source>Paste objects, moved aside where they would overlap</source>
         <translation>Objekte einfügen, zur Seite gerückt, wo sie sich überschneiden würden</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
         <source>Duplicate the selection</source>
         <translation>Die Auswahl duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
         <source>Delete the selection</source>
         <translation>Die Auswahl löschen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
         <source>Select every object</source>
         <translation>Alle Objekte auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
         <source>Files</source>
         <translation>Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
         <source>New scene</source>
         <translation>Neue Szene</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
         <source>Open a scene</source>
         <translation>Eine Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
         <source>Save</source>
         <translation>Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
         <source>Save under another name</source>
         <translation>Unter anderem Namen speichern</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Dropping a file on the window</source>
         <translation>Eine Datei auf das Fenster ziehen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Open it</source>
         <translation>Sie öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
         <source>Outline and Properties</source>
         <translation>Übersicht und Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Click, Ctrl+click, Shift+click</source>
         <translation>Klick, Strg+Klick, Umschalt+Klick</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Select objects, as in the view</source>
         <translation>Objekte auswählen, wie in der Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>Double-click, F2 (in the outline)</source>
         <translation>Doppelklick, F2 (in der Übersicht)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>Rename the object</source>
         <translation>Das Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Enter, or leaving a field</source>
         <translation>Eingabe oder Verlassen eines Feldes</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Apply the typed value</source>
         <translation>Den eingegebenen Wert übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
         <source>Speed vs Accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Click a point</source>
         <translation>Klick auf einen Punkt</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Select its run in the table</source>
         <translation>Seinen Lauf in der Tabelle auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Double-click a run</source>
         <translation>Doppelklick auf einen Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Apply its settings to the scene</source>
         <translation>Seine Einstellungen auf die Szene anwenden</translation>
     </message>
@@ -1027,7 +1058,7 @@
         <translation>Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp"/>
+        <location filename="../ui/help_dialogs.cpp" line="101"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1035,110 +1066,110 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
         <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
@@ -1148,17 +1179,17 @@
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
@@ -1168,7 +1199,7 @@
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
@@ -1178,7 +1209,7 @@
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
@@ -1203,12 +1234,12 @@
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
@@ -1238,27 +1269,27 @@
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="586"/>
+        <location filename="../ui/main_window.cpp" line="588"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
@@ -1298,32 +1329,32 @@
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="659"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
@@ -1363,17 +1394,17 @@
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
@@ -1383,7 +1414,7 @@
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="747"/>
+        <location filename="../ui/main_window.cpp" line="749"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
@@ -1393,22 +1424,22 @@
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1464,82 +1495,82 @@
         <translation>Treppe</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="58"/>
+        <location filename="../ui/scene_files.cpp" line="59"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="59"/>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Carom-Szenen (*.carom *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="68"/>
+        <location filename="../ui/scene_files.cpp" line="69"/>
         <source>Cannot Open Scene</source>
         <translation>Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="105"/>
+        <location filename="../ui/scene_files.cpp" line="106"/>
         <source>an unsaved scene</source>
         <translation>eine ungespeicherte Szene</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="107"/>
+        <location filename="../ui/scene_files.cpp" line="108"/>
         <source>Recover Scene</source>
         <translation>Szene wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="108"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom wurde nicht richtig beendet, während %1 ungespeicherte Änderungen hatte. Die um %2 gesicherte Kopie kann wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="114"/>
+        <location filename="../ui/scene_files.cpp" line="115"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="115"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>Not &amp;Now</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="124"/>
+        <location filename="../ui/scene_files.cpp" line="125"/>
         <source>Cannot Recover Scene</source>
         <translation>Szene kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="148"/>
+        <location filename="../ui/scene_files.cpp" line="149"/>
         <source>Save Scene</source>
         <translation>Szene speichern</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="149"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Carom-Szenen (*.carom);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="160"/>
+        <location filename="../ui/scene_files.cpp" line="161"/>
         <source>Cannot Save Scene</source>
         <translation>Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="165"/>
+        <location filename="../ui/scene_files.cpp" line="166"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="173"/>
+        <location filename="../ui/scene_files.cpp" line="174"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="174"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>

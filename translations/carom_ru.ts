@@ -4,27 +4,27 @@
 <context>
     <name>About</name>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="147"/>
+        <location filename="../ui/help_dialogs.cpp" line="148"/>
         <source>About Carom</source>
         <translation>О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="150"/>
+        <location filename="../ui/help_dialogs.cpp" line="151"/>
         <source>Carom %1</source>
         <translation>Carom %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="153"/>
+        <location filename="../ui/help_dialogs.cpp" line="154"/>
         <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
         <translation>Песочница и редактор сцен для физики столкновений: шары, плоскости и цилиндры под действием гравитации, рассчитанные точно или по шагам.</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="158"/>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
         <source>Qt version %1</source>
         <translation>Версия Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <location filename="../ui/help_dialogs.cpp" line="160"/>
         <source>Released under the MIT licence.</source>
         <translation>Распространяется по лицензии MIT.</translation>
     </message>
@@ -53,47 +53,47 @@
 <context>
     <name>ObjectRef</name>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="50"/>
+        <location filename="../ui/editor/object_ref.cpp" line="54"/>
         <source>Plane</source>
         <translation>Плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="51"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Cylinder</source>
         <translation>Цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="49"/>
+        <location filename="../ui/editor/object_ref.cpp" line="54"/>
         <source>Ball</source>
         <translation>Шар</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="53"/>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
         <source>Planes</source>
         <translation>Плоскости</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Cylinders</source>
         <translation>Цилиндры</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="52"/>
+        <location filename="../ui/editor/object_ref.cpp" line="57"/>
         <source>Balls</source>
         <translation>Шары</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="68"/>
+        <location filename="../ui/editor/object_ref.cpp" line="72"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Box</source>
         <translation>Ящик</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Boxes</source>
         <translation>Ящики</translation>
     </message>
@@ -101,67 +101,72 @@
 <context>
     <name>carom::editor::EditorTools</name>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="124"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="199"/>
         <source>Turn Plane</source>
         <translation>Повернуть плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="130"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="209"/>
+        <source>Resize Cylinder</source>
+        <translation>Изменить длину цилиндра</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/editor_tools.cpp" line="213"/>
         <source>Turn Cylinder</source>
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="137"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="243"/>
         <source>Change Velocity</source>
         <translation>Изменить скорость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="231"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="354"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="281"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="429"/>
         <source>Click on a surface or on the ground to place an object.</source>
         <translation>Щёлкните по поверхности или по земле, чтобы поставить объект.</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="303"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="451"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="308"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="456"/>
         <source>No room for a ball there: %1</source>
         <translation>Здесь нет места для шара: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="319"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="467"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="328"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="484"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp" line="331"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="487"/>
         <source>Cannot place it there: %1</source>
         <translation>Сюда поставить нельзя: %1</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="470"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="236"/>
         <source>Resize Box</source>
         <translation>Изменить размер ящика</translation>
     </message>
     <message>
-        <location filename="../ui/editor/editor_tools.cpp"/>
+        <location filename="../ui/editor/editor_tools.cpp" line="227"/>
         <source>Turn Box</source>
         <translation>Повернуть ящик</translation>
     </message>
@@ -169,7 +174,7 @@
 <context>
     <name>carom::editor::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="208"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="217"/>
         <source>Outline</source>
         <translation>Структура</translation>
     </message>
@@ -177,12 +182,12 @@
 <context>
     <name>carom::editor::OutlineModel</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="133"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="143"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="166"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="175"/>
         <source>Rename</source>
         <translation>Переименовать</translation>
     </message>
@@ -191,14 +196,16 @@
     <name>carom::editor::PropertiesDock</name>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="60"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="334"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="469"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="390"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="512"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="549"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="119"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="326"/>
         <source>m</source>
         <translation>m</translation>
     </message>
@@ -224,6 +231,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="124"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="344"/>
         <source>(any length)</source>
         <translation>(любой длины)</translation>
     </message>
@@ -255,6 +263,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="138"/>
         <location filename="../ui/editor/properties_dock.cpp" line="146"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <source>Move</source>
         <translation>Переместить</translation>
     </message>
@@ -316,90 +325,111 @@
         <translation>Повернуть цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="159"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="161"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="169"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="171"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="313"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="300"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="171"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="313"/>
         <source>Change Restitution</source>
         <translation>Изменить коэффициент восстановления</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="173"/>
         <source>Method</source>
         <translation>Метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="165"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="173"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="175"/>
         <source>Integrator</source>
         <translation>Интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="167"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="175"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="195"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="203"/>
         <source>Properties</source>
         <translation>Свойства</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="207"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="215"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>От 0 до 1; пусто — коэффициент мира</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="208"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="216"/>
+        <source>Between the caps; empty: infinite</source>
+        <translation>Между торцами; пусто: бесконечный</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="221"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="209"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="222"/>
         <source>Choose a colour</source>
         <translation>Выбрать цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="210"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="483"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="223"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="589"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="328"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>Length</source>
+        <translation>Длина</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="325"/>
+        <source>Resize Cylinder</source>
+        <translation>Изменить длину цилиндра</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <source>infinite</source>
+        <translation>бесконечный</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/properties_dock.cpp" line="384"/>
         <source>World (nothing selected)</source>
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="336"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="392"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -408,7 +438,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="339"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -417,62 +447,63 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="349"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="369"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="425"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="439"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <source>Centre</source>
         <translation>Центр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Half extents</source>
         <translation>Половины размеров</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="163"/>
         <source>Resize Box</source>
         <translation>Изменить размер ящика</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
         <source>Rotation axis</source>
         <translation>Ось поворота</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="343"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="353"/>
         <source>Turn Box</source>
         <translation>Повернуть ящик</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="353"/>
         <source>Rotation</source>
         <translation>Поворот</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="354"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="462"/>
         <source>none</source>
         <translation>нет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="220"/>
         <source>Degrees about the axis, right-handed; empty: not turned</source>
         <translation>Градусы вокруг оси, по правилу правой руки; пусто: без поворота</translation>
     </message>
@@ -480,12 +511,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="95"/>
+        <location filename="../ui/editor/scene_document.cpp" line="106"/>
         <source>untitled</source>
         <translation>без имени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="109"/>
+        <location filename="../ui/editor/scene_document.cpp" line="120"/>
         <source>floor</source>
         <translation>пол</translation>
     </message>
@@ -630,7 +661,7 @@
         <translation>Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/edit_actions.cpp" line="76"/>
+        <location filename="../ui/edit_actions.cpp" line="81"/>
         <source>Cannot place the objects: %1</source>
         <translation>Не удаётся разместить объекты: %1</translation>
     </message>
@@ -811,217 +842,217 @@
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="101"/>
+        <location filename="../ui/help_dialogs.cpp" line="102"/>
         <source>Click with an Add tool</source>
         <translation>Щелчок инструментом добавления</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="102"/>
+        <location filename="../ui/help_dialogs.cpp" line="103"/>
         <source>Place the object where the cursor points, on a surface or the ground</source>
         <translation>Поставить объект туда, куда указывает курсор: на поверхность или на пол</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="103"/>
+        <location filename="../ui/help_dialogs.cpp" line="104"/>
         <source>Selecting and moving</source>
         <translation>Выбор и перемещение</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
         <source>Click</source>
         <translation>Щелчок</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="104"/>
+        <location filename="../ui/help_dialogs.cpp" line="105"/>
         <source>Select the object under the cursor; on nothing, clear the selection</source>
         <translation>Выбрать объект под курсором; щелчок по пустому месту снимает выбор</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
         <source>Ctrl+click, Shift+click</source>
         <translation>Ctrl+щелчок, Shift+щелчок</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="105"/>
+        <location filename="../ui/help_dialogs.cpp" line="106"/>
         <source>Add the object to the selection or take it out</source>
         <translation>Добавить объект к выбранным или исключить его</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
         <source>Drag a selected object</source>
         <translation>Перетаскивание выбранного объекта</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="106"/>
+        <location filename="../ui/help_dialogs.cpp" line="107"/>
         <source>Move the selection in the plane facing the camera</source>
         <translation>Перемещать выбранное в плоскости, обращённой к камере</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
         <source>X, Y or Z held while dragging</source>
         <translation>X, Y или Z, удерживаемые при перетаскивании</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="107"/>
+        <location filename="../ui/help_dialogs.cpp" line="108"/>
         <source>Move along that axis only</source>
         <translation>Перемещать только вдоль этой оси</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="108"/>
+        <location filename="../ui/help_dialogs.cpp" line="109"/>
         <source>Drag the tip of the arrow</source>
         <translation>Перетаскивание конца стрелки</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="109"/>
+        <location filename="../ui/help_dialogs.cpp" line="110"/>
         <source>Change a ball&apos;s velocity, a plane&apos;s normal or a cylinder&apos;s axis</source>
         <translation>Изменить скорость шара, нормаль плоскости или ось цилиндра</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
         <source>Alt+drag from a ball</source>
         <translation>Alt+перетаскивание от шара</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="110"/>
+        <location filename="../ui/help_dialogs.cpp" line="111"/>
         <source>Draw the ball&apos;s velocity, also for a ball at rest</source>
         <translation>Задать скорость шара, в том числе покоящегося</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="111"/>
+        <location filename="../ui/help_dialogs.cpp" line="112"/>
         <source>Edit</source>
         <translation>Правка</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
         <source>Undo</source>
         <translation>Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
         <source>Redo</source>
         <translation>Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
         <source>Copy the selection (as scene text)</source>
         <translation>Копировать выбранное (как текст сцены)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
         <source>Paste objects, moved aside where they would overlap</source>
         <translation>Вставить объекты, сдвинув их, если они перекрываются</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
         <source>Duplicate the selection</source>
         <translation>Дублировать выбранное</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
         <source>Delete the selection</source>
         <translation>Удалить выбранное</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
         <source>Select every object</source>
         <translation>Выбрать все объекты</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
         <source>Files</source>
         <translation>Файлы</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
         <source>New scene</source>
         <translation>Новая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
         <source>Open a scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
         <source>Save</source>
         <translation>Сохранить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
         <source>Save under another name</source>
         <translation>Сохранить под другим именем</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
         <source>Quit</source>
         <translation>Выйти</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Dropping a file on the window</source>
         <translation>Перетаскивание файла в окно</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Open it</source>
         <translation>Открыть его</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
         <source>Outline and Properties</source>
         <translation>Структура и свойства</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Click, Ctrl+click, Shift+click</source>
         <translation>Щелчок, Ctrl+щелчок, Shift+щелчок</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Select objects, as in the view</source>
         <translation>Выбирать объекты, как в окне сцены</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>Double-click, F2 (in the outline)</source>
         <translation>Двойной щелчок, F2 (в структуре)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>Rename the object</source>
         <translation>Переименовать объект</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Enter, or leaving a field</source>
         <translation>Enter или переход из поля</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Apply the typed value</source>
         <translation>Применить введённое значение</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
         <source>Speed vs Accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Click a point</source>
         <translation>Щелчок по точке</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Select its run in the table</source>
         <translation>Выбрать её прогон в таблице</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Double-click a run</source>
         <translation>Двойной щелчок по прогону</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Apply its settings to the scene</source>
         <translation>Применить его настройки к сцене</translation>
     </message>
@@ -1031,7 +1062,7 @@
         <translation>Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp"/>
+        <location filename="../ui/help_dialogs.cpp" line="101"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1039,110 +1070,110 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
         <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
@@ -1152,17 +1183,17 @@
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
@@ -1172,7 +1203,7 @@
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
@@ -1182,7 +1213,7 @@
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
@@ -1207,12 +1238,12 @@
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
@@ -1242,27 +1273,27 @@
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="586"/>
+        <location filename="../ui/main_window.cpp" line="588"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
@@ -1302,32 +1333,32 @@
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="659"/>
+        <location filename="../ui/main_window.cpp" line="661"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
@@ -1367,17 +1398,17 @@
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
@@ -1387,7 +1418,7 @@
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="747"/>
+        <location filename="../ui/main_window.cpp" line="749"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
@@ -1397,22 +1428,22 @@
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1468,82 +1499,82 @@
         <translation>Лестница</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="58"/>
+        <location filename="../ui/scene_files.cpp" line="59"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="59"/>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="68"/>
+        <location filename="../ui/scene_files.cpp" line="69"/>
         <source>Cannot Open Scene</source>
         <translation>Не удаётся открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="105"/>
+        <location filename="../ui/scene_files.cpp" line="106"/>
         <source>an unsaved scene</source>
         <translation>несохранённая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="107"/>
+        <location filename="../ui/scene_files.cpp" line="108"/>
         <source>Recover Scene</source>
         <translation>Восстановление сцены</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="108"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom завершился некорректно, когда в «%1» были несохранённые изменения. Копию, сохранённую %2, можно восстановить.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="114"/>
+        <location filename="../ui/scene_files.cpp" line="115"/>
         <source>&amp;Recover</source>
         <translation>&amp;Восстановить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="115"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Discard</source>
         <translation>&amp;Отбросить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>Not &amp;Now</source>
         <translation>Не &amp;сейчас</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="124"/>
+        <location filename="../ui/scene_files.cpp" line="125"/>
         <source>Cannot Recover Scene</source>
         <translation>Не удаётся восстановить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="148"/>
+        <location filename="../ui/scene_files.cpp" line="149"/>
         <source>Save Scene</source>
         <translation>Сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="149"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="160"/>
+        <location filename="../ui/scene_files.cpp" line="161"/>
         <source>Cannot Save Scene</source>
         <translation>Не удаётся сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="165"/>
+        <location filename="../ui/scene_files.cpp" line="166"/>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="173"/>
+        <location filename="../ui/scene_files.cpp" line="174"/>
         <source>Unsaved Changes</source>
         <translation>Несохранённые изменения</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="174"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>
