@@ -428,36 +428,28 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       schedule(i);
       return;
     case EventKind::SlideEnd:
-      // Past the face's edge the ball flies, and meets the edge, if at all, as a contact.
-      moveTo(i, now_);
-      particles_[i].slidePlane = particles_[i].creasePlane = -1;
-      changed(i);
-      predict(i);
-      return;
+      // Past the face's edge the ball flies, and meets the edge, if at all, as a contact; one
+      // too slow to clear the edge's rounding meets it at once.
+      {
+        const int faceAxis = slideSurfaces_[particles_[i].slidePlane].axis;
+        moveTo(i, now_);
+        particles_[i].slidePlane = particles_[i].creasePlane = -1;
+        changed(i);
+        if (bendsIntoEdge(i, event.other, faceAxis)) {
+          collideWithStatic(i, {StaticKind::Box, event.other}, -1, stats, log);
+          return;
+        }
+        predict(i);
+        return;
+      }
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
       moveTo(i, now_);
-      restoreEnergy(i);
-      const Motion& m = tracks_[i].motion;
-      const double r = bodies_.radius[i];
-      const auto [n, gap, restitution] = staticContact(i, {staticKindOf(event.kind), event.other});
-      notePenetration(-gap, stats);
-      const double approach = -m.velocity.dot(n);
-      noteRestitution(restitution);
-      collideWithSurface(i, n, restitution, stats,
-                         event.kind == EventKind::Plane ? event.other
-                         : event.kind == EventKind::Box ? boxFaceAt(i, event.other)
-                                                        : -1);
-      if (!particles_[i].resting) {
-        leaveTouchingStatics(i, stats);
-        updateSlide(i, stats);
-      }
-      const ContactKind kind = contactKindOf(staticKindOf(event.kind));
-      stats.collisions.add(kind);
-      if (log) log->push_back({now_, kind, i, event.other, m.position - r * n, approach});
-      closeBooks(i, 0.0);
-      if (!particles_[i].resting) predict(i);
+      const int face = event.kind == EventKind::Plane ? event.other
+                       : event.kind == EventKind::Box ? boxFaceAt(i, event.other)
+                                                      : -1;
+      collideWithStatic(i, {staticKindOf(event.kind), event.other}, face, stats, log);
       return;
     }
     case EventKind::Ball: {
@@ -471,6 +463,49 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       return;
     }
   }
+}
+
+void EventEngine::collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
+                                    std::vector<CollisionRecord>* log) {
+  restoreEnergy(i);
+  const Motion& m = tracks_[i].motion;
+  const double r = bodies_.radius[i];
+  const auto [n, gap, restitution] = staticContact(i, ref);
+  notePenetration(-gap, stats);
+  const double approach = -m.velocity.dot(n);
+  noteRestitution(restitution);
+  collideWithSurface(i, n, restitution, stats, face);
+  if (!particles_[i].resting) {
+    leaveTouchingStatics(i, stats);
+    updateSlide(i, stats);
+  }
+  const ContactKind kind = contactKindOf(ref.kind);
+  stats.collisions.add(kind);
+  if (log) log->push_back({now_, kind, i, ref.index, m.position - r * n, approach});
+  closeBooks(i, 0.0);
+  if (!particles_[i].resting) predict(i);
+}
+
+bool EventEngine::bendsIntoEdge(int i, int box, int faceAxis) const {
+  // Across the edge the centre is at u from the edge line, at the rounding's radius, and |u|^2
+  // changes as 2 u.v t + (|v|^2 + u.a) t^2. The slide keeps u.v at round-off, so the second
+  // term decides: gravity into the face bends the path into the rounding faster than the speed
+  // across the edge carries it out (|v|^2 < r g_n), as over the top of a peg.
+  const BoxShape& shape = bodies_.boxes[box];
+  const Motion& m = tracks_[i].motion;
+  const Vec3 local = shape.toLocal(m.position);
+  // The axis it leaves the face across is the one it is nearest the end of (the other a
+  // corner's); along the third the edge runs.
+  const int j = (faceAxis + 1) % 3, k = (faceAxis + 2) % 3;
+  const int out = std::abs(local[j]) * shape.half[k] >= std::abs(local[k]) * shape.half[j] ? j : k;
+  Vec3 u = Vec3::Zero();
+  for (const int axis : {faceAxis, out})
+    u[axis] = local[axis] - std::copysign(shape.half[axis], local[axis]);
+  Vec3 v = shape.axes.transpose() * m.velocity;
+  Vec3 a = shape.axes.transpose() * accelerationOf(i);
+  const int along = 3 - faceAxis - out;
+  v[along] = a[along] = 0.0;
+  return v.squaredNorm() + u.dot(a) < 0.0;
 }
 
 void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log) {

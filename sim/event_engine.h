@@ -133,6 +133,12 @@ class EventEngine {
   // it must be told.
   void warnNeighbours(int i);
   void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
+  // A contact with a static shape now; `face` is the plane or box face it may slide on, or -1.
+  void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
+                         std::vector<CollisionRecord>* log);
+  // Whether ball i, at the end of a slide on `box`'s face across `faceAxis`, would fly into the
+  // rounding of the face's edge at once.
+  bool bendsIntoEdge(int i, int box, int faceAxis) const;
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
   // n pointing to the ball.
