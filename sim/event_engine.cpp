@@ -427,21 +427,19 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::None:
       schedule(i);
       return;
-    case EventKind::SlideEnd:
+    case EventKind::SlideEnd: {
       // Past the face's edge the ball flies, and meets the edge, if at all, as a contact; one
-      // too slow to clear the edge's rounding meets it at once.
-      {
-        const int faceAxis = slideSurfaces_[particles_[i].slidePlane].axis;
-        moveTo(i, now_);
-        particles_[i].slidePlane = particles_[i].creasePlane = -1;
-        changed(i);
-        if (bendsIntoEdge(i, event.other, faceAxis)) {
-          collideWithStatic(i, {StaticKind::Box, event.other}, -1, stats, log);
-          return;
-        }
+      // too slow to clear the edge's rounding meets it at once, with no face to slide on.
+      const int faceAxis = slideSurfaces_[particles_[i].slidePlane].axis;
+      moveTo(i, now_);
+      particles_[i].slidePlane = particles_[i].creasePlane = -1;
+      changed(i);
+      if (bendsIntoEdge(i, event.other, faceAxis))
+        collideWithStatic(i, {StaticKind::Box, event.other}, -1, stats, log);
+      else
         predict(i);
-        return;
-      }
+      return;
+    }
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
