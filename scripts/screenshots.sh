@@ -8,6 +8,6 @@ shoot() {  # shoot NAME SCENE SECONDS
     --screenshot "docs/screenshots/$1.png"
 }
 shoot magic-room resources/scenes/magic-room.json 3
-shoot galton-board resources/scenes/galton-board.json 4
+shoot galton-board resources/scenes/galton-board.json 8
 shoot inelastic-pile resources/scenes/inelastic-pile.json 2
 shoot staircase resources/scenes/staircase.json 1

@@ -615,7 +615,10 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   // time against its size, so a fast ball crossing a box is never taken for a wedged one.
   if ((now_ - p.lastSurfaceCollision) * speed <=
       tolerance::kBurstTravelFraction * bodies_.radius[i]) {
-    if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) putToRest(i, stats);
+    if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) {
+      putToRest(i, stats);
+      p.wedged = true;
+    }
   } else {
     p.collisionsInBurst = 0;
   }

@@ -71,6 +71,8 @@ class EventEngine {
     int slidePlane = -1;   // the surface (slideSurfaces_) the ball slides on, or -1 in flight
     int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
+    // Put to rest by the burst guard: held in its wedge, it is not loosened (restCheck).
+    bool wedged = false;
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
   // crossing, which leaves the path alone, need not predict the contact again.

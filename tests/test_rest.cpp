@@ -8,6 +8,7 @@
 #include "sim/scene_builders.h"
 #include "sim/simulation.h"
 #include "sim/tolerances.h"
+#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>
@@ -15,6 +16,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
+#include <random>
 #include <vector>
 
 using namespace carom;
@@ -743,6 +746,82 @@ class TestRest : public QObject {
       QCOMPARE(sim.time(), 1.0);
       QVERIFY2(sim.stats().events < 1000, qPrintable(QString::number(sim.stats().events)));
     }
+  }
+
+  // A pour that jams the outlet of a Galton board's funnel, in a plane (z = 0): the burst guard
+  // stopped a ball wedged between two resting ones, and a slow ball leaning on it loosened it
+  // again at each touch, a few nanoseconds apart, so that the run stalled at t = 0.78 s. The
+  // pile must settle, overlapping nothing.
+  void pourJammingAFunnelComesToRest() {
+    const double r = 0.03, pitch = 3.6 * r, pegRadius = 0.5 * r, depth = 2.5 * r;
+    const int rows = 9;
+    const double rowStep = pitch * std::sqrt(3.0) / 2.0, halfWidth = 0.5 * (rows + 1) * pitch;
+    const double binHeight = 0.9, outletHalf = 1.6 * r;
+    Scene s;
+    s.world.gravity = Vec3(0, -9.81, 0);
+    s.world.restitution = 0.5;
+    s.planes.push_back(carom::testing::makePlane(Vec3::Zero(), Vec3::UnitY()));
+    s.planes.push_back(carom::testing::makePlane(Vec3(0, 0, -1.25 * r), Vec3::UnitZ()));
+    s.planes.push_back(carom::testing::makePlane(Vec3(-halfWidth, 0, 0), Vec3::UnitX()));
+    s.planes.push_back(carom::testing::makePlane(Vec3(halfWidth, 0, 0), -Vec3::UnitX()));
+    for (int j = 1; j <= rows; ++j)
+      s.boxes.push_back(
+          carom::testing::makeBox(Vec3((j - 0.5 * (rows + 1)) * pitch, 0.5 * binHeight, 0),
+                                  Vec3(0.25 * r, 0.5 * binHeight, depth)));
+    const double topRow = binHeight + pegRadius + 2.5 * r + (rows - 1) * rowStep;
+    for (int k = 0; k < rows; ++k)
+      for (int j = 0; j <= k; ++j) {
+        Cylinder peg =
+            carom::testing::makeCylinder(Vec3((j - 0.5 * k) * pitch, topRow - k * rowStep, 0),
+                                         Vec3::UnitZ(), pegRadius, 2.0 * depth);
+        peg.restitution = 0.2;
+        s.cylinders.push_back(peg);
+      }
+    const double slope = 35.0 * std::numbers::pi / 180.0;
+    const double length = (halfWidth - outletHalf) / std::cos(slope);
+    const double outletHeight = topRow + pitch;
+    for (const double side : {-1.0, 1.0}) {
+      const Vec3 along(std::cos(slope), side * std::sin(slope), 0.0);
+      const Vec3 up(-side * std::sin(slope), std::cos(slope), 0.0);
+      const Vec3 innerTop(side * outletHalf, outletHeight, 0.0);
+      s.boxes.push_back(carom::testing::makeBox(
+          innerTop + side * along * (0.5 * length) - up * 0.5 * r,
+          Vec3(0.5 * length, 0.5 * r, depth), Rotation{Vec3::UnitZ(), side * 35.0}));
+    }
+    const double top = outletHeight + (halfWidth - outletHalf) * std::tan(slope);
+    const double spacing = 2.6 * r;
+    const int across = static_cast<int>(std::floor((2.0 * halfWidth - 2.0 * r) / spacing));
+    std::mt19937_64 engine(7);
+    const auto jitter = [&] {
+      return 0.25 * r * (2.0 * static_cast<double>(engine() >> 11) * 0x1.0p-53 - 1.0);
+    };
+    const int count = 60;
+    for (int i = 0; i < count; ++i) {
+      const double x = -halfWidth + 1.3 * r + (i % across) * spacing + jitter();
+      const double y = top + 2.0 * r + (i / across) * spacing + jitter();
+      s.balls.push_back(makeBall({x, y, 0}, Vec3::Zero(), r, 0.01));
+    }
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    sim.advanceTo(4.0);
+    // One ball still hops in a pocket between the funnel's board and a resting ball, about 500
+    // events a second (its supports cannot all be closed within reach); the rest of the pile
+    // has stopped.
+    QVERIFY2(sim.stats().events < 200000, qPrintable(QString::number(sim.stats().events)));
+    QVERIFY2(sim.kineticEnergy() < 1e-4 * count * 0.01 * 9.81 * r,
+             qPrintable(QString::number(sim.kineticEnergy())));
+    const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
+    QCOMPARE(overlaps.escaped, 0);
+    // That hopping ball sinks into the board, 1 mm by t = 1 s and a whole radius by 2.5 s: a
+    // contact with the box's face is missed between its hops (issue 13's notes).
+    QEXPECT_FAIL("", "a ball hopping between a box face and a resting ball sinks into the box",
+                 Continue);
+    QVERIFY2(overlaps.maxPenetration < 1e-9 * r,
+             qPrintable(QString::number(overlaps.maxPenetration)));
+    // A few balls passed the outlet before it jammed; the rest stay in the funnel.
+    int below = 0;
+    for (const Vec3& p : sim.positions()) below += p.y() < outletHeight ? 1 : 0;
+    QVERIFY2(below > 0 && below < count, qPrintable(QString::number(below)));
   }
 };
 

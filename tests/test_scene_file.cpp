@@ -2,6 +2,8 @@
 // of numbers and of the bundled scenes, and saving that never damages an existing file.
 
 #include "sim/io/scene_file.h"
+#include "sim/measures.h"
+#include "sim/simulation.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 
@@ -17,6 +19,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -24,6 +27,7 @@
 #include <random>
 
 using carom::Ball;
+using carom::Box;
 using carom::Scene;
 using carom::Vec3;
 using carom::io::SceneLoadResult;
@@ -657,6 +661,44 @@ class SceneFileTest : public QObject {
     for (const char* name : {"magic-room.json", "newtons-cradle.json", "gas-box.json",
                              "galton-board.json", "inelastic-pile.json", "staircase.json"})
       QVERIFY2(names.contains(name), name);
+  }
+
+  // The bundled Galton board pours its balls through a funnel and nine rows of finite pegs into
+  // bins of boxes, and ends at rest in a histogram: most balls in the middle bins.
+  void bundledGaltonBoardEndsInAHistogram() {
+    const carom::io::SceneLoadResult loaded =
+        carom::io::loadSceneFile(QDir(sceneDir()).filePath("galton-board.json"));
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    const Scene& scene = *loaded.scene;
+    std::vector<double> edges;
+    double binTop = 0.0;
+    for (const Box& box : scene.boxes) {
+      if (box.name.starts_with("divider")) binTop = box.center.y() + box.halfExtents.y();
+      if (box.name.starts_with("divider") || box.name.ends_with("wall"))
+        edges.push_back(box.center.x());
+    }
+    std::sort(edges.begin(), edges.end());
+    QCOMPARE(edges.size(), std::size_t(11));  // ten bins
+    carom::Simulation sim(scene);
+    sim.advanceTo(10.0);
+    QCOMPARE(sim.kineticEnergy(), 0.0);
+    const carom::OverlapReport overlaps = carom::measureOverlaps(sim.bodies(), sim.positions());
+    QCOMPARE(overlaps.escaped, 0);
+    QVERIFY2(overlaps.maxPenetration < 1e-9, qPrintable(QString::number(overlaps.maxPenetration)));
+    std::vector<int> bins(edges.size() - 1, 0);
+    for (const Vec3& p : sim.positions()) {
+      if (p.y() > binTop) continue;
+      const auto bin = std::upper_bound(edges.begin(), edges.end(), p.x()) - edges.begin() - 1;
+      if (bin >= 0 && bin < static_cast<long>(bins.size())) ++bins[bin];
+    }
+    QString counts;
+    for (const int count : bins) counts += QString::number(count) + " ";
+    int binned = 0;
+    for (const int count : bins) binned += count;
+    QVERIFY2(binned >= 90, qPrintable(counts));
+    const int middle = bins[3] + bins[4] + bins[5] + bins[6];
+    const int outer = bins[0] + bins[1] + bins[8] + bins[9];
+    QVERIFY2(middle > 2 * outer, qPrintable(counts));
   }
 
   void bundledSceneRoundTrip_data() {
