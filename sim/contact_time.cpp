@@ -1,6 +1,7 @@
 #include "sim/contact_time.h"
 
 #include "sim/polynomial.h"
+#include "sim/tolerances.h"
 
 #include <algorithm>
 #include <array>
@@ -11,6 +12,14 @@ namespace carom {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
+
+// Whether a ball touching a finite shape, its outward contact normal `normal`, moves into it
+// now: its normal speed, or its acceleration when that speed is round-off (kTangentRateFraction).
+bool approachesNow(const Vec3& normal, const BallPath& ball) {
+  const double rate = normal.dot(ball.velocity);
+  if (std::abs(rate) > tolerance::kTangentRateFraction * ball.velocity.norm()) return rate < 0.0;
+  return normal.dot(ball.acceleration) < 0.0;
+}
 
 // Gap |u0 + u1 t + u2 t^2|^2 - rho^2 as a polynomial in t.
 Polynomial squaredLengthMinus(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho) {
@@ -204,8 +213,7 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
   if (p.squaredNorm() > bound * bound && sphereEntry(p, v, a, bound, horizon) == kNever)
     return kNever;
   const CylinderShape::Contact now = cylinder.contact(ball.position, radius);
-  const double rate = now.normal.dot(ball.velocity);
-  const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
+  const bool approaching = approachesNow(now.normal, ball);
   const auto across = [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); };
   double first = kNever;
   // The side grown by the radius within the length, and the caps grown by the radius within the
@@ -272,8 +280,7 @@ double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& b
   // Touching or overlapping now: a contact at once when it approaches, as for every shape; when
   // it leaves, the pieces it is inside now are not entered again until it has left them.
   const BoxShape::Contact now = box.contact(ball.position, radius);
-  const double rate = now.normal.dot(ball.velocity);
-  const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
+  const bool approaching = approachesNow(now.normal, ball);
   double first = kNever;
   const auto consider = [&](double t) { first = std::min(first, t); };
   // The pieces' intervals run to infinity, so that an entry at the horizon itself counts.
