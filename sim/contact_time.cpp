@@ -13,14 +13,6 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-// Whether a ball touching a finite shape, its outward contact normal `normal`, moves into it
-// now: its normal speed, or its acceleration when that speed is round-off (kTangentRateFraction).
-bool approachesNow(const Vec3& normal, const BallPath& ball) {
-  const double rate = normal.dot(ball.velocity);
-  if (std::abs(rate) > tolerance::kTangentRateFraction * ball.velocity.norm()) return rate < 0.0;
-  return normal.dot(ball.acceleration) < 0.0;
-}
-
 // Gap |u0 + u1 t + u2 t^2|^2 - rho^2 as a polynomial in t.
 Polynomial squaredLengthMinus(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho) {
   Polynomial f;
@@ -213,7 +205,8 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
   if (p.squaredNorm() > bound * bound && sphereEntry(p, v, a, bound, horizon) == kNever)
     return kNever;
   const CylinderShape::Contact now = cylinder.contact(ball.position, radius);
-  const bool approaching = approachesNow(now.normal, ball);
+  const double rate = now.normal.dot(ball.velocity);
+  const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
   const auto across = [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); };
   double first = kNever;
   // The side grown by the radius within the length, and the caps grown by the radius within the
@@ -280,9 +273,22 @@ double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& b
   // Touching or overlapping now: a contact at once when it approaches, as for every shape; when
   // it leaves, the pieces it is inside now are not entered again until it has left them.
   const BoxShape::Contact now = box.contact(ball.position, radius);
-  const bool approaching = approachesNow(now.normal, ball);
+  const double rate = now.normal.dot(ball.velocity);
+  const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
   double first = kNever;
   const auto consider = [&](double t) { first = std::min(first, t); };
+  // On face k now, leaving it by a normal speed of round-off (kTangentRateFraction) while its
+  // acceleration presses it in: it leaves in truth only when it is off the face (at `end`, past
+  // an edge) before it sinks deeper than touching; otherwise the face is met at once.
+  const auto sinksIntoFace = [&](int k, double end) {
+    const double side = p[k] >= 0.0 ? 1.0 : -1.0;
+    if (!(side * a[k] < 0.0) ||
+        side * v[k] > tolerance::kTangentRateFraction * ball.velocity.norm())
+      return false;
+    if (!(end < kNever)) return true;
+    const double depth = h[k] + radius - side * (p[k] + (v[k] + 0.5 * a[k] * end) * end);
+    return depth > tolerance::kTouchFraction * radius;
+  };
   // The pieces' intervals run to infinity, so that an entry at the horizon itself counts.
   // The face slabs: the box grown by the radius along one axis only.
   for (int k = 0; k < 3; ++k) {
@@ -293,7 +299,7 @@ double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& b
     }
     for (int n = 0; n < inside.count; ++n) {
       const double begin = inside.items[n].begin;
-      if (begin > 0.0 || approaching) {
+      if (begin > 0.0 || approaching || (begin == 0.0 && sinksIntoFace(k, inside.items[n].end))) {
         consider(begin);
         break;
       }

@@ -10,13 +10,13 @@ namespace carom::tolerance {
 // at the start of a run, and used to find the supports of a ball that comes to rest.
 inline constexpr double kTouchFraction = 1e-9;
 
-// A ball touching a box or a capped cylinder moves along it, neither into it nor away, when its
-// speed along the contact normal is within this fraction of its speed: it approaches when its
-// acceleration presses it in. A response along a line of centres parallel to a face (two balls
-// lying on a box's slope) leaves rates of up to 3e-14 of the speed, which the face took for a
-// departure: the pressed ball then sank into the box, a radius deep in 2 s (test_rest). A ball
-// leaving a face at an angle below it is met at once instead of a re-entry a negligible time
-// later (test_boxes).
+// A ball on a box's face whose speed out of the face is within this fraction of its speed, while
+// its acceleration presses it in, leaves the face only if it passes the face's edge before it
+// would sink deeper than touching distance; otherwise it meets the face at once. A response along
+// a line of centres parallel to a face (two balls lying on a box's slope) leaves rates of up to
+// 3e-14 of the speed, which the face took for a departure: the pressed ball then sank into the
+// box, a radius deep in 2 s (test_rest, test_boxes). A ball leaving a face that slowly would
+// come back to it within a negligible time.
 inline constexpr double kTangentRateFraction = 1e-12;
 
 // A bounce lower than this fraction of the ball's radius is not resolved as a bounce: the

@@ -162,6 +162,43 @@ class TestBoxes : public QObject {
     QVERIFY2(std::abs(sim.kineticEnergy() - 0.5 * speed * speed) < 1e-12,
              qPrintable(QString::number(sim.kineticEnergy() - 0.5 * speed * speed)));
   }
+  // A fast ball touching a rounded part (a box's edge, a capped cylinder's side) and leaving it
+  // by a normal speed of round-off flies on: its speed carries it off the rounding faster than
+  // gravity bends it in. Taking round-off for an approach, as on a flat face, met the part at
+  // once and added a rest-speed hop (a 1e-2 m error after 0.2 s).
+  void fastBallGrazingARoundedPartFliesOn_data() {
+    QTest::addColumn<bool>("box");
+    QTest::newRow("box edge") << true;
+    QTest::newRow("capped cylinder side") << false;
+  }
+  void fastBallGrazingARoundedPartFliesOn() {
+    QFETCH(bool, box);
+    Scene s = testing::elasticSceneWithGravity();
+    s.world.restitution = 0.5;
+    const double r = 0.1, speed = 3.0;
+    Vec3 normal, start;
+    if (box) {
+      s.boxes.push_back(makeBox({0, 0, 0}, {0.5, 0.5, 0.5}));
+      normal = Vec3(1, 1, 0).normalized();  // the edge at x = y = 0.5, halfway round
+      start = Vec3(0.5, 0.5, 0) + r * normal;
+    } else {
+      s.cylinders.push_back(testing::makeCylinder({0, 0, 0}, {0, 0, 1}, 0.3, 1.0));
+      normal = Vec3(0, 1, 0);  // the top of a lying peg
+      start = (0.3 + r) * normal;
+    }
+    const Vec3 along(normal.y(), -normal.x(), 0);
+    // |v|^2 far above r g (edge) and (R + r) g (side): its path bends away from the part.
+    const Vec3 velocity = speed * along + 1e-14 * speed * normal;
+    s.balls.push_back(makeBall(start, velocity, r));
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    const double t = 0.2;
+    sim.advanceTo(t);
+    const Vec3 expected = start + velocity * t + 0.5 * t * t * s.world.gravity;
+    QVERIFY2((sim.positions()[0] - expected).norm() < 1e-12,
+             qPrintable(QString::number((sim.positions()[0] - expected).norm())));
+    QCOMPARE(sim.stats().collisions.total(), std::uint64_t(0));
+  }
   // A ball falling onto one sliding on a box's top presses it into the face: the face answers as
   // a ball-box contact (it was counted as a ball-plane one, in a scene with no plane).
   void aPressedSlideOnABoxCountsAsBallBox() {
