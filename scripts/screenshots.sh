@@ -11,3 +11,4 @@ shoot magic-room resources/scenes/magic-room.json 3
 shoot galton-board resources/scenes/galton-board.json 8
 shoot inelastic-pile resources/scenes/inelastic-pile.json 2
 shoot staircase resources/scenes/staircase.json 1
+shoot marble-run resources/scenes/marble-run.json 2.5

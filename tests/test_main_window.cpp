@@ -203,7 +203,7 @@ class TestMainWindow : public QObject {
     for (QAction* action : window_->menuBar()->actions())
       if (action->text().remove('&') == "Examples") examples = action->menu();
     QVERIFY(examples);
-    QCOMPARE(examples->actions().size(), 6);
+    QCOMPARE(examples->actions().size(), 7);
     for (QAction* action : examples->actions()) {
       if (action->text() != "Newton's cradle") continue;
       action->trigger();

@@ -658,8 +658,9 @@ class SceneFileTest : public QObject {
 
   void bundledScenesExist() {
     const QStringList names = QDir(sceneDir()).entryList({"*.json"}, QDir::Files);
-    for (const char* name : {"magic-room.json", "newtons-cradle.json", "gas-box.json",
-                             "galton-board.json", "inelastic-pile.json", "staircase.json"})
+    for (const char* name :
+         {"magic-room.json", "newtons-cradle.json", "gas-box.json", "galton-board.json",
+          "inelastic-pile.json", "staircase.json", "marble-run.json"})
       QVERIFY2(names.contains(name), name);
   }
 
@@ -699,6 +700,66 @@ class SceneFileTest : public QObject {
     const int middle = bins[3] + bins[4] + bins[5] + bins[6];
     const int outer = bins[0] + bins[1] + bins[8] + bins[9];
     QVERIFY2(middle > 2 * outer, qPrintable(counts));
+  }
+
+  // The bundled marble run: its marbles roll down five tilted box ramps, each leaving a ramp by
+  // the gap at its low end (turned back by a capped cylinder) to land on the next, fall through
+  // a triangle of capped pegs, and end at rest in the bins, never inside a solid.
+  void bundledMarbleRunEndsInTheBins() {
+    const carom::io::SceneLoadResult loaded =
+        carom::io::loadSceneFile(QDir(sceneDir()).filePath("marble-run.json"));
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    const Scene& scene = *loaded.scene;
+    // Each ramp's low end: where its top face is lowest, and which way along x it runs down.
+    struct LowEnd {
+      Vec3 point;
+      double downhill;
+    };
+    std::vector<LowEnd> lowEnds;
+    double binTop = 0.0;
+    for (const Box& box : scene.boxes) {
+      const carom::BoxShape shape = carom::boxShape(box);
+      if (box.name.starts_with("divider")) binTop = box.center.y() + box.halfExtents.y();
+      if (!box.name.starts_with("ramp")) continue;
+      const Vec3 top = shape.center + shape.half.y() * shape.axes.col(1);
+      const Vec3 along = shape.half.x() * shape.axes.col(0);
+      const Vec3 low =
+          (top + along).y() < (top - along).y() ? Vec3(top + along) : Vec3(top - along);
+      lowEnds.push_back({low, low.x() > shape.center.x() ? 1.0 : -1.0});
+    }
+    QCOMPARE(lowEnds.size(), std::size_t(5));
+    QVERIFY(binTop > 0.0);
+    const std::size_t count = scene.balls.size();
+    // Where each ball first drops below each ramp's low end: in the gap beyond it.
+    std::vector<std::vector<bool>> passed(count, std::vector<bool>(lowEnds.size(), false));
+    carom::Simulation sim(scene);
+    double deepest = 0.0;
+    for (int step = 1; step <= 3000; ++step) {
+      sim.advanceTo(0.005 * step);
+      const std::vector<Vec3> positions = sim.positions();
+      deepest = std::max(deepest, carom::measureOverlaps(sim.bodies(), positions).maxPenetration);
+      for (std::size_t i = 0; i < count; ++i) {
+        for (std::size_t k = 0; k < lowEnds.size(); ++k) {
+          const LowEnd& end = lowEnds[k];
+          if (passed[i][k] || positions[i].y() > end.point.y() - scene.balls[i].radius) continue;
+          passed[i][k] = true;
+          QVERIFY2((positions[i].x() - end.point.x()) * end.downhill > 0.0,
+                   qPrintable(QString("ball %1 below ramp %2 at x = %3, t = %4")
+                                  .arg(i)
+                                  .arg(k + 1)
+                                  .arg(positions[i].x())
+                                  .arg(sim.time())));
+        }
+      }
+    }
+    QVERIFY2(deepest < 1e-9, qPrintable(QString::number(deepest)));
+    QCOMPARE(sim.kineticEnergy(), 0.0);
+    const carom::OverlapReport overlaps = carom::measureOverlaps(sim.bodies(), sim.positions());
+    QCOMPARE(overlaps.escaped, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+      QVERIFY2(sim.positions()[i].y() < binTop, qPrintable(QString("ball %1").arg(i)));
+      for (std::size_t k = 0; k < lowEnds.size(); ++k) QVERIFY(passed[i][k]);
+    }
   }
 
   void bundledSceneRoundTrip_data() {

@@ -1495,82 +1495,87 @@
         <translation>Treppe</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="59"/>
+        <location filename="../ui/scene_files.cpp" line="34"/>
+        <source>Marble run</source>
+        <translation>Murmelbahn</translation>
+    </message>
+    <message>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="60"/>
+        <location filename="../ui/scene_files.cpp" line="61"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Carom-Szenen (*.carom *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="69"/>
+        <location filename="../ui/scene_files.cpp" line="70"/>
         <source>Cannot Open Scene</source>
         <translation>Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="106"/>
+        <location filename="../ui/scene_files.cpp" line="107"/>
         <source>an unsaved scene</source>
         <translation>eine ungespeicherte Szene</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="108"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Recover Scene</source>
         <translation>Szene wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="109"/>
+        <location filename="../ui/scene_files.cpp" line="110"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom wurde nicht richtig beendet, während %1 ungespeicherte Änderungen hatte. Die um %2 gesicherte Kopie kann wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="115"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="117"/>
+        <location filename="../ui/scene_files.cpp" line="118"/>
         <source>Not &amp;Now</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="125"/>
+        <location filename="../ui/scene_files.cpp" line="126"/>
         <source>Cannot Recover Scene</source>
         <translation>Szene kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="149"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Save Scene</source>
         <translation>Szene speichern</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="150"/>
+        <location filename="../ui/scene_files.cpp" line="151"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Carom-Szenen (*.carom);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="161"/>
+        <location filename="../ui/scene_files.cpp" line="162"/>
         <source>Cannot Save Scene</source>
         <translation>Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="166"/>
+        <location filename="../ui/scene_files.cpp" line="167"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="174"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="175"/>
+        <location filename="../ui/scene_files.cpp" line="176"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>

@@ -1499,82 +1499,87 @@
         <translation>Лестница</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="59"/>
+        <location filename="../ui/scene_files.cpp" line="34"/>
+        <source>Marble run</source>
+        <translation>Трасса для шариков</translation>
+    </message>
+    <message>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="60"/>
+        <location filename="../ui/scene_files.cpp" line="61"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="69"/>
+        <location filename="../ui/scene_files.cpp" line="70"/>
         <source>Cannot Open Scene</source>
         <translation>Не удаётся открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="106"/>
+        <location filename="../ui/scene_files.cpp" line="107"/>
         <source>an unsaved scene</source>
         <translation>несохранённая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="108"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Recover Scene</source>
         <translation>Восстановление сцены</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="109"/>
+        <location filename="../ui/scene_files.cpp" line="110"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom завершился некорректно, когда в «%1» были несохранённые изменения. Копию, сохранённую %2, можно восстановить.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="115"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Recover</source>
         <translation>&amp;Восстановить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>&amp;Discard</source>
         <translation>&amp;Отбросить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="117"/>
+        <location filename="../ui/scene_files.cpp" line="118"/>
         <source>Not &amp;Now</source>
         <translation>Не &amp;сейчас</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="125"/>
+        <location filename="../ui/scene_files.cpp" line="126"/>
         <source>Cannot Recover Scene</source>
         <translation>Не удаётся восстановить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="149"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Save Scene</source>
         <translation>Сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="150"/>
+        <location filename="../ui/scene_files.cpp" line="151"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="161"/>
+        <location filename="../ui/scene_files.cpp" line="162"/>
         <source>Cannot Save Scene</source>
         <translation>Не удаётся сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="166"/>
+        <location filename="../ui/scene_files.cpp" line="167"/>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="174"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>Unsaved Changes</source>
         <translation>Несохранённые изменения</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="175"/>
+        <location filename="../ui/scene_files.cpp" line="176"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>

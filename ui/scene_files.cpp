@@ -30,7 +30,8 @@ constexpr struct {
                  {"gas-box", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Gas box")},
                  {"inelastic-pile", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Inelastic pile")},
                  {"newtons-cradle", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Newton's cradle")},
-                 {"staircase", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Staircase")}};
+                 {"staircase", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Staircase")},
+                 {"marble-run", QT_TRANSLATE_NOOP("carom::ui::SceneFiles", "Marble run")}};
 
 constexpr const char* kRecentFilesKey = "files/recent";
 
