@@ -19,6 +19,15 @@ Polynomial squaredLengthMinus(const Vec3& u0, const Vec3& u1, const Vec3& u2, do
   const double length = u0.norm();
   f.c[0] = (length - rho) * (length + rho);
   f.c[1] = 2.0 * u0.dot(u1);
+  // Touching, with a rate along the normal within round-off of the speed
+  // (kTangentRateFraction): its sign says nothing, and the next term (the speed across the
+  // normal against the acceleration into the part) decides whether the path enters the part.
+  // A ball sliding off a turned box's lower edge arrives there with a rate of 1e-17 of either
+  // sign; the edge took a negative one for an approach and met the ball again and again at
+  // the same instant, until the burst guard stopped it on the edge (test_boxes).
+  if (std::abs(length - rho) <= tolerance::kTouchFraction * rho &&
+      std::abs(f.c[1]) <= 2.0 * tolerance::kTangentRateFraction * length * u1.norm())
+    f.c[1] = 0.0;
   f.c[2] = u1.squaredNorm() + 2.0 * u0.dot(u2);
   f.c[3] = 2.0 * u1.dot(u2);
   f.c[4] = u2.squaredNorm();
@@ -38,6 +47,13 @@ double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon)
   // contact, predicted again at once, looped at one instant (a bin of a Galton board,
   // test_contact_time). Skipping it changes no energy.
   if (b * b <= 1e-30 * a * length2) return kNever;
+  // Touching, with a rate within round-off of the speed (kTangentRateFraction): a straight
+  // path leaves the part, as squaredLengthMinus's next term would say.
+  constexpr double kRoundOffRate2 =
+      tolerance::kTangentRateFraction * tolerance::kTangentRateFraction;
+  if (b * b <= kRoundOffRate2 * a * length2 &&
+      std::abs(std::sqrt(length2) - rho) <= tolerance::kTouchFraction * rho)
+    return kNever;
   // Most pairs miss by far: reject them on the cheap form before taking square roots, with
   // margins well above the rounding of the cheap form. (The contact comes no sooner than
   // c / (-2b).)
@@ -277,14 +293,15 @@ double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& b
   const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
   double first = kNever;
   const auto consider = [&](double t) { first = std::min(first, t); };
-  // On face k now, leaving it by a normal speed of round-off (kTangentRateFraction) while its
-  // acceleration presses it in: it leaves in truth only when it is off the face (at `end`, past
-  // an edge) before it sinks deeper than touching; otherwise the face is met at once.
-  const auto sinksIntoFace = [&](int k, double end) {
+  // On face k now with a normal speed of round-off (kTangentRateFraction), its sign says
+  // nothing: the ball meets the face at once when its acceleration presses it in and it would
+  // sink deeper than touching before it is off the face (at `end`, past an edge). A ball
+  // sliding off a turned box's lower edge is on the face by round-off: the face's plain rule
+  // met it there again and again, until the burst guard stopped it on the edge.
+  const auto meetsFaceNow = [&](int k, double end) {
     const double side = p[k] >= 0.0 ? 1.0 : -1.0;
-    if (!(side * a[k] < 0.0) ||
-        side * v[k] > tolerance::kTangentRateFraction * ball.velocity.norm())
-      return false;
+    if (std::abs(v[k]) > tolerance::kTangentRateFraction * ball.velocity.norm()) return approaching;
+    if (!(side * a[k] < 0.0)) return false;
     if (!(end < kNever)) return true;
     const double depth = h[k] + radius - side * (p[k] + (v[k] + 0.5 * a[k] * end) * end);
     return depth > tolerance::kTouchFraction * radius;
@@ -299,7 +316,7 @@ double ballBoxContactTime(const BallPath& ball, double radius, const BoxShape& b
     }
     for (int n = 0; n < inside.count; ++n) {
       const double begin = inside.items[n].begin;
-      if (begin > 0.0 || approaching || (begin == 0.0 && sinksIntoFace(k, inside.items[n].end))) {
+      if (begin > 0.0 || (begin == 0.0 && meetsFaceNow(k, inside.items[n].end))) {
         consider(begin);
         break;
       }
