@@ -393,6 +393,10 @@ double ballBallStraightContactTime(const Vec3& relativePosition, const Vec3& rel
   return straightEntry(relativePosition, relativeVelocity, radiusSum, horizon);
 }
 
+double circleExitTime(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho, double horizon) {
+  return exitTime(squaredLengthMinus(u0, u1, u2, rho), horizon);
+}
+
 double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
                             double horizon) {
   const double sign = upwards ? 1.0 : -1.0;

@@ -43,6 +43,11 @@ double ballBallStraightContactTime(const Vec3& relativePosition, const Vec3& rel
 double boundaryCrossingTime(double x0, double v, double a, double bound, bool upwards,
                             double horizon);
 
+// Time until |u0 + u1 t + u2 t^2|, within rho or at it, first passes rho going outwards: a ball
+// sliding on a cap reaches its rim (u: the centre's offset across the axis). A quartic, a
+// quadratic when u2 is zero (a level cap, or a straight sweep). 0 when at rho and moving out.
+double circleExitTime(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho, double horizon);
+
 // Time until a straight path x0 + v t leaves [lower, upper] (either may be infinite).
 inline double straightExitTime(double x0, double v, double lower, double upper) {
   if (v > 0.0) return x0 < upper ? (upper - x0) / v : 0.0;

@@ -1,13 +1,19 @@
 // EventEngine's sliding (docs/physics.md, rule 2 of "Resting contact"): a ball in lasting contact
-// with a plane, or with the crease of two, follows gravity's component along it on an exact path.
+// with a plane, a box's face or a capped cylinder's cap, or with the crease of such a surface and
+// a plane, follows gravity's component along it on an exact path, until it leaves the face's
+// edge or the cap's rim.
 
 #include "sim/event_engine.h"
 
+#include "sim/contact_time.h"
 #include "sim/response.h"
 #include "sim/tolerances.h"
 
 #include <Eigen/Geometry>  // cross products
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 
 namespace carom {
@@ -84,15 +90,15 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   struct Surface {
     Vec3 normal;
     double restitution;
-    ContactKind kind;  // a plane's, or a box face's
+    ContactKind kind;  // a plane's, a box face's or a cap's
   };
   Surface planes[2];
   std::size_t count = 0;
   for (const int k : {p.slidePlane, p.creasePlane}) {
     if (k < 0) continue;
-    const ContactKind kind =
-        k < static_cast<int>(bodies_.planes.size()) ? ContactKind::BallPlane : ContactKind::BallBox;
-    planes[count++] = {slideSurfaces_[k].plane.normal, surfaceRestitution(i, k), kind};
+    const StaticRef owner = slideSurfaces_[k].owner;
+    planes[count++] = {slideSurfaces_[k].plane.normal, restitutionWith(i, owner),
+                       contactKindOf(owner.kind)};
     noteRestitution(planes[count - 1].restitution);
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
@@ -124,6 +130,154 @@ void EventEngine::keepOnPlane(int i) {
   m.position += ((-gap + c * otherGap) / denominator) * plane.normal +
                 ((-otherGap + c * gap) / denominator) * other.normal;
   m.velocity = m.velocity.dot(creaseLine_[i]) * creaseLine_[i];
+}
+
+int EventEngine::surfaceAt(int i, StaticRef ref) const {
+  switch (ref.kind) {
+    case StaticKind::Plane:
+      return ref.index;
+    case StaticKind::Box:
+      return boxFaceAt(i, ref.index);
+    case StaticKind::Cylinder:
+      return capAt(i, ref.index);
+  }
+  return -1;
+}
+
+int EventEngine::boxFaceAt(int i, int box) const {
+  const BoxShape& shape = bodies_.boxes[box];
+  const Vec3 local = shape.toLocal(tracks_[i].motion.position);
+  const Vec3 outside = local.cwiseAbs() - shape.half;
+  int axis = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (!(outside[k] > 0.0)) continue;
+    if (axis >= 0) return -1;  // beyond two faces: an edge or a corner
+    axis = k;
+  }
+  if (axis < 0) return -1;
+  return static_cast<int>(bodies_.planes.size()) + 6 * box + 2 * axis + (local[axis] > 0.0);
+}
+
+int EventEngine::capAt(int i, int cylinder) const {
+  const CylinderShape& shape = bodies_.cylinders[cylinder];
+  const Vec3 offset = tracks_[i].motion.position - shape.point;
+  const double along = shape.axis.dot(offset);
+  // Beyond a cap with the centre within its disc; an infinite cylinder has none.
+  if (!(std::abs(along) > shape.halfLength) || !(shape.perpendicular(offset).norm() < shape.radius))
+    return -1;
+  return firstCap_ + 2 * cylinder + (along > 0.0);
+}
+
+void EventEngine::findSlideEnd(int i, const BallPath& path) {
+  const int surface = particles_[i].slidePlane;
+  const SlideSurface& s = slideSurfaces_[surface];
+  Contact& best = predictions_[i].contact;
+  const double horizon = std::min(best.time, horizon_) - now_;
+  const double t = s.owner.kind == StaticKind::Box ? faceEndTime(s, path, horizon)
+                                                   : capEndTime(s, path, horizon);
+  if (t < horizon) best = {now_ + t, EventKind::SlideEnd, surface, 0};
+}
+
+// The face's two coordinates across its plane are quadratics in time: the first to pass its
+// bound.
+double EventEngine::faceEndTime(const SlideSurface& face, const BallPath& path,
+                                double horizon) const {
+  const BoxShape& box = bodies_.boxes[face.owner.index];
+  const Vec3 x = box.toLocal(path.position);
+  const Vec3 v = box.axes.transpose() * path.velocity;
+  const Vec3 a = box.axes.transpose() * path.acceleration;
+  double first = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == face.axis) continue;
+    for (const bool upwards : {true, false})
+      first = std::min(first, boundaryCrossingTime(x[axis], v[axis], a[axis],
+                                                   upwards ? box.half[axis] : -box.half[axis],
+                                                   upwards, std::min(first, horizon)));
+  }
+  return first;
+}
+
+// The centre's offset across the axis is p + v t + a t^2 / 2 in the cap's plane: it reaches the
+// rim where its length reaches the radius.
+double EventEngine::capEndTime(const SlideSurface& cap, const BallPath& path,
+                               double horizon) const {
+  const CylinderShape& cylinder = bodies_.cylinders[cap.owner.index];
+  return circleExitTime(cylinder.perpendicular(path.position - cylinder.point),
+                        cylinder.perpendicular(path.velocity),
+                        0.5 * cylinder.perpendicular(path.acceleration), cylinder.radius, horizon);
+}
+
+void EventEngine::endSlide(int i, RunStats& stats, std::vector<CollisionRecord>* log) {
+  // Past the edge or rim the ball flies, and meets the shape, if at all, as a contact; one too
+  // slow to clear the rounding there meets it at once, with no face to slide on.
+  const SlideSurface& surface = slideSurfaces_[particles_[i].slidePlane];
+  moveTo(i, now_);
+  particles_[i].slidePlane = particles_[i].creasePlane = -1;
+  changed(i);
+  const bool bends =
+      surface.owner.kind == StaticKind::Box ? bendsIntoEdge(i, surface) : bendsIntoRim(i, surface);
+  if (bends) {
+    collideWithStatic(i, surface.owner, -1, stats, log);
+    return;
+  }
+  if (surface.owner.kind == StaticKind::Cylinder) passRim(i, surface);
+  predict(i);
+}
+
+// The rim is found at the lower end of its root's bracket, so the centre may still be over the
+// cap by a few ulps: a flight from there met the cap at once (touching, pressed) and hopped at
+// the slide speed, 3.5e-6 m off the parabola 0.25 s later. It is moved across the rim instead,
+// along the cap: a move of round-off, as keepOnPlane's.
+void EventEngine::passRim(int i, const SlideSurface& cap) {
+  const CylinderShape& cylinder = bodies_.cylinders[cap.owner.index];
+  Vec3& position = tracks_[i].motion.position;
+  double step = std::nextafter(cylinder.radius, 2.0 * cylinder.radius) - cylinder.radius;
+  for (int tries = 0; tries < 8; ++tries, step *= 2.0) {
+    const Vec3 across = cylinder.perpendicular(position - cylinder.point);
+    const double distance = across.norm();
+    if (distance > cylinder.radius || !(distance > 0.0)) return;
+    position += (cylinder.radius - distance + step) / distance * across;
+  }
+}
+
+// Across the edge (or rim) the centre is at u from the nearest point of the edge line (or rim
+// circle), at the rounding's radius, and |u|^2 changes as 2 u.v t + (|v|^2 + u.a) t^2, with v and
+// a across the edge: along it they do not change the distance. The slide keeps u.v at
+// round-off, so the second term decides: gravity into the face bends the path into the rounding
+// faster than the speed across the edge carries it out (|v|^2 < r g_n), as over the top of a peg.
+bool EventEngine::bendsIntoEdge(int i, const SlideSurface& face) const {
+  const BoxShape& shape = bodies_.boxes[face.owner.index];
+  const Motion& m = tracks_[i].motion;
+  const Vec3 local = shape.toLocal(m.position);
+  // The axis it leaves the face across is the one it is nearest the end of (the other a
+  // corner's); along the third the edge runs.
+  const int faceAxis = face.axis, j = (faceAxis + 1) % 3, k = (faceAxis + 2) % 3;
+  const int out = std::abs(local[j]) * shape.half[k] >= std::abs(local[k]) * shape.half[j] ? j : k;
+  Vec3 u = Vec3::Zero();
+  for (const int axis : {faceAxis, out})
+    u[axis] = local[axis] - std::copysign(shape.half[axis], local[axis]);
+  Vec3 v = shape.axes.transpose() * m.velocity;
+  Vec3 a = shape.axes.transpose() * accelerationOf(i);
+  const int along = 3 - faceAxis - out;
+  v[along] = a[along] = 0.0;
+  return v.squaredNorm() + u.dot(a) < 0.0;
+}
+
+// The same in the plane of the axis and the radial direction through the centre. The rim's
+// curvature adds uOut (speed along the rim)^2 / R, nothing where the slide ends: there uOut is
+// round-off.
+bool EventEngine::bendsIntoRim(int i, const SlideSurface& cap) const {
+  const CylinderShape& cylinder = bodies_.cylinders[cap.owner.index];
+  const Motion& m = tracks_[i].motion;
+  const Vec3& a = accelerationOf(i);
+  const Vec3& n = cap.plane.normal;
+  const Vec3 offset = m.position - cylinder.point;
+  const Vec3 across = cylinder.perpendicular(offset);
+  const double distance = across.norm();
+  const Vec3 out = across / distance;
+  const double uOut = distance - cylinder.radius, uUp = n.dot(offset) - cylinder.halfLength;
+  const double vOut = out.dot(m.velocity), vUp = n.dot(m.velocity);
+  return vOut * vOut + vUp * vUp + uOut * out.dot(a) + uUp * n.dot(a) < 0.0;
 }
 
 }  // namespace carom

@@ -65,14 +65,25 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
     slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
-  for (const PlaneShape& plane : bodies.planes) slideSurfaces_.push_back({plane, -1, -1});
+  for (int k = 0; k < static_cast<int>(bodies.planes.size()); ++k)
+    slideSurfaces_.push_back({bodies.planes[k], {StaticKind::Plane, k}});
   for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k) {
     const BoxShape& box = bodies.boxes[k];
     for (int axis = 0; axis < 3; ++axis)
       for (const double side : {-1.0, 1.0}) {
         const Vec3 normal = side * box.axes.col(axis);
-        slideSurfaces_.push_back({{normal, normal.dot(box.center) + box.half[axis]}, k, axis});
+        slideSurfaces_.push_back(
+            {{normal, normal.dot(box.center) + box.half[axis]}, {StaticKind::Box, k}, axis});
       }
+  }
+  firstCap_ = static_cast<int>(slideSurfaces_.size());
+  for (int k = 0; k < static_cast<int>(bodies.cylinders.size()); ++k) {
+    const CylinderShape& cylinder = bodies.cylinders[k];
+    for (const double side : {-1.0, 1.0}) {
+      const Vec3 normal = side * cylinder.axis;
+      slideSurfaces_.push_back(
+          {{normal, normal.dot(cylinder.point) + cylinder.halfLength}, {StaticKind::Cylinder, k}});
+    }
   }
   for (const SlideSurface& surface : slideSurfaces_) {
     const Vec3& n = surface.plane.normal;
@@ -244,45 +255,8 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
     }
     if (t < horizon) best = {now_ + t, kind, ref.index, 0};
   }
-  if (p.slidePlane >= 0 && slideSurfaces_[p.slidePlane].box >= 0) findSlideEnd(i, path);
-}
-
-void EventEngine::findSlideEnd(int i, const BallPath& path) {
-  const SlideSurface& surface = slideSurfaces_[particles_[i].slidePlane];
-  const BoxShape& box = bodies_.boxes[surface.box];
-  const Vec3 x = box.toLocal(path.position);
-  const Vec3 v = box.axes.transpose() * path.velocity;
-  const Vec3 a = box.axes.transpose() * path.acceleration;
-  Contact& best = predictions_[i].contact;
-  for (int axis = 0; axis < 3; ++axis) {
-    if (axis == surface.axis) continue;
-    for (const bool upwards : {true, false}) {
-      const double horizon = std::min(best.time, horizon_) - now_;
-      const double t = boundaryCrossingTime(
-          x[axis], v[axis], a[axis], upwards ? box.half[axis] : -box.half[axis], upwards, horizon);
-      if (t < horizon) best = {now_ + t, EventKind::SlideEnd, surface.box, 0};
-    }
-  }
-}
-
-int EventEngine::boxFaceAt(int i, int box) const {
-  const BoxShape& shape = bodies_.boxes[box];
-  const Vec3 local = shape.toLocal(tracks_[i].motion.position);
-  const Vec3 outside = local.cwiseAbs() - shape.half;
-  int axis = -1;
-  for (int k = 0; k < 3; ++k) {
-    if (!(outside[k] > 0.0)) continue;
-    if (axis >= 0) return -1;  // beyond two faces: an edge or a corner
-    axis = k;
-  }
-  if (axis < 0) return -1;
-  return static_cast<int>(bodies_.planes.size()) + 6 * box + 2 * axis + (local[axis] > 0.0);
-}
-
-double EventEngine::surfaceRestitution(int i, int surface) const {
-  const SlideSurface& s = slideSurfaces_[surface];
-  return s.box < 0 ? staticContact(i, {StaticKind::Plane, surface}).restitution
-                   : std::min(bodies_.restitution[i], bodies_.boxRestitution[s.box]);
+  if (p.slidePlane >= 0 && slideSurfaces_[p.slidePlane].owner.kind != StaticKind::Plane)
+    findSlideEnd(i, path);
 }
 
 template <typename ForEachBall>
@@ -427,27 +401,15 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::None:
       schedule(i);
       return;
-    case EventKind::SlideEnd: {
-      // Past the face's edge the ball flies, and meets the edge, if at all, as a contact; one
-      // too slow to clear the edge's rounding meets it at once, with no face to slide on.
-      const int faceAxis = slideSurfaces_[particles_[i].slidePlane].axis;
-      moveTo(i, now_);
-      particles_[i].slidePlane = particles_[i].creasePlane = -1;
-      changed(i);
-      if (bendsIntoEdge(i, event.other, faceAxis))
-        collideWithStatic(i, {StaticKind::Box, event.other}, -1, stats, log);
-      else
-        predict(i);
+    case EventKind::SlideEnd:
+      endSlide(i, stats, log);
       return;
-    }
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
       moveTo(i, now_);
-      const int face = event.kind == EventKind::Plane ? event.other
-                       : event.kind == EventKind::Box ? boxFaceAt(i, event.other)
-                                                      : -1;
-      collideWithStatic(i, {staticKindOf(event.kind), event.other}, face, stats, log);
+      const StaticRef ref{staticKindOf(event.kind), event.other};
+      collideWithStatic(i, ref, surfaceAt(i, ref), stats, log);
       return;
     }
     case EventKind::Ball: {
@@ -482,28 +444,6 @@ void EventEngine::collideWithStatic(int i, StaticRef ref, int face, RunStats& st
   if (log) log->push_back({now_, kind, i, ref.index, m.position - r * n, approach});
   closeBooks(i, 0.0);
   if (!particles_[i].resting) predict(i);
-}
-
-bool EventEngine::bendsIntoEdge(int i, int box, int faceAxis) const {
-  // Across the edge the centre is at u from the edge line, at the rounding's radius, and |u|^2
-  // changes as 2 u.v t + (|v|^2 + u.a) t^2. The slide keeps u.v at round-off, so the second
-  // term decides: gravity into the face bends the path into the rounding faster than the speed
-  // across the edge carries it out (|v|^2 < r g_n), as over the top of a peg.
-  const BoxShape& shape = bodies_.boxes[box];
-  const Motion& m = tracks_[i].motion;
-  const Vec3 local = shape.toLocal(m.position);
-  // The axis it leaves the face across is the one it is nearest the end of (the other a
-  // corner's); along the third the edge runs.
-  const int j = (faceAxis + 1) % 3, k = (faceAxis + 2) % 3;
-  const int out = std::abs(local[j]) * shape.half[k] >= std::abs(local[k]) * shape.half[j] ? j : k;
-  Vec3 u = Vec3::Zero();
-  for (const int axis : {faceAxis, out})
-    u[axis] = local[axis] - std::copysign(shape.half[axis], local[axis]);
-  Vec3 v = shape.axes.transpose() * m.velocity;
-  Vec3 a = shape.axes.transpose() * accelerationOf(i);
-  const int along = 3 - faceAxis - out;
-  v[along] = a[along] = 0.0;
-  return v.squaredNorm() + u.dot(a) < 0.0;
 }
 
 void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log) {
@@ -630,17 +570,22 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
   const double r = bodies_.radius[i];
   if (ref.kind == StaticKind::Box) {
     const BoxShape::Contact contact = bodies_.boxes[ref.index].contact(position, r);
-    return {contact.normal, contact.gap,
-            std::min(bodies_.restitution[i], bodies_.boxRestitution[ref.index])};
+    return {contact.normal, contact.gap, restitutionWith(i, ref)};
   }
   if (ref.kind == StaticKind::Cylinder) {
     const CylinderShape::Contact contact = bodies_.cylinders[ref.index].contact(position, r);
-    return {contact.normal, contact.gap,
-            std::min(bodies_.restitution[i], bodies_.cylinderRestitution[ref.index])};
+    return {contact.normal, contact.gap, restitutionWith(i, ref)};
   }
   const PlaneShape& plane = bodies_.planes[ref.index];
-  return {plane.normal, plane.gap(position, r),
-          std::min(bodies_.restitution[i], bodies_.planeRestitution[ref.index])};
+  return {plane.normal, plane.gap(position, r), restitutionWith(i, ref)};
+}
+
+double EventEngine::restitutionWith(int i, StaticRef ref) const {
+  const std::vector<double>& shapes = ref.kind == StaticKind::Box ? bodies_.boxRestitution
+                                      : ref.kind == StaticKind::Cylinder
+                                          ? bodies_.cylinderRestitution
+                                          : bodies_.planeRestitution;
+  return std::min(bodies_.restitution[i], shapes[ref.index]);
 }
 
 // A ball touching several static shapes at once (the bottom of a narrow wedge) leaves them all

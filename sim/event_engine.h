@@ -53,7 +53,7 @@ class EventEngine {
   void setVelocities(const std::vector<Vec3>& velocities);
 
  private:
-  // SlideEnd: a ball sliding on a box's face reaches the face's edge.
+  // SlideEnd: a ball sliding on a box's face or a capped cylinder's cap reaches its edge or rim.
   enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box, SlideEnd };
   // What a neighbour search reads of every ball, in one cache line.
   struct alignas(64) Track {
@@ -91,6 +91,14 @@ class EventEngine {
   struct StaticRef {
     StaticKind kind;
     int index;
+  };
+  // What a ball may slide on: the planes (same indices), then the six faces of each box, by
+  // box, axis and side, then the two caps of each cylinder, by cylinder and side (an infinite
+  // one's are never used).
+  struct SlideSurface {
+    PlaneShape plane;  // a cap's normal tells which cap it is
+    StaticRef owner;   // the plane itself, or the box or cylinder the face or cap belongs to
+    int axis = -1;     // a box face's: the box's axis across it
   };
 
   // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
@@ -135,12 +143,9 @@ class EventEngine {
   // it must be told.
   void warnNeighbours(int i);
   void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
-  // A contact with a static shape now; `face` is the plane or box face it may slide on, or -1.
+  // A contact with a static shape now; `face` is the slide surface it may slide on, or -1.
   void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
                          std::vector<CollisionRecord>* log);
-  // Whether ball i, at the end of a slide on `box`'s face across `faceAxis`, would fly into the
-  // rounding of the face's edge at once.
-  bool bendsIntoEdge(int i, int box, int faceAxis) const;
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
   // n pointing to the ball.
@@ -164,21 +169,35 @@ class EventEngine {
   void dropPlanesLeft(int i);
   // Whether static shape `ref` is, or holds, slide surface `surface`.
   bool holdsSurface(StaticRef ref, int surface) const {
-    const SlideSurface& s = slideSurfaces_[surface];
-    return s.box < 0 ? ref.kind == StaticKind::Plane && ref.index == surface
-                     : ref.kind == StaticKind::Box && ref.index == s.box;
+    const StaticRef owner = slideSurfaces_[surface].owner;
+    return ref.kind == owner.kind && ref.index == owner.index;
   }
   // Whether ball p slides along `ref` (and so never into it).
   bool slidesAgainst(const Particle& p, StaticRef ref) const {
     return (p.slidePlane >= 0 && holdsSurface(ref, p.slidePlane)) ||
            (p.creasePlane >= 0 && holdsSurface(ref, p.creasePlane));
   }
-  // The slide surface of the box face that ball i meets at a contact with box `box`, or -1 when
-  // it meets an edge or a corner.
+  // The slide surface that ball i meets at a contact with `ref` now: the plane, the box face
+  // (away from its edges and corners) or the cap (its centre within the disc); -1 for any other
+  // part.
+  int surfaceAt(int i, StaticRef ref) const;
   int boxFaceAt(int i, int box) const;
-  double surfaceRestitution(int i, int surface) const;
-  // When ball i, sliding on a box's face, reaches the face's edge.
+  int capAt(int i, int cylinder) const;
+  // The contact's restitution of ball i with a static shape.
+  double restitutionWith(int i, StaticRef ref) const;
+  // When ball i, sliding on a box's face or a cap, reaches the face's edge or the cap's rim.
   void findSlideEnd(int i, const BallPath& path);
+  double faceEndTime(const SlideSurface& face, const BallPath& path, double horizon) const;
+  double capEndTime(const SlideSurface& cap, const BallPath& path, double horizon) const;
+  // The slide's end: past the edge or rim the ball flies, or meets the shape at once when it
+  // would fly into the rounding there (bendsIntoEdge, bendsIntoRim).
+  void endSlide(int i, RunStats& stats, std::vector<CollisionRecord>* log);
+  // Whether ball i, at the end of a slide on a box's face or a cap, would fly into the rounding
+  // of the face's edge or the cap's rim at once.
+  bool bendsIntoEdge(int i, const SlideSurface& face) const;
+  bool bendsIntoRim(int i, const SlideSurface& cap) const;
+  // Puts ball i, at the end of a slide on `cap`, past the rim.
+  void passRim(int i, const SlideSurface& cap);
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);
@@ -318,14 +337,8 @@ class EventEngine {
   // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
-  // What a ball may slide on: the planes (same indices), then the six faces of each box, by
-  // box, axis and side.
-  struct SlideSurface {
-    PlaneShape plane;
-    int box = -1;   // or -1 for a plane
-    int axis = -1;  // of the box, across the face
-  };
   std::vector<SlideSurface> slideSurfaces_;
+  int firstCap_ = 0;                      // the first cap's index in slideSurfaces_
   std::vector<Vec3> slideAcceleration_;   // path acceleration along each surface
   std::vector<Vec3> slideGravity_;        // gravity along each surface
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
