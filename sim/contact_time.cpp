@@ -225,9 +225,22 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
   const bool approaching = rate < 0.0 || (rate == 0.0 && now.normal.dot(ball.acceleration) < 0.0);
   const auto across = [](const Vec3& x) { return Vec3(x.x(), x.y(), 0.0); };
   double first = kNever;
+  // On a cap now with a normal speed of round-off (kTangentRateFraction), as on a box's face:
+  // the ball meets the cap at once when gravity presses it in and it would sink deeper than
+  // touching before its centre leaves the disc (`leave`, where it passes the rim).
+  const auto meetsCapNow = [&](const Rebased& u, double alongEnd) {
+    if (std::abs(v.z()) > tolerance::kTangentRateFraction * ball.velocity.norm())
+      return approaching;
+    const double side = p.z() >= 0.0 ? 1.0 : -1.0;
+    if (!(side * a.z() < 0.0)) return false;
+    const double leave = exitTime(squaredLengthMinus(u.u0, u.u1, u.u2, R), alongEnd);
+    if (!(leave < kNever)) return true;
+    const double depth = H + radius - side * (p.z() + (v.z() + a.z() * leave) * leave);
+    return depth > tolerance::kTouchFraction * radius;
+  };
   // The side grown by the radius within the length, and the caps grown by the radius within the
   // radius: a disc condition across the axis while the path is within a slab along it.
-  const auto slabPart = [&](double halfThickness, double rho) {
+  const auto slabPart = [&](double halfThickness, double rho, bool cap) {
     const Intervals along = withinSlab(p.z(), v.z(), 2.0 * a.z(), halfThickness, kNever);
     for (int n = 0; n < along.count; ++n) {
       const double t0 = along.items[n].begin;
@@ -236,16 +249,20 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
       const double end = std::min(along.items[n].end, horizon) - t0;
       // Entering the slab inside the disc is entering through the slab's face.
       const bool inside = u.u0.norm() <= rho;
-      const double t = t0 > 0.0 ? (inside ? 0.0 : sphereEntry(u.u0, u.u1, u.u2, rho, end))
-                                : reentry(u.u0, u.u1, u.u2, rho, end, inside, approaching);
+      double t;
+      if (t0 > 0.0)
+        t = inside ? 0.0 : sphereEntry(u.u0, u.u1, u.u2, rho, end);
+      else
+        t = reentry(u.u0, u.u1, u.u2, rho, end, inside,
+                    inside && (cap ? meetsCapNow(u, along.items[n].end - t0) : approaching));
       if (t < kNever) {
         first = std::min(first, t0 + t);
         return;
       }
     }
   };
-  slabPart(H, R + radius);
-  slabPart(H + radius, R);
+  slabPart(H, R + radius, false);
+  slabPart(H + radius, R, true);
   // The rims: tori around the cap circles.
   for (const double side : {-1.0, 1.0}) {
     const Vec3 q0 = p - Vec3(0.0, 0.0, side * H);

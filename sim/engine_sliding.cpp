@@ -220,24 +220,7 @@ void EventEngine::endSlide(int i, RunStats& stats, std::vector<CollisionRecord>*
     collideWithStatic(i, surface.owner, -1, stats, log);
     return;
   }
-  if (surface.owner.kind == StaticKind::Cylinder) passRim(i, surface);
   predict(i);
-}
-
-// The rim is found at the lower end of its root's bracket, so the centre may still be over the
-// cap by a few ulps: a flight from there met the cap at once (touching, pressed) and hopped at
-// the slide speed, 3.5e-6 m off the parabola 0.25 s later. It is moved across the rim instead,
-// along the cap: a move of round-off, as keepOnPlane's.
-void EventEngine::passRim(int i, const SlideSurface& cap) {
-  const CylinderShape& cylinder = bodies_.cylinders[cap.owner.index];
-  Vec3& position = tracks_[i].motion.position;
-  double step = std::nextafter(cylinder.radius, 2.0 * cylinder.radius) - cylinder.radius;
-  for (int tries = 0; tries < 8; ++tries, step *= 2.0) {
-    const Vec3 across = cylinder.perpendicular(position - cylinder.point);
-    const double distance = across.norm();
-    if (distance > cylinder.radius || !(distance > 0.0)) return;
-    position += (cylinder.radius - distance + step) / distance * across;
-  }
 }
 
 // Across the edge (or rim) the centre is at u from the nearest point of the edge line (or rim

@@ -196,8 +196,6 @@ class EventEngine {
   // of the face's edge or the cap's rim at once.
   bool bendsIntoEdge(int i, const SlideSurface& face) const;
   bool bendsIntoRim(int i, const SlideSurface& cap) const;
-  // Puts ball i, at the end of a slide on `cap`, past the rim.
-  void passRim(int i, const SlideSurface& cap);
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);

@@ -11,15 +11,15 @@ namespace carom::tolerance {
 inline constexpr double kTouchFraction = 1e-9;
 
 // A ball touching a part whose speed along the contact normal is within this fraction of its
-// speed moves along the part by round-off, and the sign of that speed says nothing. On a box's
-// flat face it meets the face at once when its acceleration presses it in and it would sink
-// deeper than touching before it passes the face's edge; on a rounded part (an edge, a corner,
-// a cylinder's side) the next term of the gap decides: its speed across the normal against the
-// acceleration into the part. A response along a line of centres parallel to a face (two balls
-// lying on a box's slope) leaves rates of up to 3e-14 of the speed, which the face took for a
-// departure: the pressed ball sank into the box, a radius deep in 2 s (test_rest, test_boxes);
-// a ball sliding off a turned box's lower edge arrives with 1e-17, which the edge took for an
-// approach again and again, until the burst guard stopped the ball on the edge (test_boxes).
+// speed moves along the part by round-off, and the sign of that speed says nothing. On a flat
+// face (a box's, a capped cylinder's cap) it meets the face at once when its acceleration presses
+// it in and it would sink deeper than touching before it passes the face's edge; on a rounded part
+// (an edge, a corner, a cylinder's side) the next term of the gap decides: its speed across the
+// normal against the acceleration into the part. A response along a line of centres parallel to a
+// face (two balls lying on a box's slope) leaves rates of up to 3e-14 of the speed, which the face
+// took for a departure: the pressed ball sank into the box, a radius deep in 2 s (test_rest,
+// test_boxes); a ball sliding off a turned box's lower edge arrives with 1e-17, which the edge took
+// for an approach again and again, until the burst guard stopped the ball on the edge (test_boxes).
 inline constexpr double kTangentRateFraction = 1e-12;
 
 // A bounce lower than this fraction of the ball's radius is not resolved as a bounce: the
