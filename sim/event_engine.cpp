@@ -348,6 +348,8 @@ void EventEngine::findBallContacts(int i, const BallPath& path, ForEachBall&& fo
   };
   forEachBall([&](int k) {
     __builtin_prefetch(&tracks_[k]);
+    // A curved path reads the ball's flags too (accelerationOf).
+    if (!straightPaths_) __builtin_prefetch(&particles_[k].slidePlane);
     batch[count++] = k;
     if (count == kBatch) flush();
   });
