@@ -127,65 +127,115 @@ void EventEngine::buildStaticLists() {
   staticStart_.assign(cells + 1, 0);
   statics_.clear();
   sharedStatics_ = false;
+  const double reach = bodies_.maxRadius * (1.0 + 1e-9);
+  // What a cell's test needs of it.
+  struct CellBox {
+    Vec3 lo, hi, centre;
+    double sphere;  // its bounding sphere grown by the reach
+    bool border;
+  };
+  const auto cellBox = [&](int cell) {
+    const CellGrid::Coords c = grid_.coords(cell);
+    CellBox box;
+    box.border = grid_.isBorder(c);
+    for (int a = 0; a < 3; ++a) {
+      box.lo[a] = grid_.lowerFace(a, c[a]);
+      box.hi[a] = grid_.upperFace(a, c[a]);
+    }
+    box.centre = 0.5 * (box.lo + box.hi);
+    box.sphere = 0.5 * (box.hi - box.lo).norm() + reach;
+    return box;
+  };
+  const auto planeNear = [&](const PlaneShape& plane, const CellBox& box) {
+    // Nearest corner of the cell to the surface (or behind it) decides.
+    if (box.border) return true;
+    double nearest = -plane.offset;
+    for (int a = 0; a < 3; ++a)
+      nearest += plane.normal[a] * (plane.normal[a] > 0 ? box.lo[a] : box.hi[a]);
+    return nearest <= reach;
+  };
+  // A finite shape only where it is: its bounding box grown by the reach meets the cell (a
+  // border cell's infinite side included), and for a cell inside the grid its bounding sphere.
+  const auto finiteNear = [&](const Vec3& shapeCentre, const Vec3& shapeReach, const CellBox& box,
+                              auto gapToCentre) {
+    const Vec3 low = shapeCentre - shapeReach - Vec3::Constant(reach);
+    const Vec3 high = shapeCentre + shapeReach + Vec3::Constant(reach);
+    if ((high.array() < box.lo.array()).any() || (low.array() > box.hi.array()).any()) return false;
+    return box.border || gapToCentre(box.centre) <= box.sphere;
+  };
+  // Round shapes are near when they come within the cell's bounding sphere; border cells reach
+  // out to infinity and see every infinite cylinder.
+  const auto cylinderNear = [&](const CylinderShape& cylinder, const CellBox& box) {
+    const auto gap = [&](const Vec3& at) { return cylinder.contact(at, 0.0).gap; };
+    return cylinder.capped() ? finiteNear(cylinder.point, cylinder.reach(), box, gap)
+                             : box.border || gap(box.centre) <= box.sphere;
+  };
+  const auto boxNear = [&](const BoxShape& shape, const CellBox& box) {
+    return finiteNear(shape.center, shape.reach(), box,
+                      [&](const Vec3& at) { return shape.contact(at, 0.0).gap; });
+  };
+  // Every cell whose test could pass: all of them for unbounded shapes; for a finite one only
+  // those its grown bounding box covers, give or take a cell for rounding, so that a board of
+  // millions of cells and hundreds of pegs is not every cell against every peg.
+  const auto forEachCandidate = [&](const Vec3* centre, const Vec3& shapeReach, auto&& f) {
+    if (!centre) {
+      for (int cell = 0; cell < cells; ++cell) f(cell);
+      return;
+    }
+    const Vec3 grown = shapeReach + Vec3::Constant(reach);
+    CellGrid::Coords from = grid_.coordsOf(*centre - grown), to = grid_.coordsOf(*centre + grown);
+    for (int a = 0; a < 3; ++a) {
+      from[a] = std::max(from[a] - 1, 0);
+      to[a] = std::min(to[a] + 1, grid_.counts()[a] - 1);
+    }
+    for (int z = from[2]; z <= to[2]; ++z)
+      for (int y = from[1]; y <= to[1]; ++y)
+        for (int x = from[0]; x <= to[0]; ++x) f(grid_.index({x, y, z}));
+  };
+  // Visits every (cell, shape) pair that is near, shape by shape in the lists' order (planes,
+  // cylinders, boxes), so each cell's list comes out in that order.
+  const auto forEachNearPair = [&](auto&& f) {
+    for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
+      forEachCandidate(nullptr, Vec3::Zero(), [&](int cell) {
+        if (planeNear(bodies_.planes[k], cellBox(cell))) f(cell, StaticRef{StaticKind::Plane, k});
+      });
+    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
+      const CylinderShape& cylinder = bodies_.cylinders[k];
+      const Vec3* centre = cylinder.capped() ? &cylinder.point : nullptr;
+      forEachCandidate(centre, cylinder.capped() ? cylinder.reach() : Vec3::Zero(), [&](int cell) {
+        if (cylinderNear(cylinder, cellBox(cell))) f(cell, StaticRef{StaticKind::Cylinder, k});
+      });
+    }
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
+      const BoxShape& shape = bodies_.boxes[k];
+      forEachCandidate(&shape.center, shape.reach(), [&](int cell) {
+        if (boxNear(shape, cellBox(cell))) f(cell, StaticRef{StaticKind::Box, k});
+      });
+    }
+  };
+  std::size_t total = 0;
+  forEachNearPair([&](int cell, StaticRef) {
+    ++staticStart_[cell + 1];
+    ++total;
+  });
   // Many shapes in many cells would take more memory than the lists save time: then every cell
   // shares one list of all shapes.
   const std::size_t budget = 16 * (particles_.size() + 1024) + 4 * std::size_t(cells);
-  const double reach = bodies_.maxRadius * (1.0 + 1e-9);
-  for (int cell = 0; cell < cells; ++cell) {
-    staticStart_[cell] = static_cast<int>(statics_.size());
-    const CellGrid::Coords c = grid_.coords(cell);
-    const bool border = grid_.isBorder(c);
-    Vec3 lo, hi;
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = grid_.lowerFace(a, c[a]);
-      hi[a] = grid_.upperFace(a, c[a]);
-    }
-    for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k) {
-      const PlaneShape& plane = bodies_.planes[k];
-      // Nearest corner of the cell to the surface (or behind it) decides.
-      double nearest = -plane.offset;
-      if (!border)
-        for (int a = 0; a < 3; ++a)
-          nearest += plane.normal[a] * (plane.normal[a] > 0 ? lo[a] : hi[a]);
-      if (border || nearest <= reach) statics_.push_back({StaticKind::Plane, k});
-    }
-    // A round shape is near when it comes within the cell's bounding sphere (grown by the
-    // reach); border cells reach out to infinity and see every infinite cylinder.
-    const Vec3 centre = 0.5 * (lo + hi);
-    const double sphere = 0.5 * (hi - lo).norm() + reach;
-    // A finite shape only where it is: its bounding box grown by the reach meets the cell (a
-    // border cell's infinite side included), and for a cell inside the grid its bounding sphere.
-    const auto near = [&](const Vec3& shapeCentre, const Vec3& shapeReach, auto gapToCentre) {
-      const Vec3 low = shapeCentre - shapeReach - Vec3::Constant(reach);
-      const Vec3 high = shapeCentre + shapeReach + Vec3::Constant(reach);
-      if ((high.array() < lo.array()).any() || (low.array() > hi.array()).any()) return false;
-      return border || gapToCentre() <= sphere;
-    };
-    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
-      const CylinderShape& cylinder = bodies_.cylinders[k];
-      const auto gap = [&] { return cylinder.contact(centre, 0.0).gap; };
-      if (cylinder.capped() ? near(cylinder.point, cylinder.reach(), gap)
-                            : border || gap() <= sphere)
-        statics_.push_back({StaticKind::Cylinder, k});
-    }
-    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
-      const BoxShape& box = bodies_.boxes[k];
-      if (near(box.center, box.reach(), [&] { return box.contact(centre, 0.0).gap; }))
-        statics_.push_back({StaticKind::Box, k});
-    }
-    if (statics_.size() > budget) {
-      statics_.clear();
-      for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
-        statics_.push_back({StaticKind::Plane, k});
-      for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
-        statics_.push_back({StaticKind::Cylinder, k});
-      for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
-        statics_.push_back({StaticKind::Box, k});
-      sharedStatics_ = true;
-      return;
-    }
+  if (total > budget) {
+    staticStart_.assign(cells + 1, 0);
+    for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
+      statics_.push_back({StaticKind::Plane, k});
+    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
+      statics_.push_back({StaticKind::Cylinder, k});
+    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
+      statics_.push_back({StaticKind::Box, k});
+    sharedStatics_ = true;
+    return;
   }
-  staticStart_[cells] = static_cast<int>(statics_.size());
+  for (int cell = 0; cell < cells; ++cell) staticStart_[cell + 1] += staticStart_[cell];
+  statics_.resize(total);
+  std::vector<int> cursor(staticStart_.begin(), staticStart_.end() - 1);
+  forEachNearPair([&](int cell, StaticRef ref) { statics_[cursor[cell]++] = ref; });
 }
 
 void EventEngine::noteStatics(int i) {
@@ -272,6 +322,8 @@ void EventEngine::findBallContacts(int i, const BallPath& path, ForEachBall&& fo
   };
   forEachBall([&](int k) {
     __builtin_prefetch(&tracks_[k]);
+    // A curved path reads the ball's flags too (accelerationOf).
+    if (!straightPaths_) __builtin_prefetch(&particles_[k].slidePlane);
     batch[count++] = k;
     if (count == kBatch) flush();
   });

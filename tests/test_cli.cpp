@@ -559,20 +559,24 @@ class TestCli : public QObject {
     QList<QByteArray> rows = nonEmptyLines(run.out);
     QVERIFY(!rows.isEmpty());
     const QByteArray header = rows.takeFirst();
-    for (const char* column : {"method", "balls", "scene", "collisions", "energy drift", "wall s"})
+    for (const char* column : {"method", "balls", "scene", "collisions", "Mevents/s", "crossings",
+                               "energy drift", "wall s"})
       QVERIFY2(header.contains(column), header.constData());
 
     QSet<QByteArray> methods, scenes;
     for (const QByteArray& row : rows) {
       const QList<QByteArray> cells = row.simplified().split(' ');
-      QVERIFY2(cells.size() == 9, row.constData());
+      QVERIFY2(cells.size() == 11, row.constData());
       methods << cells[0];
       bool ok = false;
       QVERIFY2(cells[1].toInt(&ok) > 0 && ok, row.constData());
       scenes << cells[2];
       // A collisions count, and a drift only for the elastic scenes.
       QVERIFY2(cells[4].toDouble(&ok) > 0 && ok, row.constData());
-      QVERIFY2((cells[7] == "-") == (cells[2] == "galton"), row.constData());
+      QVERIFY2((cells[9] == "-") == (cells[2] == "galton"), row.constData());
+      // Events and the crossings' share of them only for `exact`, whose events they are.
+      QVERIFY2((cells[6] == "-") == (cells[0] != "exact"), row.constData());
+      QVERIFY2((cells[7] == "-") == (cells[0] != "exact"), row.constData());
     }
     QCOMPARE(scenes, (QSet<QByteArray>{"gas", "gravity-gas", "galton"}));
     QCOMPARE(methods, (QSet<QByteArray>{"exact", "swept", "discrete"}));
