@@ -2,6 +2,7 @@
 // Finding pairs of balls that may touch, when all of them are looked at at once (discrete steps,
 // measurements, validation): a grid rebuilt from scratch by counting sort, O(N).
 
+#include "sim/memory_bytes.h"
 #include "sim/scene.h"
 
 #include <algorithm>
@@ -45,6 +46,11 @@ class BallBins {
           for (int s = start_[cell]; s < start_[cell + 1]; ++s)
             if (order_[s] != i) f(order_[s]);
         }
+  }
+
+  std::size_t memoryBytes() const {
+    return carom::memoryBytes(cellOfBall_) + carom::memoryBytes(start_) +
+           carom::memoryBytes(order_);
   }
 
  private:

@@ -4,6 +4,7 @@
 // The outermost layer of cells reaches to infinity, so balls that leave the region are still
 // filed (in border cells) and nothing is ever lost.
 
+#include "sim/memory_bytes.h"
 #include "sim/scene.h"
 
 #include <array>
@@ -75,6 +76,10 @@ class CellMembership {
   void insert(int ball, int cell);
   void remove(int ball);
   int cellOf(int ball) const { return cell_[ball]; }
+  std::size_t memoryBytes() const {
+    return carom::memoryBytes(head_) + carom::memoryBytes(next_) + carom::memoryBytes(prev_) +
+           carom::memoryBytes(cell_);
+  }
   template <typename F>
   void forEachIn(int cell, F&& f) const {
     for (int b = head_[cell]; b >= 0; b = next_[b]) f(b);

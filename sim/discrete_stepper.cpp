@@ -87,7 +87,40 @@ class DiscreteStepper final : public Stepper {
     std::vector<BallState> state(positions_.size());
     for (std::size_t i = 0; i < state.size(); ++i)
       state[i] = {positions_[i], velocities_[i] + pendingKick_ * settings_.gravity, false};
+    if (held_ >= 0) state[held_].velocity = velocities_[held_];
     return state;
+  }
+  std::unique_ptr<Stepper> clone() const override {
+    return std::make_unique<DiscreteStepper>(*this);
+  }
+  std::size_t memoryBytes() const override {
+    return sizeof(*this) + carom::memoryBytes(overlaps_) + carom::memoryBytes(energy_) +
+           carom::memoryBytes(energyExcess_) + carom::memoryBytes(positions_) +
+           carom::memoryBytes(velocities_) + carom::memoryBytes(pushes_) +
+           carom::memoryBytes(touched_) + carom::memoryBytes(pushedTwice_) +
+           carom::memoryBytes(lookedAt_) + bins_.memoryBytes();
+  }
+  // The held ball's velocity is kept without the kick owed to the others.
+  void hold(int ball, const Vec3& velocity, RunStats&) override {
+    if (held_ >= 0 && held_ != ball) release(Vec3::Zero());
+    held_ = ball;
+    velocities_[ball] = velocity;
+  }
+  void release(const Vec3& velocity) override {
+    if (held_ < 0) return;
+    const int i = held_;
+    held_ = -1;
+    velocities_[i] = velocity;
+    recordEnergy(i);
+    fromStepEnd(i);
+  }
+  void place(const Vec3& position) override {
+    if (held_ >= 0) positions_[held_] = position;
+  }
+  std::optional<GrabStop> takeGrabStop() override {
+    std::optional<GrabStop> stop;
+    stop.swap(grabStop_);
+    return stop;
   }
   std::vector<std::string> notes() const override {
     return {std::string("discrete: ") + std::string(integratorName(settings_.integrator)) +
@@ -102,7 +135,7 @@ class DiscreteStepper final : public Stepper {
     pendingKick_ = split.after * h;
     const int n = static_cast<int>(positions_.size());
     for (int i = 0; i < n; ++i) {
-      velocities_[i] += before;
+      if (i != held_) velocities_[i] += before;
       positions_[i] += h * velocities_[i];
     }
     pushes_.assign(n, 0);
@@ -132,9 +165,32 @@ class DiscreteStepper final : public Stepper {
         });
       for (int i : again) lookedAt_[i] = 0;
     }
+    if (held_ >= 0) stopCrushingGrab(time, stats, log);
     ++stats.steps;
     stats.ballSteps += n;
   }
+
+  // The held ball pushes the balls it touches out of its way, also into static shapes, after
+  // their own pushes out of those: each is pushed out of them again, and one that then
+  // overlaps the held ball was pressed into it by something that does not give way. The grab
+  // stops, and the held ball steps back to touching it.
+  void stopCrushingGrab(double time, RunStats& stats, std::vector<CollisionRecord>* log) {
+    const int h = held_;
+    bins_.forEachCandidateOf(h, [&](int o) {
+      const double radiusSum = bodies_.radius[h] + bodies_.radius[o];
+      const double reach = radiusSum * (1.0 + tolerance::kTouchFraction);
+      if ((positions_[o] - positions_[h]).squaredNorm() > reach * reach) return;
+      resolveStatics(o, time, stats, log);
+      const Vec3 d = positions_[o] - positions_[h];
+      const double distance = d.norm();
+      if (distance >= radiusSum * (1.0 - tolerance::kTouchFraction) || distance == 0.0) return;
+      positions_[h] -= (radiusSum - distance) * (d / distance);
+      velocities_[h] = Vec3::Zero();
+      if (!grabStop_) grabStop_ = GrabStop{GrabStopKind::Crush, h, o, time};
+    });
+  }
+
+  double inverseMassOf(int i) const { return i == held_ ? 0.0 : bodies_.inverseMass[i]; }
 
   void resolveStatics(int i, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     const double r = bodies_.radius[i];
@@ -163,6 +219,9 @@ class DiscreteStepper final : public Stepper {
                            std::min(bodies_.restitution[i], bodies_.boxRestitution[k]),
                            ContactKind::BallBox, k});
     }
+    // The held ball bounces off nothing: it slides along what it meets.
+    if (i == held_)
+      for (StaticOverlap& o : overlaps_) o.restitution = 0.0;
     if (overlaps_.size() > 1 && pushOutOfSeveral(i, time, stats, log)) return;
     for (const StaticOverlap& o : overlaps_)
       pushOut(i, o.normal, o.depth, o.restitution, o.kind, o.other, time, stats, log);
@@ -222,7 +281,7 @@ class DiscreteStepper final : public Stepper {
     const double overlap = radiusSum - distance;
     stats.maxPenetration = std::max(stats.maxPenetration, overlap);
     // Push apart in proportion to inverse mass, as an impulse would move them.
-    const double wi = bodies_.inverseMass[i] / (bodies_.inverseMass[i] + bodies_.inverseMass[j]);
+    const double wi = inverseMassOf(i) / (inverseMassOf(i) + inverseMassOf(j));
     positions_[i] -= (overlap * wi) * n;
     positions_[j] += (overlap * (1.0 - wi)) * n;
     notePush(i, overlap * wi);
@@ -233,8 +292,7 @@ class DiscreteStepper final : public Stepper {
     restoreEnergy(j);
     const double approach = (velocities_[i] - velocities_[j]).dot(n);
     if (approach > 0.0)
-      resolveBallBall(velocities_[i], velocities_[j], bodies_.inverseMass[i],
-                      bodies_.inverseMass[j], n,
+      resolveBallBall(velocities_[i], velocities_[j], inverseMassOf(i), inverseMassOf(j), n,
                       std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
     payExcess(i, j);
     payExcess(j, i);
@@ -265,13 +323,13 @@ class DiscreteStepper final : public Stepper {
   // do not keep, so that their errors never outlive one flight. Gravity's potential makes them
   // matter; without gravity nothing is restored.
   void recordEnergy(int i) {
-    if (energy_.empty()) return;
+    if (energy_.empty() || i == held_) return;
     energy_[i] = 0.5 * velocities_[i].squaredNorm() - settings_.gravity.dot(positions_[i]) -
                  energyExcess_[i];
     energyExcess_[i] = 0.0;
   }
   void restoreEnergy(int i) {
-    if (energy_.empty()) return;
+    if (energy_.empty() || i == held_) return;
     energyExcess_[i] =
         restoreSpecificEnergy(velocities_[i], positions_[i], settings_.gravity, energy_[i]);
   }
@@ -282,6 +340,7 @@ class DiscreteStepper final : public Stepper {
   void payExcess(int i, int partner) {
     if (energy_.empty() || energyExcess_[i] <= 0.0) return;
     for (const int k : {i, partner}) {
+      if (k == held_) continue;
       const double owed = energyExcess_[i];
       energyExcess_[i] = 0.0;
       const double massShare = k == i ? 1.0 : bodies_.mass[i] / bodies_.mass[k];
@@ -295,8 +354,12 @@ class DiscreteStepper final : public Stepper {
   }
   // Contacts act on the velocity at the step's end, with the kick still owed (the one state()
   // reports), so that their energy is counted as it will be reported.
-  void toStepEnd(int i) { velocities_[i] += pendingKick_ * settings_.gravity; }
-  void fromStepEnd(int i) { velocities_[i] -= pendingKick_ * settings_.gravity; }
+  void toStepEnd(int i) {
+    if (i != held_) velocities_[i] += pendingKick_ * settings_.gravity;
+  }
+  void fromStepEnd(int i) {
+    if (i != held_) velocities_[i] -= pendingKick_ * settings_.gravity;
+  }
 
   const Bodies& bodies_;
   StepperSettings settings_;
@@ -313,6 +376,8 @@ class DiscreteStepper final : public Stepper {
   std::vector<int> pushedTwice_;      // the balls to look at again in the next pass
   std::vector<char> lookedAt_;        // the balls the current pass looks at again
   BallBins bins_;
+  int held_ = -1;  // the held ball (grab.h), or -1
+  std::optional<GrabStop> grabStop_;
 };
 
 }  // namespace

@@ -92,8 +92,10 @@ bool EventEngine::restsOnContact(int i, const Vec3& n, double restitution, RunSt
 }
 
 bool EventEngine::slow(int k) const {
-  return !particles_[k].resting && tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() <
-                                       tolerance::kSettleSpeedFactor * restSpeed_[k];
+  // Nothing rests on the held ball: it moves as the user steers it.
+  return !particles_[k].resting && !particles_[k].held &&
+         tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() <
+             tolerance::kSettleSpeedFactor * restSpeed_[k];
 }
 
 // The gap and unit normal (towards ball i at `centre`) of a support: a static shape (its slot in
@@ -123,8 +125,9 @@ EventEngine::NearContacts EventEngine::nearContacts(int i, const Vec3& centre) c
   for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1}, false);
   forEachNeighbour(i, [&](int k) {
     consider({-1, k},
-             !particles_[k].resting &&
-                 tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i]);
+             particles_[k].held ||
+                 (!particles_[k].resting &&
+                  tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i]));
   });
   return near;
 }

@@ -459,8 +459,12 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
-      moveTo(i, now_);
       const StaticRef ref{staticKindOf(event.kind), event.other};
+      if (particles_[i].held) {
+        heldMeetsStatic(i, ref, stats, log);
+        return;
+      }
+      moveTo(i, now_);
       collideWithStatic(i, ref, surfaceAt(i, ref), stats, log);
       return;
     }
@@ -469,6 +473,11 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
       if (particles_[j].counter != event.otherCounter) {
         ++stats.staleEvents;
         predict(i);
+        return;
+      }
+      if (particles_[i].held || particles_[j].held) {
+        const bool iHeld = particles_[i].held;
+        pushByHeld(iHeld ? i : j, iHeld ? j : i, stats, log);
         return;
       }
       collideBalls(i, j, stats, log);
@@ -727,7 +736,7 @@ std::vector<BallState> EventEngine::state() const {
 void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
     Particle& p = particles_[i];
-    if (p.resting) continue;
+    if (p.resting || p.held) continue;
     moveTo(i, now_);
     Motion& m = tracks_[i].motion;
     m.velocity = velocities[i];
@@ -739,6 +748,17 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
     changed(i);
   }
   predictAll();
+}
+
+std::size_t EventEngine::memoryBytes() const {
+  return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
+         carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
+         carom::memoryBytes(energy_) + carom::memoryBytes(energyExcess_) +
+         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) +
+         carom::memoryBytes(slideSurfaces_) + carom::memoryBytes(slideAcceleration_) +
+         carom::memoryBytes(slideGravity_) + carom::memoryBytes(creaseLine_) +
+         carom::memoryBytes(creaseAcceleration_) + members_.memoryBytes() +
+         carom::memoryBytes(staticStart_) + carom::memoryBytes(statics_) + queue_.memoryBytes();
 }
 
 }  // namespace carom

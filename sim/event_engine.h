@@ -13,9 +13,11 @@
 #include "sim/cell_grid.h"
 #include "sim/contact_time.h"
 #include "sim/event_queue.h"
+#include "sim/grab.h"
 #include "sim/motion.h"
 #include "sim/run_stats.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -49,8 +51,22 @@ class EventEngine {
   void setHorizon(double time) { horizon_ = time; }
 
   // Replaces every ball's velocity at now() (for the integrator kicks of `swept`) and predicts
-  // all events again.
+  // all events again. The held ball keeps its own.
   void setVelocities(const std::vector<Vec3>& velocities);
+
+  // The held ball (grab.h, Stepper::hold).
+  void hold(int i, const Vec3& velocity, RunStats& stats);
+  void release(const Vec3& velocity);
+  void place(const Vec3& position);
+  int held() const { return held_; }
+  std::optional<GrabStop> takeGrabStop() {
+    std::optional<GrabStop> stop;
+    stop.swap(grabStop_);
+    return stop;
+  }
+
+  // The memory the engine holds, in bytes.
+  std::size_t memoryBytes() const;
 
  private:
   // SlideEnd: a ball sliding on a box's face or a capped cylinder's cap reaches its edge or rim.
@@ -73,6 +89,7 @@ class EventEngine {
     bool resting = false;
     // Put to rest by the burst guard: held in its wedge, it is not loosened (restCheck).
     bool wedged = false;
+    bool held = false;  // the held ball (grab.h)
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
   // crossing, which leaves the path alone, need not predict the contact again.
@@ -147,6 +164,15 @@ class EventEngine {
   void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
                          std::vector<CollisionRecord>* log);
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
+  // The held ball h meets a static shape: it slides along what it touches, as far as its
+  // steering takes it, and bounces off nothing (it has no mass to bounce with).
+  void heldMeetsStatic(int h, StaticRef ref, RunStats& stats, std::vector<CollisionRecord>* log);
+  // The held ball h meets ball o: o answers as against an unlimited mass moving at h's velocity.
+  void pushByHeld(int h, int o, RunStats& stats, std::vector<CollisionRecord>* log);
+  // Whether held ball h, pushing ball o along unit normal n (from h to o), would crush it
+  // against a static shape or a resting ball (tolerance::kCrushEscapeFactor).
+  bool crushes(int h, int o, const Vec3& n) const;
+  void stopGrab(GrabStopKind kind, int other);
   // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
   // n pointing to the ball.
   // `plane` is the plane's index when the surface is one: a slow enough contact with a plane
@@ -277,7 +303,7 @@ class EventEngine {
     // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).
     if (straightPaths_) return zero_;
     const Particle& p = particles_[i];
-    if (p.resting) return zero_;
+    if (p.resting || p.held) return zero_;
     if (p.slidePlane < 0) return pathAcceleration_;
     return p.creasePlane < 0 ? slideAcceleration_[p.slidePlane] : creaseAcceleration_[i];
   }
@@ -285,7 +311,7 @@ class EventEngine {
   // (a pair that gravity presses together), the same under `exact` and `swept`.
   Vec3 gravityOn(int i) const {
     const Particle& p = particles_[i];
-    if (p.resting) return Vec3::Zero();
+    if (p.resting || p.held) return Vec3::Zero();
     if (p.slidePlane < 0) return gravity_;
     if (p.creasePlane < 0) return slideGravity_[p.slidePlane];
     return gravity_.dot(creaseLine_[i]) * creaseLine_[i];
@@ -347,6 +373,12 @@ class EventEngine {
   bool sharedStatics_ = false;    // every cell uses all of statics_
   std::vector<StaticRef> statics_;
   EventQueue queue_;
+  int held_ = -1;  // the held ball, or -1
+  std::optional<GrabStop> grabStop_;
+  // The held ball's burst guard (kMaxCollisionsInBurst): pushes in a row, each after a
+  // negligible travel.
+  int heldPushesInBurst_ = 0;
+  double heldLastPush_ = -std::numeric_limits<double>::infinity();
 };
 
 }  // namespace carom

@@ -4,6 +4,9 @@
 // in O(log N). Ties go to the lower ball index, which
 // keeps runs deterministic.
 
+#include "sim/memory_bytes.h"
+
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -17,6 +20,9 @@ class EventQueue {
   double topTime() const { return heap_[0].time; }
   double timeOf(int ball) const { return heap_[position_[ball]].time; }
   bool empty() const { return heap_.empty(); }
+  std::size_t memoryBytes() const {
+    return carom::memoryBytes(heap_) + carom::memoryBytes(position_);
+  }
 
  private:
   // Each heap slot keeps its key, so sifting reads one array.

@@ -23,6 +23,14 @@ class ExactStepper final : public Stepper {
     engine_.advanceTo(engine_.now() + static_cast<double>(count) * timeStep_, stats, log);
   }
   double now() const override { return engine_.now(); }
+  std::unique_ptr<Stepper> clone() const override { return std::make_unique<ExactStepper>(*this); }
+  std::size_t memoryBytes() const override { return engine_.memoryBytes(); }
+  void hold(int ball, const Vec3& velocity, RunStats& stats) override {
+    engine_.hold(ball, velocity, stats);
+  }
+  void release(const Vec3& velocity) override { engine_.release(velocity); }
+  void place(const Vec3& position) override { engine_.place(position); }
+  std::optional<GrabStop> takeGrabStop() override { return engine_.takeGrabStop(); }
   std::vector<BallState> state() const override { return engine_.state(); }
   std::vector<std::string> notes() const override {
     std::vector<std::string> notes{"exact: event-driven, contact times solved, never sampled"};

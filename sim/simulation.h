@@ -3,10 +3,13 @@
 // the CLI, the benchmarks and the GUI worker drive it.
 
 #include "sim/bodies.h"
+#include "sim/grab.h"
 #include "sim/run_stats.h"
 #include "sim/scene.h"
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,9 @@ class Simulation {
   // `scene` must be valid (validateScene(scene) empty); its world selects method and integrator.
   explicit Simulation(const Scene& scene);
   ~Simulation();
-  Simulation(const Simulation&) = delete;
+  // A copy goes on exactly as the original would, bit for bit, given the same calls (the
+  // recording's keyframes, run_recording.h).
+  Simulation(const Simulation& other);
   Simulation& operator=(const Simulation&) = delete;
 
   // Advances simulated time by `duration` (>= 0). `exact` goes from event to event and lands on
@@ -37,8 +42,8 @@ class Simulation {
 
   double time() const;
   const World& world() const { return world_; }
-  const Bodies& bodies() const { return bodies_; }
-  int ballCount() const { return bodies_.ballCount(); }
+  const Bodies& bodies() const { return *bodies_; }
+  int ballCount() const { return bodies_->ballCount(); }
 
   // New world settings (valid), applied live from the current state on: the simulation
   // rebuilds what the changed fields need and keeps the balls where they are.
@@ -62,16 +67,43 @@ class Simulation {
   void setCollisionLog(bool on) { logCollisions_ = on; }
   std::vector<CollisionRecord> takeCollisions();
 
+  // Grabbing (grab.h). `ball` is held where it is, still, until released; a ball already held
+  // is released at rest first.
+  void grab(int ball);
+  // The held ball moves at `velocity` from now on, in a straight line (ignored once the grab
+  // has stopped: it stands where it stopped until released).
+  void steerGrab(const Vec3& velocity);
+  // With no time passing (a paused run): moves the held ball straight towards `target`, as far
+  // as it goes without touching anything, and returns where it got.
+  Vec3 moveGrabbed(const Vec3& target);
+  // Lets the held ball go at `velocity`.
+  void releaseGrab(const Vec3& velocity);
+  int grabbed() const { return grabbed_; }
+  bool grabStopped() const { return grabStopped_; }
+  // Why the grab stopped since last asked, if it did.
+  std::optional<GrabStop> takeGrabStop();
+
+  // The memory this simulation holds, in bytes (the shared bodies not counted).
+  std::size_t memoryBytes() const;
+
  private:
   void rebuildStepper(const std::vector<BallState>& state, double now);
+  // Takes the stepper's news of a stopped grab, so that steering after it is ignored however
+  // often the caller asks.
+  void pullGrabStop();
 
   World world_;
-  Bodies bodies_;
+  // Shared by copies; replaced, never changed, when the world's restitution changes.
+  std::shared_ptr<const Bodies> bodies_;
   double collapseSpeed_ = 0.0;
   RunStats stats_;
   bool logCollisions_ = false;
   std::vector<CollisionRecord> collisionLog_;
   std::unique_ptr<Stepper> stepper_;
+  int grabbed_ = -1;
+  Vec3 grabVelocity_ = Vec3::Zero();
+  bool grabStopped_ = false;
+  std::optional<GrabStop> stopReport_;  // not yet taken
 };
 
 }  // namespace carom

@@ -3,10 +3,13 @@
 // live: exact_stepper.cpp, swept_stepper.cpp, discrete_stepper.cpp.
 
 #include "sim/bodies.h"
+#include "sim/grab.h"
 #include "sim/run_stats.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,23 @@ class Stepper {
   virtual std::vector<BallState> state() const = 0;
   // What this method models, one short phrase each.
   virtual std::vector<std::string> notes() const = 0;
+
+  // A copy that goes on exactly as this one would (its bodies are the same object).
+  virtual std::unique_ptr<Stepper> clone() const = 0;
+  // The memory the stepper holds, in bytes (its vectors' capacities).
+  virtual std::size_t memoryBytes() const = 0;
+
+  // The held ball (grab.h): `ball` follows a straight path at `velocity` from now on, with no
+  // gravity and unlimited mass, until released; at most one ball is held. Holding another
+  // releases the first at rest.
+  virtual void hold(int ball, const Vec3& velocity, RunStats& stats) = 0;
+  // The held ball is free again, at `velocity`.
+  virtual void release(const Vec3& velocity) = 0;
+  // Moves the held ball to `position` at now(), no time passing; the caller has made sure it
+  // overlaps nothing there (Simulation::moveGrabbed).
+  virtual void place(const Vec3& position) = 0;
+  // Why the grab stopped since last asked, if it did: the held ball then stands still.
+  virtual std::optional<GrabStop> takeGrabStop() = 0;
 };
 
 // `bodies` must outlive the stepper.

@@ -27,10 +27,19 @@ class SweptStepper final : public Stepper {
     clock_.advanceSteps(count, [&](double h, double stepEnd) { step(h, stepEnd, stats, log); });
   }
   double now() const override { return clock_.now(); }
+  std::unique_ptr<Stepper> clone() const override { return std::make_unique<SweptStepper>(*this); }
+  std::size_t memoryBytes() const override { return engine_.memoryBytes(); }
+  void hold(int ball, const Vec3& velocity, RunStats& stats) override {
+    engine_.hold(ball, velocity, stats);
+  }
+  void release(const Vec3& velocity) override { engine_.release(velocity); }
+  void place(const Vec3& position) override { engine_.place(position); }
+  std::optional<GrabStop> takeGrabStop() override { return engine_.takeGrabStop(); }
   std::vector<BallState> state() const override {
     std::vector<BallState> state = engine_.state();
-    for (BallState& s : state)
-      if (!s.resting) s.velocity += pendingKick_ * settings_.gravity;
+    for (int i = 0; i < static_cast<int>(state.size()); ++i)
+      if (!state[i].resting && i != engine_.held())
+        state[i].velocity += pendingKick_ * settings_.gravity;
     return state;
   }
   std::vector<std::string> notes() const override {
@@ -55,6 +64,7 @@ class SweptStepper final : public Stepper {
     std::vector<Vec3> velocities(engine_.ballCount());
     for (int i = 0; i < engine_.ballCount(); ++i)
       velocities[i] = engine_.stateOf(i).velocity + seconds * settings_.gravity;
+    // The held ball feels no gravity (setVelocities leaves it alone).
     engine_.setVelocities(velocities);
   }
 

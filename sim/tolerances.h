@@ -86,4 +86,12 @@ inline constexpr double kBurstTravelFraction = kTouchFraction;
 // many times (a wedge of angle θ takes about π/θ; see EventEngine::leaveTouchingStatics).
 inline constexpr long kMaxSimultaneousReflections = 10'000'000;
 
+// A held ball (grab.h) pushing a ball nearly head-on into something that does not give way
+// would squeeze it ever faster (an unlimited mass closing a gap) and at last through: the grab
+// stops when the pushed ball would have to move more than kCrushEscapeFactor times the push's
+// speed to slip out sideways (the push within 30 degrees of head-on) and has less than
+// kCrushRoomFraction of its radius left along the push (test_grab).
+inline constexpr double kCrushEscapeFactor = 2.0;
+inline constexpr double kCrushRoomFraction = 1.0;
+
 }  // namespace carom::tolerance
