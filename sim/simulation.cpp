@@ -168,7 +168,7 @@ Vec3 Simulation::moveGrabbed(const Vec3& target) {
   if (grabbed_ < 0) return Vec3::Zero();
   const Vec3 from = now[grabbed_].position;
   if (grabStopped_ || !target.allFinite()) return from;
-  const Vec3 to = from + freeTravel(*bodies_, now, grabbed_, target - from) * (target - from);
+  const Vec3 to = slideTo(*bodies_, now, grabbed_, target - from);
   stepper_->place(to);
   return to;
 }

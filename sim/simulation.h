@@ -73,8 +73,8 @@ class Simulation {
   // The held ball moves at `velocity` from now on, in a straight line (ignored once the grab
   // has stopped: it stands where it stopped until released).
   void steerGrab(const Vec3& velocity);
-  // With no time passing (a paused run): moves the held ball straight towards `target`, as far
-  // as it goes without touching anything, and returns where it got.
+  // With no time passing (a paused run): moves the held ball straight towards `target` until
+  // it touches something, then on along what it touches (grab_sweep.h); returns where it got.
   Vec3 moveGrabbed(const Vec3& target);
   // Lets the held ball go at `velocity`.
   void releaseGrab(const Vec3& velocity);

@@ -47,4 +47,14 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>carom::ui::TimelineBar</name>
+    <message numerus="yes">
+        <source>t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes</source>
+        <translation>
+            <numerusform>t = %1 s · frame %2 of %3 · %4 MiB in %n keyframe</numerusform>
+            <numerusform>t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

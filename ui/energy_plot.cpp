@@ -83,7 +83,7 @@ int EnergyPlot::pointCount() const {
 
 void EnergyPlot::add(const SimulationSnapshot& snapshot) {
   const double t = snapshot.time;
-  if (t < lastTime_) clear();
+  if (t < lastTime_) truncateAfter(t);
   if (lastTime_ >= 0.0 && t - lastTime_ < kMinSpacingSeconds) return;
   const double kinetic = snapshot.kineticEnergy, potential = snapshot.potentialEnergy;
   const double total = kinetic + potential;
@@ -95,6 +95,22 @@ void EnergyPlot::add(const SimulationSnapshot& snapshot) {
   pending_[2].append(QPointF(t, total));
   lastTime_ = t;
   if (!redrawTimer_.isActive()) redrawTimer_.start();
+}
+
+// The timeline went back to `t` (or the run restarted): the plot shows the run up to there, as
+// it was, and goes on from there.
+void EnergyPlot::truncateAfter(double t) {
+  drawPending();
+  if (total_->count() == 0 || total_->at(0).x() >= t) {
+    clear();
+    return;
+  }
+  qsizetype keep = total_->count();
+  while (keep > 0 && total_->at(keep - 1).x() > t) --keep;
+  for (QLineSeries* s : {kinetic_, potential_, total_})
+    s->removePoints(static_cast<int>(keep), static_cast<int>(s->count() - keep));
+  lastTime_ = total_->at(keep - 1).x();
+  timeAxis_->setRange(total_->at(0).x(), std::max(total_->at(0).x() + 1.0, lastTime_));
 }
 
 void EnergyPlot::drawPending() {

@@ -29,6 +29,7 @@ class EnergyPlot : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
+  void truncateAfter(double t);
   void retranslate();
   void drawPending();
 

@@ -7,11 +7,13 @@
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
 #include "ui/energy_plot.h"
+#include "ui/grab_control.h"
 #include "ui/help_dialogs.h"
 #include "ui/language.h"
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
 
+#include "sim/run_recording.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 #include "ui/editor/scene_document.h"
@@ -22,6 +24,7 @@
 #include "ui/simulation_sync.h"
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"
+#include "ui/timeline_bar.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -32,6 +35,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
@@ -41,10 +45,28 @@
 #include <QUndoStack>
 #include <QUndoView>
 #include <QUrl>
+#include <QVBoxLayout>
 
 namespace carom::ui {
 
 using render::SceneView;
+
+namespace {
+
+constexpr char kTimelineMemoryKey[] = "simulation/timelineMemoryMiB";
+
+}  // namespace
+
+std::size_t MainWindow::recordingBudget() const {
+  bool ok = false;
+  const int stored = QSettings()
+                         .value(kTimelineMemoryKey, int(RunRecording::kDefaultBudgetBytes >> 20))
+                         .toInt(&ok);
+  const int mebibytes = ok && stored >= kMinTimelineMebibytes && stored <= kMaxTimelineMebibytes
+                            ? stored
+                            : int(RunRecording::kDefaultBudgetBytes >> 20);
+  return std::size_t(mebibytes) << 20;
+}
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -52,7 +74,18 @@ MainWindow::MainWindow(QWidget* parent)
       document_(new editor::SceneDocument(this)) {
   setAcceptDrops(true);
   view_ = new SceneView;
-  setCentralWidget(view_);
+  timeline_ = new TimelineBar;
+  auto* centre = new QWidget;
+  auto* centreLayout = new QVBoxLayout(centre);
+  centreLayout->setContentsMargins(0, 0, 0, 0);
+  centreLayout->setSpacing(0);
+  centreLayout->addWidget(view_, 1);
+  centreLayout->addWidget(timeline_);
+  setCentralWidget(centre);
+  connect(timeline_, &TimelineBar::frameRequested, this, [this](std::uint64_t frame) {
+    playAction_->setChecked(false);
+    simulation_->showFrame(frame);
+  });
   sync_ = new SimulationSync(document_, simulation_.get(), this);
   connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
     view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
@@ -72,6 +105,8 @@ MainWindow::MainWindow(QWidget* parent)
   statusBar()->addPermanentWidget(status_);
   tools_ = new editor::EditorTools(document_, view_, this);
   connect(tools_, &editor::EditorTools::refused, this, &MainWindow::showMessage);
+  grab_ = new GrabControl(tools_, simulation_.get(), this);
+  connect(grab_, &GrabControl::message, this, &MainWindow::showMessage);
   outlineDock_ = new editor::OutlineDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, outlineDock_);
   connect(outlineDock_->model(), &editor::OutlineModel::refused, this, &MainWindow::showMessage);
@@ -106,6 +141,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildToolActions();
   buildToolBar();
   simulation_->setSpeed(speed_->value());
+  simulation_->setRecordingBudget(recordingBudget());
   buildMenus();
   connect(document_, &editor::SceneDocument::sceneChanged, this,
           [this](const editor::SceneChange& change) {
@@ -306,6 +342,25 @@ void MainWindow::buildMenus() {
   accuracyAction_ = simulationMenu_->addAction(QString(), this, [this] { openAccuracyWindow(); });
   simulationMenu_->addSeparator();
   simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
+  simulationMenu_->addSeparator();
+  throwLimitAction_ = simulationMenu_->addAction(QString(), this, [this] {
+    bool ok = false;
+    const double limit = QInputDialog::getDouble(
+        this, tr("Throw Speed Limit"), tr("Fastest throw of a grabbed ball (m/s):"),
+        grab_->throwLimit(), GrabControl::kMinThrowLimit, GrabControl::kMaxThrowLimit, 6, &ok);
+    if (ok) grab_->setThrowLimit(limit);
+  });
+  throwLimitAction_->setObjectName("throwLimit");
+  timelineMemoryAction_ = simulationMenu_->addAction(QString(), this, [this] {
+    bool ok = false;
+    const int mebibytes = QInputDialog::getInt(
+        this, tr("Timeline Memory"), tr("Memory for the recorded run (MiB):"),
+        int(recordingBudget() >> 20), kMinTimelineMebibytes, kMaxTimelineMebibytes, 16, &ok);
+    if (!ok) return;
+    QSettings().setValue(kTimelineMemoryKey, mebibytes);
+    simulation_->setRecordingBudget(recordingBudget());
+  });
+  timelineMemoryAction_->setObjectName("timelineMemory");
 
   examplesMenu_ = menuBar()->addMenu(QString());
   examplesMenu_->setObjectName("examplesMenu");
@@ -427,6 +482,8 @@ void MainWindow::retranslate() {
   largerStepAction_->setText(tr("Larger Time Step"));
   smallerStepAction_->setText(tr("Smaller Time Step"));
   accuracyAction_->setText(tr("Speed vs &Accuracy…"));
+  throwLimitAction_->setText(tr("&Throw Speed Limit…"));
+  timelineMemoryAction_->setText(tr("Timeline &Memory…"));
   useStateAction_->setText(tr("&Use Current State as Initial"));
   applyToRunningAction_->setText(tr("Edits Apply to the &Running State"));
   applyToRunningAction_->setToolTip(
@@ -603,6 +660,8 @@ void MainWindow::showSnapshot() {
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
   sound_->play(snapshot->collisions);
+  timeline_->showSnapshot(*snapshot);
+  grab_->showSnapshot(*snapshot);
   status_->showSnapshot(snapshot);
 }
 

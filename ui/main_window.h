@@ -32,6 +32,8 @@ class EditActions;
 class SceneFiles;
 class NumberBox;
 class StatusReadout;
+class TimelineBar;
+class GrabControl;
 class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
@@ -185,6 +187,14 @@ class MainWindow : public QMainWindow {
   QComboBox* method_ = nullptr;
   QComboBox* integrator_ = nullptr;
   StatusReadout* status_ = nullptr;
+  TimelineBar* timeline_ = nullptr;
+  GrabControl* grab_ = nullptr;
+  QAction* throwLimitAction_ = nullptr;
+  QAction* timelineMemoryAction_ = nullptr;
+  // The timeline's memory budget (Simulation > Timeline Memory), from the settings.
+  std::size_t recordingBudget() const;
+  static constexpr int kMinTimelineMebibytes = 16;
+  static constexpr int kMaxTimelineMebibytes = 65536;
 };
 
 }  // namespace carom::ui

@@ -60,4 +60,26 @@ void SimulationController::setWorld(const carom::World& world) {
   post([worker = worker_, world] { worker->setWorld(world); });
 }
 
+void SimulationController::showFrame(std::uint64_t frame) {
+  // A slider dragged fast asks for frames faster than they can be reproduced: only the newest
+  // request is served.
+  if (pendingFrame_.exchange(frame) != kNoFrame) return;
+  post([this] { worker_->showFrame(pendingFrame_.exchange(kNoFrame)); });
+}
+void SimulationController::setRecordingBudget(std::size_t bytes) {
+  post([worker = worker_, bytes] { worker->setRecordingBudget(bytes); });
+}
+void SimulationController::grab(int ball) {
+  post([worker = worker_, ball] { worker->grab(ball); });
+}
+void SimulationController::moveGrab(const carom::Vec3& target) {
+  post([worker = worker_, target] { worker->moveGrab(target); });
+}
+void SimulationController::releaseGrab(const carom::Vec3& velocity) {
+  post([worker = worker_, velocity] { worker->releaseGrab(velocity); });
+}
+void SimulationController::setThrowLimit(double speed) {
+  post([worker = worker_, speed] { worker->setThrowLimit(speed); });
+}
+
 }  // namespace carom::ui

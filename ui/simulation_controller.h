@@ -8,6 +8,8 @@
 #include <QObject>
 #include <QThread>
 
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -31,6 +33,13 @@ class SimulationController : public QObject {
   void setSpeed(double factor);
   // New world settings (valid), applied from the running state on.
   void setWorld(const carom::World& world);
+  // The timeline and grabbing: see SimulationWorker.
+  void showFrame(std::uint64_t frame);
+  void setRecordingBudget(std::size_t bytes);
+  void grab(int ball);
+  void moveGrab(const carom::Vec3& target);
+  void releaseGrab(const carom::Vec3& velocity);
+  void setThrowLimit(double speed);
 
   // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }
@@ -46,6 +55,8 @@ class SimulationController : public QObject {
   void post(std::function<void()> call);
 
   SnapshotExchange exchange_;
+  static constexpr std::uint64_t kNoFrame = ~std::uint64_t(0);
+  std::atomic<std::uint64_t> pendingFrame_{kNoFrame};
   QThread* thread_;  // a child named "physics"
   std::uint64_t loads_ = 0;
   SimulationWorker* worker_;  // on thread_, deleted when it finishes

@@ -2,12 +2,14 @@
 // What the simulation worker hands to the GUI: an immutable picture of one moment. The worker
 // publishes a new one after each batch of steps; the GUI reads the latest without waiting.
 
+#include "sim/grab.h"
 #include "sim/run_stats.h"
 #include "sim/scene.h"
 
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace carom::ui {
@@ -28,6 +30,16 @@ struct SimulationSnapshot {
   bool running = false;
   double realTimeFactor = 0.0;  // simulated seconds per real second, over the last batch
   bool fallingBehind = false;   // the physics could not keep up with the requested speed
+  // The timeline (sim/run_recording.h).
+  std::uint64_t frame = 0;       // the frame shown
+  std::uint64_t frameCount = 0;  // the frames recorded: the live run's present
+  std::size_t recordingBytes = 0;
+  std::size_t keyframes = 0;
+  double scrubMilliseconds = 0.0;  // what reproducing the frame shown took, when it was
+  // Grabbing (sim/grab.h).
+  int grabbed = -1;
+  std::optional<GrabStop> grabStop;  // why the grab stopped, while it lasts
+  bool throwCapped = false;          // the last throw was cut to the throw limit
 };
 
 // A single-slot mailbox: the writer swaps in a new snapshot, the reader takes the latest. The

@@ -1,11 +1,14 @@
 #include "ui/simulation_worker.h"
 
 #include "sim/measures.h"
+#include "sim/run_recording.h"
 #include "sim/simulation.h"
 
+#include <QElapsedTimer>
 #include <QTimer>
 
 #include <algorithm>
+#include <cmath>
 
 namespace carom::ui {
 namespace {
@@ -21,11 +24,17 @@ constexpr double kMaxBacklogSeconds = 0.25;
 constexpr double kFallingBehindHoldSeconds = 1.0;
 // The explosion and sound queue is capped; the view and the speakers could not use more.
 constexpr std::size_t kMaxPendingCollisions = 4096;
+// Simulated m/s: fast enough for a hard throw across a room, slow enough not to fling a ball
+// out of sight.
+constexpr double kDefaultThrowLimit = 50.0;
 
 }  // namespace
 
 SimulationWorker::SimulationWorker(SnapshotExchange& exchange, QObject* parent)
-    : QObject(parent), exchange_(exchange) {}
+    : QObject(parent),
+      exchange_(exchange),
+      recordingBudget_(RunRecording::kDefaultBudgetBytes),
+      throwLimit_(kDefaultThrowLimit) {}
 
 SimulationWorker::~SimulationWorker() = default;
 
@@ -37,6 +46,11 @@ void SimulationWorker::loadScene(const carom::Scene& scene, std::uint64_t number
 
 void SimulationWorker::reset() {
   simulation_ = std::make_unique<Simulation>(scene_);
+  recording_ = std::make_unique<RunRecording>(*simulation_, recordingBudget_);
+  shown_.reset();
+  grabTarget_.reset();
+  grabStop_.reset();
+  throwCapped_ = false;
   simulation_->setCollisionLog(true);
   initialEnergy_ = simulation_->totalEnergy();
   owed_ = 0.0;
@@ -52,6 +66,7 @@ void SimulationWorker::reset() {
 }
 
 void SimulationWorker::setRunning(bool running) {
+  if (running) goOnFromShownFrame();
   running_ = running;
   owed_ = 0.0;
   sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
@@ -62,8 +77,10 @@ void SimulationWorker::setRunning(bool running) {
 
 void SimulationWorker::stepOnce() {
   if (!simulation_) return;
+  goOnFromShownFrame();
   running_ = false;
-  simulation_->step();
+  recording_->step(*simulation_);
+  noteGrabStop();
   publish();
 }
 
@@ -73,9 +90,10 @@ void SimulationWorker::setSpeed(double factor) {
 
 void SimulationWorker::setWorld(const carom::World& world) {
   if (!simulation_) return;
-  const bool newGravity = world.gravity != scene_.world.gravity;
+  goOnFromShownFrame();
+  const bool newGravity = world.gravity != simulation_->world().gravity;
   scene_.world = world;
-  simulation_->setWorld(world);
+  intervene({Intervention::Kind::SetWorld, -1, Vec3::Zero(), world});
   if (newGravity) initialEnergy_ = simulation_->totalEnergy();  // measured in the new field
   publish();
 }
@@ -89,11 +107,18 @@ void SimulationWorker::tick() {
   work.start();
   const double before = simulation_->time();
   const double dt = simulation_->world().timeStep;
+  // The held ball heads for its target, to reach it as this batch's steps end.
+  if (grabTarget_ && simulation_->grabbed() >= 0 && !simulation_->grabStopped() && owed_ >= dt) {
+    const double batch = std::floor(owed_ / dt) * dt;
+    const Vec3 from = simulation_->state()[simulation_->grabbed()].position;
+    intervene({Intervention::Kind::Steer, -1, (*grabTarget_ - from) / batch, {}});
+  }
   // Whole steps, so that swept and discrete runs do not depend on the frame rate.
   while (owed_ >= dt && work.nsecsElapsed() * 1e-9 < kWorkBudgetSeconds) {
-    simulation_->step();
+    recording_->step(*simulation_);
     owed_ -= dt;
   }
+  noteGrabStop();
   sinceBacklogDropped_ += elapsed;
   if (owed_ > kMaxBacklogSeconds * std::max(speed_, 1e-9) + dt) {
     owed_ = 0.0;
@@ -109,26 +134,117 @@ void SimulationWorker::tick() {
   publish();
 }
 
+void SimulationWorker::showFrame(std::uint64_t frame) {
+  if (!simulation_) return;
+  running_ = false;
+  frame = std::min(frame, recording_->frameCount());
+  QElapsedTimer clock;
+  clock.start();
+  if (frame == recording_->frameCount()) {
+    shown_.reset();
+  } else if (shown_ && shownFrame_ <= frame && recording_->keyframeBefore(frame) <= shownFrame_) {
+    recording_->replay(*shown_, shownFrame_, frame);  // on from the frame shown
+  } else {
+    shown_ = recording_->reproduce(frame);
+  }
+  shownFrame_ = frame;
+  lastScrubMilliseconds_ = clock.nsecsElapsed() * 1e-6;
+  simulation_->takeCollisions();  // no explosions from the present while looking back
+  publish();
+}
+
+void SimulationWorker::setRecordingBudget(std::size_t bytes) {
+  recordingBudget_ = bytes;
+  if (recording_) recording_->setBudgetBytes(bytes);
+  publish();
+}
+
+void SimulationWorker::goOnFromShownFrame() {
+  if (!shown_) return;
+  recording_->truncate(shownFrame_);
+  simulation_ = std::move(shown_);
+  simulation_->setCollisionLog(true);
+  grabTarget_.reset();
+  grabStop_.reset();
+  // A frame in the middle of a grab goes on without the hand that held it.
+  if (simulation_->grabbed() >= 0) intervene({Intervention::Kind::Release, -1, Vec3::Zero(), {}});
+}
+
+void SimulationWorker::intervene(const Intervention& what) {
+  recording_->intervene(what, *simulation_);
+}
+
+void SimulationWorker::grab(int ball) {
+  if (!simulation_ || ball < 0 || ball >= simulation_->ballCount()) return;
+  goOnFromShownFrame();
+  intervene({Intervention::Kind::Grab, ball, Vec3::Zero(), {}});
+  grabTarget_.reset();
+  grabStop_.reset();
+  throwCapped_ = false;
+  publish();
+}
+
+void SimulationWorker::moveGrab(const Vec3& target) {
+  if (!simulation_ || simulation_->grabbed() < 0 || !target.allFinite()) return;
+  grabTarget_ = target;
+  if (!running_ && !simulation_->grabStopped()) {
+    intervene({Intervention::Kind::Move, -1, target, {}});
+    publish();
+  }
+}
+
+void SimulationWorker::releaseGrab(const Vec3& velocity) {
+  if (!simulation_ || simulation_->grabbed() < 0) return;
+  noteGrabStop();
+  Vec3 thrown = velocity.allFinite() && !simulation_->grabStopped() ? velocity : Vec3::Zero();
+  // The cursor's velocity is per real second; running at a speed factor, the ball followed it
+  // at that factor's inverse in simulated time.
+  if (running_ && speed_ > 0.0) thrown /= speed_;
+  throwCapped_ = thrown.norm() > throwLimit_;
+  if (throwCapped_) thrown *= throwLimit_ / thrown.norm();
+  intervene({Intervention::Kind::Release, -1, thrown, {}});
+  grabTarget_.reset();
+  grabStop_.reset();
+  publish();
+}
+
+void SimulationWorker::setThrowLimit(double speed) {
+  if (speed > 0.0) throwLimit_ = speed;
+}
+
+void SimulationWorker::noteGrabStop() {
+  if (std::optional<GrabStop> stop = simulation_->takeGrabStop()) grabStop_ = stop;
+}
+
 void SimulationWorker::publish() {
   if (!simulation_) return;
+  const Simulation& sim = shown_ ? *shown_ : *simulation_;
   auto snapshot = std::make_shared<SimulationSnapshot>();
   snapshot->startNumber = startNumber_;
-  snapshot->time = simulation_->time();
+  snapshot->time = sim.time();
   // One read of the state serves the positions and both energies.
-  for (const BallState& ball : simulation_->state()) {
+  for (const BallState& ball : sim.state()) {
     snapshot->positions.push_back(ball.position);
     snapshot->velocities.push_back(ball.velocity);
   }
+  snapshot->frameCount = recording_->frameCount();
+  snapshot->frame = shown_ ? shownFrame_ : snapshot->frameCount;
+  snapshot->recordingBytes = recording_->memoryBytes();
+  snapshot->keyframes = recording_->keyframeCount();
+  snapshot->scrubMilliseconds = lastScrubMilliseconds_;
+  snapshot->grabbed = sim.grabbed();
+  snapshot->grabStop = shown_ ? std::nullopt : grabStop_;
+  snapshot->throwCapped = throwCapped_;
   std::vector<CollisionRecord> fresh = simulation_->takeCollisions();
   if (fresh.size() > kMaxPendingCollisions)
     fresh.erase(fresh.begin(), fresh.end() - kMaxPendingCollisions);
   snapshot->collisions = std::move(fresh);
-  snapshot->kineticEnergy = kineticEnergy(simulation_->bodies(), snapshot->velocities);
+  snapshot->kineticEnergy = kineticEnergy(sim.bodies(), snapshot->velocities);
   snapshot->potentialEnergy =
-      potentialEnergy(simulation_->bodies(), simulation_->world().gravity, snapshot->positions);
+      potentialEnergy(sim.bodies(), sim.world().gravity, snapshot->positions);
   snapshot->initialEnergy = initialEnergy_;
-  snapshot->stats = simulation_->stats();
-  snapshot->world = simulation_->world();
+  snapshot->stats = sim.stats();
+  snapshot->world = sim.world();
   snapshot->running = running_;
   snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
   snapshot->fallingBehind = running_ && sinceBacklogDropped_ < kFallingBehindHoldSeconds;

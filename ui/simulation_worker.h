@@ -3,21 +3,26 @@
 // through queued calls (SimulationController) and reads its results from the SnapshotExchange,
 // so the GUI never waits on the physics and the worker never touches a widget.
 
+#include "sim/grab.h"
+#include "sim/run_recording.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
 
 #include <QElapsedTimer>
 #include <QObject>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 
 class QTimer;
 
 namespace carom {
+class RunRecording;
 class Simulation;
-}
+}  // namespace carom
 
 namespace carom::ui {
 
@@ -36,6 +41,20 @@ class SimulationWorker : public QObject {
   void setSpeed(double factor);  // simulated seconds per real second
   void setWorld(const carom::World& world);
 
+  // The timeline (sim/run_recording.h): shows frame `frame` of the recorded run, paused. Play,
+  // a step, a grab or a new setting goes on from the frame shown, and the recorded frames
+  // after it are forgotten.
+  void showFrame(std::uint64_t frame);
+  void setRecordingBudget(std::size_t bytes);
+
+  // Grabbing (sim/grab.h). While running, the held ball is steered to reach the latest target
+  // by the end of each batch of steps; paused, it moves there at once as far as it is clear.
+  void grab(int ball);
+  void moveGrab(const carom::Vec3& target);
+  // Lets go at `velocity` (simulated m/s), no faster than the throw limit.
+  void releaseGrab(const carom::Vec3& velocity);
+  void setThrowLimit(double speed);
+
  signals:
   // A new snapshot is in the exchange (at most one per batch of steps).
   void snapshotPublished();
@@ -43,10 +62,25 @@ class SimulationWorker : public QObject {
  private:
   void tick();
   void publish();
+  // Makes the frame shown, when it is an earlier one, the live run's present.
+  void goOnFromShownFrame();
+  void intervene(const carom::Intervention& what);
+  void noteGrabStop();
 
   SnapshotExchange& exchange_;
   Scene scene_;
   std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<RunRecording> recording_;
+  std::size_t recordingBudget_;
+  // An earlier frame being shown (the timeline scrubbed back), or null for the live run's
+  // present.
+  std::unique_ptr<Simulation> shown_;
+  std::uint64_t shownFrame_ = 0;
+  double lastScrubMilliseconds_ = 0.0;
+  std::optional<carom::Vec3> grabTarget_;
+  double throwLimit_;
+  std::optional<GrabStop> grabStop_;  // the last stop, until the grab ends
+  bool throwCapped_ = false;          // the last throw was cut to the limit
   QTimer* timer_ = nullptr;
   QElapsedTimer clock_;
   bool running_ = false;

@@ -4,6 +4,7 @@
 #include "app/cli/cli_arguments.h"
 #include "app/cli/run_report.h"
 #include "app/cli/study.h"
+#include "app/cli/timeline_bench.h"
 #include "sim/io/scene_file.h"
 #include "sim/validation.h"
 
@@ -79,7 +80,8 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
       return runScene(*scene, command.run, started, out, err);
     }
     case Command::Bench:
-      return runBench(command.bench, out, err);
+      return command.bench.timeline ? runTimelineBench(command.bench, out, err)
+                                    : runBench(command.bench, out, err);
     case Command::Study: {
       RunOptions load;
       load.scenePath = command.study.scenePath;

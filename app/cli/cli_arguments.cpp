@@ -123,6 +123,8 @@ ParseResult parseArguments(const QStringList& arguments) {
     for (const QString& arg : rest) {
       if (arg == "--quick")
         command.bench.quick = true;
+      else if (arg == "--timeline")
+        command.bench.timeline = true;
       else
         return failure(QString("unknown bench option '%1'").arg(arg));
     }
@@ -138,7 +140,7 @@ QString usageText() {
       "                      [--integrator explicit-euler|symplectic-euler|velocity-verlet]\n"
       "                      [--dt S] [--trajectory FILE.csv] [--json]\n"
       "  carom-cli validate SCENE\n"
-      "  carom-cli bench [--quick]\n"
+      "  carom-cli bench [--quick] [--timeline]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"
       "      The Speed vs accuracy study of the window (exact, then swept and discrete with\n"
       "      every integrator and 1/4 to 4 times the scene's time step), each run S seconds\n"

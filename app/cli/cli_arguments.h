@@ -26,7 +26,8 @@ struct StudyOptions {
 };
 
 struct BenchOptions {
-  bool quick = false;  // small sizes, for a smoke test
+  bool quick = false;     // small sizes, for a smoke test
+  bool timeline = false;  // the timeline's memory and scrub latency instead
 };
 
 struct Command {

@@ -18,6 +18,9 @@ namespace {
 
 constexpr double kClickSlopPixels = 4.0;  // a press and release closer than this is a click
 constexpr double kTipGrabPixels = 8.0;
+// The throw takes the cursor's velocity over this last stretch of a grab (and none when the
+// cursor rested that long before the release).
+constexpr qint64 kThrowWindowNs = 80'000'000;
 constexpr double kDefaultBallRadius = 0.5;
 constexpr double kDefaultCylinderRadius = 0.3;
 constexpr double kDefaultBoxHalfExtent = 0.5;
@@ -87,7 +90,7 @@ EditorTools::EditorTools(SceneDocument* document, render::SceneView* view, QObje
 void EditorTools::setTool(Tool tool) {
   if (tool == tool_) return;
   tool_ = tool;
-  drag_ = Drag::None;
+  if (std::exchange(drag_, Drag::None) == Drag::Grab) emit grabReleased(Vec3::Zero());
   emit toolChanged(tool);
 }
 
@@ -109,7 +112,7 @@ bool EditorTools::eventFilter(QObject* watched, QEvent* event) {
                                                  : -1;
       if (axis < 0 || key->isAutoRepeat()) return false;
       axisLock_ = event->type() == QEvent::KeyPress ? axis : -1;
-      return drag_ == Drag::Objects || drag_ == Drag::Handle;
+      return drag_ == Drag::Objects || drag_ == Drag::Handle || drag_ == Drag::Grab;
     }
     default:
       return false;
@@ -283,6 +286,8 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   }
   const bool extend = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
   const bool altDrag = event->modifiers() & Qt::AltModifier;
+  // In a run in progress a ball is grabbed before any of the scene's handles is.
+  if (!extend && !altDrag && pressOnRunningBall(pressPosition_)) return true;
   if (const std::optional<Handle> grabbed = extend ? std::nullopt : handleAt(pressPosition_)) {
     grabbedHandle_ = *grabbed;
     grabPoint_ = grabbed->tip;
@@ -327,7 +332,63 @@ void EditorTools::beginDrag(Drag drag, const Selection& objects) {
   gesture_ = document_->newGesture();
 }
 
+bool EditorTools::pressOnRunningBall(const QPointF& position) {
+  if (runningBalls_.empty() || runningBalls_.size() != document_->scene().balls.size())
+    return false;
+  // The balls where the run has them; the static shapes where the scene has them.
+  Scene running = document_->scene();
+  for (std::size_t i = 0; i < runningBalls_.size(); ++i)
+    running.balls[i].position = runningBalls_[i];
+  const auto [origin, direction] = view_->rayAt(position);
+  const Eigen::AlignedBox3d clip = view_->clipBox();
+  const std::optional<RayHit> hit = castRay(running, origin, direction, &clip);
+  if (!hit || objectKindOf(hit->kind) != ObjectKind::Ball) return false;
+  document_->setSelection({{ObjectKind::Ball, hit->index}});
+  drag_ = Drag::Grab;
+  grabPoint_ = hit->point;
+  grabbedCentre_ = runningBalls_[hit->index];
+  grabSamples_.clear();
+  grabClock_.start();
+  emit grabStarted(hit->index);
+  return true;
+}
+
+void EditorTools::moveGrab(const QPointF& position) {
+  const std::optional<Vec3> point = onDragPlane(position, grabPoint_);
+  if (!point) return;
+  const Vec3 target = snapped(grabbedCentre_ + (*point - grabPoint_));
+  const qint64 now = grabClock_.nsecsElapsed();
+  grabSamples_.push_back({now, target});
+  // The throw takes the cursor's velocity over the last moments of the drag.
+  while (grabSamples_.size() > 2 && now - grabSamples_.front().nanoseconds > kThrowWindowNs)
+    grabSamples_.erase(grabSamples_.begin());
+  emit grabMoved(target);
+}
+
+Vec3 EditorTools::releaseVelocity() const {
+  if (grabSamples_.size() < 2) return Vec3::Zero();
+  const GrabSample& first = grabSamples_.front();
+  const GrabSample& last = grabSamples_.back();
+  // A cursor that stopped before the button was let go throws nothing.
+  if (grabClock_.nsecsElapsed() - last.nanoseconds > kThrowWindowNs) return Vec3::Zero();
+  const double seconds = (last.nanoseconds - first.nanoseconds) * 1e-9;
+  if (!(seconds > 0.0)) return Vec3::Zero();
+  return (last.target - first.target) / seconds;
+}
+
+Vec3 EditorTools::snapped(Vec3 position) const {
+  if (!snapToGrid_) return position;
+  for (int a = 0; a < 3; ++a)
+    if (axisLock_ < 0 || axisLock_ == a)
+      position[a] = gridStep() * std::round(position[a] / gridStep());
+  return position;
+}
+
 bool EditorTools::mouseMove(QMouseEvent* event) {
+  if (drag_ == Drag::Grab) {
+    moveGrab(event->position());
+    return true;
+  }
   if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
   // A face, end or turn handle keeps to its own path whatever axis key is held.
   const bool onPath = drag_ == Drag::Handle && grabbedHandle_.role != HandleRole::Direction;
@@ -342,15 +403,8 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
     text = dragHandle(edited, local.front(), *point);
   } else {
     const Vec3 offset = *point - grabPoint_;
-    for (const ObjectRef& ref : local) {
-      Vec3 moved = objectPosition(draggedAtPress_, ref) + offset;
-      if (snapToGrid_) {
-        for (int a = 0; a < 3; ++a)
-          if (axisLock_ < 0 || axisLock_ == a)
-            moved[a] = gridStep() * std::round(moved[a] / gridStep());
-      }
-      setObjectPosition(edited, ref, moved);
-    }
+    for (const ObjectRef& ref : local)
+      setObjectPosition(edited, ref, snapped(objectPosition(draggedAtPress_, ref) + offset));
     text = tr("Move");
   }
   QString error = document_->editObjects(dragged_, edited, text, gesture_);
@@ -374,6 +428,10 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
 bool EditorTools::mouseRelease(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton) return false;
   const Drag drag = std::exchange(drag_, Drag::None);
+  if (drag == Drag::Grab) {
+    emit grabReleased(releaseVelocity());
+    return true;
+  }
   if (drag == Drag::Pending) {
     const QPointF moved = event->position() - pressPosition_;
     if (std::hypot(moved.x(), moved.y()) <= kClickSlopPixels) {

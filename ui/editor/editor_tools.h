@@ -7,6 +7,7 @@
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointF>
 
@@ -55,6 +56,11 @@ class EditorTools : public QObject {
     int axis = 0;  // the box's own x, y or z: a face's, or y, the axis a turn is about
     int side = 1;  // a face or an end: +1 on the side its axis points to, -1 on the other
   };
+  // A run is in progress and the view shows its balls at `positions` (empty: the scene's
+  // start, being edited). Then a Select drag on a ball grabs it in the running world
+  // (grabStarted, grabMoved, grabReleased) instead of moving it in the scene.
+  void setRunningBalls(std::vector<Vec3> positions) { runningBalls_ = std::move(positions); }
+
   // The arrows a single selected object shows: a ball's velocity (none at rest), a plane's
   // normal from its point, an infinite cylinder's axis from its point; a capped cylinder's two
   // ends, and the axis beyond the end its axis points to; a box's six faces, and over its top,
@@ -65,12 +71,18 @@ class EditorTools : public QObject {
   void toolChanged(Tool tool);
   // A placement or move was refused; the text says why.
   void refused(const QString& message);
+  // A grab (setRunningBalls): the ball, where its centre is to go (in the plane facing the
+  // camera, on the axis held, snapped as moves are), and the cursor's velocity at the release
+  // in world units per real second (zero when it had stopped).
+  void grabStarted(int ball);
+  void grabMoved(const carom::Vec3& target);
+  void grabReleased(const carom::Vec3& velocity);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  enum class Drag { None, Pending, Objects, Handle };
+  enum class Drag { None, Pending, Objects, Handle, Grab };
   bool mousePress(QMouseEvent* event);
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
@@ -98,6 +110,11 @@ class EditorTools : public QObject {
   // A box's size or a cylinder's length a face or end drag gives: on the grid when snapping.
   double draggedSize(double size) const;
   void beginDrag(Drag drag, const Selection& objects);
+  // Snaps a moved position to the grid when snapping is on, on the locked axis only if one is.
+  Vec3 snapped(Vec3 position) const;
+  bool pressOnRunningBall(const QPointF& position);
+  void moveGrab(const QPointF& position);
+  Vec3 releaseVelocity() const;
 
   SceneDocument* document_;
   render::SceneView* view_;
@@ -114,6 +131,15 @@ class EditorTools : public QObject {
   Scene draggedAtPress_;
   int gesture_ = 0;
   bool refusedDuringDrag_ = false;
+  std::vector<Vec3> runningBalls_;
+  Vec3 grabbedCentre_ = Vec3::Zero();  // the grabbed ball's centre at the press
+  // The grab's recent targets with the real time they were given, for the throw's velocity.
+  struct GrabSample {
+    qint64 nanoseconds;
+    Vec3 target;
+  };
+  std::vector<GrabSample> grabSamples_;
+  QElapsedTimer grabClock_;
 };
 
 }  // namespace carom::editor

@@ -1,0 +1,67 @@
+#include "ui/grab_control.h"
+
+#include "ui/editor/editor_tools.h"
+#include "ui/simulation_controller.h"
+#include "ui/simulation_snapshot.h"
+
+#include <QLocale>
+#include <QSettings>
+
+#include <algorithm>
+
+namespace carom::ui {
+namespace {
+
+constexpr char kThrowLimitKey[] = "simulation/throwLimit";
+constexpr double kDefaultThrowLimit = 50.0;
+
+}  // namespace
+
+GrabControl::GrabControl(editor::EditorTools* tools, SimulationController* simulation,
+                         QObject* parent)
+    : QObject(parent), tools_(tools), simulation_(simulation) {
+  bool ok = false;
+  const double stored = QSettings().value(kThrowLimitKey, kDefaultThrowLimit).toDouble(&ok);
+  throwLimit_ =
+      ok && stored >= kMinThrowLimit && stored <= kMaxThrowLimit ? stored : kDefaultThrowLimit;
+  simulation_->setThrowLimit(throwLimit_);
+  connect(tools_, &editor::EditorTools::grabStarted, this, [this](int ball) {
+    lastStopTime_.reset();
+    simulation_->grab(ball);
+  });
+  connect(tools_, &editor::EditorTools::grabMoved, simulation_, &SimulationController::moveGrab);
+  connect(tools_, &editor::EditorTools::grabReleased, simulation_,
+          &SimulationController::releaseGrab);
+}
+
+void GrabControl::setThrowLimit(double speed) {
+  if (!(speed >= kMinThrowLimit && speed <= kMaxThrowLimit)) return;
+  throwLimit_ = speed;
+  QSettings().setValue(kThrowLimitKey, speed);
+  simulation_->setThrowLimit(speed);
+}
+
+void GrabControl::showSnapshot(const SimulationSnapshot& snapshot) {
+  // At the scene's start the Select tool edits the scene; once the run has begun it grabs.
+  const bool inProgress = snapshot.running || snapshot.time > 0.0;
+  tools_->setRunningBalls(inProgress ? snapshot.positions : std::vector<Vec3>{});
+  const QLocale locale;
+  if (snapshot.grabStop && lastStopTime_ != snapshot.grabStop->time) {
+    lastStopTime_ = snapshot.grabStop->time;
+    const GrabStop& stop = *snapshot.grabStop;
+    const QString time = locale.toString(stop.time, 'f', 4);
+    if (stop.kind == GrabStopKind::Crush)
+      emit message(tr("The grab stopped at t = %1 s: ball %2 would have been crushed against "
+                      "what is behind it.")
+                       .arg(time)
+                       .arg(stop.other + 1));
+    else
+      emit message(tr("The grab stopped at t = %1 s: the balls in front are jammed.").arg(time));
+  }
+  if (snapshot.throwCapped && !throwCapped_)
+    emit message(tr("Thrown at the throw limit, %1 m/s (Simulation > Throw Speed Limit).")
+                     .arg(locale.toString(throwLimit_)));
+  throwCapped_ = snapshot.throwCapped;
+}
+
+}  // namespace carom::ui

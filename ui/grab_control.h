@@ -1,0 +1,45 @@
+#pragma once
+// Grabbing balls in the running world (sim/grab.h): hands the Select tool's grabs to the
+// simulation, keeps the throw limit (a setting), and says when a grab stopped or a throw was
+// cut to the limit.
+
+#include <QObject>
+#include <QString>
+
+#include <optional>
+
+namespace carom::editor {
+class EditorTools;
+}
+namespace carom::ui {
+
+class SimulationController;
+struct SimulationSnapshot;
+
+class GrabControl : public QObject {
+  Q_OBJECT
+ public:
+  GrabControl(editor::EditorTools* tools, SimulationController* simulation,
+              QObject* parent = nullptr);
+
+  // Simulated m/s; a throw faster than this is cut to it.
+  double throwLimit() const { return throwLimit_; }
+  void setThrowLimit(double speed);
+  static constexpr double kMinThrowLimit = 1e-6;
+  static constexpr double kMaxThrowLimit = 1e9;
+
+  // Each snapshot the window shows: a run in progress lets the Select tool grab its balls.
+  void showSnapshot(const SimulationSnapshot& snapshot);
+
+ signals:
+  void message(const QString& text);
+
+ private:
+  editor::EditorTools* tools_;
+  SimulationController* simulation_;
+  double throwLimit_;
+  std::optional<double> lastStopTime_;  // the stop last said, so it is said once
+  bool throwCapped_ = false;
+};
+
+}  // namespace carom::ui

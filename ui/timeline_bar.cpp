@@ -1,0 +1,71 @@
+#include "ui/timeline_bar.h"
+
+#include "ui/simulation_snapshot.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QSlider>
+
+#include <limits>
+
+namespace carom::ui {
+
+TimelineBar::TimelineBar(QWidget* parent)
+    : QWidget(parent), slider_(new QSlider(Qt::Horizontal)), label_(new QLabel) {
+  setObjectName("timeline");
+  slider_->setObjectName("timelineSlider");
+  label_->setObjectName("timelineLabel");
+  slider_->setRange(0, 0);
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(6, 2, 6, 2);
+  layout->addWidget(slider_, 1);
+  layout->addWidget(label_);
+  // Only the user's moves ask for a frame: showSnapshot() sets the slider with signals blocked.
+  connect(slider_, &QSlider::valueChanged, this, [this](int value) {
+    emit frameRequested(
+        std::min<std::uint64_t>(std::uint64_t(value) * framesPerStep_, frameCount_));
+  });
+  retranslate();
+}
+
+void TimelineBar::showSnapshot(const SimulationSnapshot& snapshot) {
+  frame_ = snapshot.frame;
+  frameCount_ = snapshot.frameCount;
+  keyframes_ = snapshot.keyframes;
+  time_ = snapshot.time;
+  bytes_ = snapshot.recordingBytes;
+  scrubMilliseconds_ = snapshot.frame < snapshot.frameCount ? snapshot.scrubMilliseconds : 0.0;
+  const std::uint64_t maxSteps = std::numeric_limits<int>::max();
+  framesPerStep_ = frameCount_ / maxSteps + 1;
+  const QSignalBlocker block(slider_);
+  slider_->setRange(0, int(frameCount_ / framesPerStep_));
+  slider_->setPageStep(std::max(1, slider_->maximum() / 20));
+  // While the user holds the slider, it stays where the hand is.
+  if (!slider_->isSliderDown()) slider_->setValue(int(frame_ / framesPerStep_));
+  retranslate();
+}
+
+void TimelineBar::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+void TimelineBar::retranslate() {
+  slider_->setToolTip(
+      tr("The recorded run: drag back to see an earlier moment; Play goes on "
+         "from the moment shown and forgets what came after it."));
+  const QLocale locale;
+  QString text =
+      tr("t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes", nullptr, int(keyframes_))
+          .arg(locale.toString(time_, 'f', 3))
+          .arg(locale.toString(qulonglong(frame_)))
+          .arg(locale.toString(qulonglong(frameCount_)))
+          .arg(locale.toString(double(bytes_) / (1 << 20), 'f', 1));
+  if (scrubMilliseconds_ > 0.0)
+    text += " · " + tr("replayed in %1 ms").arg(locale.toString(scrubMilliseconds_, 'f', 1));
+  label_->setText(text);
+}
+
+}  // namespace carom::ui

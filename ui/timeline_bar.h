@@ -1,0 +1,42 @@
+#pragma once
+// The timeline under the view: a slider over every frame the run has recorded
+// (sim/run_recording.h) and a line saying which moment is shown and what the recording holds.
+// Dragging it, or its keys, asks for an earlier frame; the run pauses there.
+
+#include <QWidget>
+
+#include <cstdint>
+
+class QLabel;
+class QSlider;
+
+namespace carom::ui {
+
+struct SimulationSnapshot;
+
+class TimelineBar : public QWidget {
+  Q_OBJECT
+ public:
+  explicit TimelineBar(QWidget* parent = nullptr);
+
+  void showSnapshot(const SimulationSnapshot& snapshot);
+
+ signals:
+  void frameRequested(std::uint64_t frame);
+
+ protected:
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void retranslate();
+
+  QSlider* slider_;
+  QLabel* label_;
+  // Frames per slider step: a slider counts in ints, a long run at a small step may not.
+  std::uint64_t framesPerStep_ = 1;
+  std::uint64_t frame_ = 0, frameCount_ = 0, keyframes_ = 0;
+  double time_ = 0.0, scrubMilliseconds_ = 0.0;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace carom::ui
