@@ -5,6 +5,7 @@
 
 #include <QTest>
 
+#include <cmath>
 #include <initializer_list>
 
 namespace carom::testing {
@@ -57,6 +58,23 @@ inline Cylinder makeCylinder(const Vec3& point, const Vec3& axis, double radius,
   cylinder.radius = radius;
   cylinder.length = length;
   return cylinder;
+}
+
+// A closed elastic room under gravity (walls at x, z = +-1, floor and ceiling at y = 0 and 2)
+// with `count` balls of radius 0.05 in a lattice, moving every which way.
+inline Scene elasticGasRoom(int count, Method method) {
+  Scene s = elasticSceneWithGravity();
+  s.world.method = method;
+  s.world.timeStep = 1.0 / 120.0;
+  s.planes = {makePlane({0, 0, 0}, {0, 1, 0}),  makePlane({0, 2, 0}, {0, -1, 0}),
+              makePlane({-1, 0, 0}, {1, 0, 0}), makePlane({1, 0, 0}, {-1, 0, 0}),
+              makePlane({0, 0, -1}, {0, 0, 1}), makePlane({0, 0, 1}, {0, 0, -1})};
+  for (int k = 0; k < count; ++k) {
+    const Vec3 p(-0.8 + 0.2 * (k % 9), 0.2 + 0.2 * ((k / 9) % 9), -0.8 + 0.2 * (k / 81));
+    const Vec3 v(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(0.9 * k + 1.0));
+    s.balls.push_back(makeBall(p, 2.0 * v, 0.05));
+  }
+  return s;
 }
 
 }  // namespace carom::testing

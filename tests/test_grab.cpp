@@ -15,23 +15,6 @@ using namespace carom::testing;
 
 namespace {
 
-// A closed elastic room (walls at +-1, floor and ceiling at 0 and 2) with `count` balls of
-// radius 0.05 in a lattice, moving every which way.
-Scene gasRoom(int count, Method method) {
-  Scene s = elasticSceneWithGravity();
-  s.world.method = method;
-  s.world.timeStep = 1.0 / 120.0;
-  s.planes = {makePlane({0, 0, 0}, {0, 1, 0}),  makePlane({0, 2, 0}, {0, -1, 0}),
-              makePlane({-1, 0, 0}, {1, 0, 0}), makePlane({1, 0, 0}, {-1, 0, 0}),
-              makePlane({0, 0, -1}, {0, 0, 1}), makePlane({0, 0, 1}, {0, 0, -1})};
-  for (int k = 0; k < count; ++k) {
-    const Vec3 p(-0.8 + 0.2 * (k % 9), 0.2 + 0.2 * ((k / 9) % 9), -0.8 + 0.2 * (k / 81));
-    const Vec3 v(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(0.9 * k + 1.0));
-    s.balls.push_back(makeBall(p, 2.0 * v, 0.05));
-  }
-  return s;
-}
-
 bool sameState(const Simulation& a, const Simulation& b) {
   const std::vector<BallState> x = a.state(), y = b.state();
   if (x.size() != y.size() || a.time() != b.time()) return false;
@@ -63,7 +46,7 @@ class GrabTest : public QObject {
   }
   void copyGoesOnBitForBit() {
     QFETCH(int, method);
-    Simulation original(gasRoom(200, Method(method)));
+    Simulation original(elasticGasRoom(200, Method(method)));
     for (int k = 0; k < 60; ++k) original.step();
     Simulation copy(original);
     QVERIFY(sameState(original, copy));
@@ -238,7 +221,7 @@ class GrabTest : public QObject {
   void fastGrabThroughAGas_data() { addMethodRows({Method::Exact, Method::Swept}); }
   void fastGrabThroughAGas() {
     QFETCH(int, method);
-    Simulation sim(gasRoom(300, Method(method)));
+    Simulation sim(elasticGasRoom(300, Method(method)));
     sim.grab(40);
     for (int k = 0; k < 240; ++k) {
       const double a = 0.05 * k;

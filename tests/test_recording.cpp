@@ -14,22 +14,6 @@ using namespace carom::testing;
 
 namespace {
 
-// A closed elastic room with `count` balls moving every which way.
-Scene gasRoom(int count, Method method) {
-  Scene s = elasticSceneWithGravity();
-  s.world.method = method;
-  s.world.timeStep = 1.0 / 120.0;
-  s.planes = {makePlane({0, 0, 0}, {0, 1, 0}),  makePlane({0, 2, 0}, {0, -1, 0}),
-              makePlane({-1, 0, 0}, {1, 0, 0}), makePlane({1, 0, 0}, {-1, 0, 0}),
-              makePlane({0, 0, -1}, {0, 0, 1}), makePlane({0, 0, 1}, {0, 0, -1})};
-  for (int k = 0; k < count; ++k) {
-    const Vec3 p(-0.8 + 0.2 * (k % 9), 0.2 + 0.2 * ((k / 9) % 9), -0.8 + 0.2 * (k / 81));
-    const Vec3 v(std::sin(1.7 * k), std::cos(2.3 * k), std::sin(0.9 * k + 1.0));
-    s.balls.push_back(makeBall(p, 2.0 * v, 0.05));
-  }
-  return s;
-}
-
 struct Moment {
   double time;
   std::vector<BallState> state;
@@ -81,7 +65,7 @@ class RecordingTest : public QObject {
   }
   void everyFrameComesBackBitForBit() {
     QFETCH(int, method);
-    const Scene scene = gasRoom(150, Method(method));
+    const Scene scene = elasticGasRoom(150, Method(method));
     Simulation live(scene);
     // No keyframe but the start's: every frame is replayed from there.
     RunRecording recording(live, RunRecording::kDefaultBudgetBytes, 1e9);
@@ -101,7 +85,7 @@ class RecordingTest : public QObject {
   // A run with nothing done to it is the run a fresh simulation makes, step for step: the
   // recording takes nothing from the physics.
   void recordingChangesNothing() {
-    const Scene scene = gasRoom(200, Method::Exact);
+    const Scene scene = elasticGasRoom(200, Method::Exact);
     Simulation live(scene), fresh(scene);
     RunRecording recording(live, RunRecording::kDefaultBudgetBytes, 0.0);
     for (int k = 0; k < 240; ++k) {
@@ -119,7 +103,7 @@ class RecordingTest : public QObject {
   // Over budget, keyframes thin out, never the first nor the newest, and every frame still
   // comes back exactly.
   void memoryBudgetHolds() {
-    const Scene scene = gasRoom(100, Method::Exact);
+    const Scene scene = elasticGasRoom(100, Method::Exact);
     Simulation live(scene);
     const std::size_t keyframeBytes = live.memoryBytes();
     const std::size_t budget = 12 * keyframeBytes;
@@ -142,7 +126,7 @@ class RecordingTest : public QObject {
 
   // Going back and on from there forgets the old future and records the new one.
   void truncateAndGoOn() {
-    const Scene scene = gasRoom(80, Method::Swept);
+    const Scene scene = elasticGasRoom(80, Method::Swept);
     Simulation live(scene);
     RunRecording recording(live, RunRecording::kDefaultBudgetBytes, 1e9);
     std::vector<Moment> moments;

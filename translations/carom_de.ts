@@ -4,27 +4,27 @@
 <context>
     <name>About</name>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="148"/>
+        <location filename="../ui/help_dialogs.cpp" line="156"/>
         <source>About Carom</source>
         <translation>Über Carom</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="151"/>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
         <source>Carom %1</source>
         <translation>Carom %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="154"/>
+        <location filename="../ui/help_dialogs.cpp" line="162"/>
         <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
         <translation>Sandbox und Szeneneditor für Stoßphysik: Kugeln, Ebenen und Zylinder unter Schwerkraft, exakt oder in Schritten gelöst.</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <location filename="../ui/help_dialogs.cpp" line="167"/>
         <source>Qt version %1</source>
         <translation>Qt-Version %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="160"/>
+        <location filename="../ui/help_dialogs.cpp" line="168"/>
         <source>Released under the MIT licence.</source>
         <translation>Veröffentlicht unter der MIT-Lizenz.</translation>
     </message>
@@ -932,141 +932,186 @@
     </message>
     <message>
         <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <source>Running world</source>
+        <translation>Laufende Welt</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <source>Drag a ball once the run has begun</source>
+        <translation>Eine Kugel ziehen, sobald der Lauf begonnen hat</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <source>Grab it: it follows the cursor and pushes other balls; let go to throw it</source>
+        <translation>Sie greifen: sie folgt dem Zeiger und schiebt andere Kugeln; loslassen wirft sie</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>X, Y or Z held while grabbing</source>
+        <translation>X, Y oder Z beim Greifen gedrückt</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>Keep the grabbed ball on that axis</source>
+        <translation>Die gegriffene Kugel auf dieser Achse halten</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <source>Drag the timeline under the view</source>
+        <translation>Die Zeitleiste unter der Ansicht ziehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <source>Show an earlier moment; Run goes on from there and forgets the rest</source>
+        <translation>Einen früheren Moment zeigen; Starten setzt dort fort und vergisst den Rest</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <source>Arrows, Page Up/Down, Home, End (on the timeline)</source>
+        <translation>Pfeile, Bild auf/ab, Pos1, Ende (auf der Zeitleiste)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <source>Step through the recorded frames</source>
+        <translation>Durch die aufgezeichneten Bilder gehen</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
         <source>Edit</source>
         <translation>Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
         <source>Redo</source>
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
         <source>Copy the selection (as scene text)</source>
         <translation>Die Auswahl kopieren (als Szenentext)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
         <source>Paste objects, moved aside where they would overlap</source>
         <translation>Objekte einfügen, zur Seite gerückt, wo sie sich überschneiden würden</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
         <source>Duplicate the selection</source>
         <translation>Die Auswahl duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Delete the selection</source>
         <translation>Die Auswahl löschen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
         <source>Select every object</source>
         <translation>Alle Objekte auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Files</source>
         <translation>Dateien</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>New scene</source>
         <translation>Neue Szene</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Open a scene</source>
         <translation>Eine Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
         <source>Save</source>
         <translation>Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Save under another name</source>
         <translation>Unter anderem Namen speichern</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Quit</source>
         <translation>Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="134"/>
         <source>Dropping a file on the window</source>
         <translation>Eine Datei auf das Fenster ziehen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="134"/>
         <source>Open it</source>
         <translation>Sie öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="135"/>
         <source>Outline and Properties</source>
         <translation>Übersicht und Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="136"/>
         <source>Click, Ctrl+click, Shift+click</source>
         <translation>Klick, Strg+Klick, Umschalt+Klick</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="136"/>
         <source>Select objects, as in the view</source>
         <translation>Objekte auswählen, wie in der Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="137"/>
         <source>Double-click, F2 (in the outline)</source>
         <translation>Doppelklick, F2 (in der Übersicht)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="137"/>
         <source>Rename the object</source>
         <translation>Das Objekt umbenennen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="138"/>
         <source>Enter, or leaving a field</source>
         <translation>Eingabe oder Verlassen eines Feldes</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="138"/>
         <source>Apply the typed value</source>
         <translation>Den eingegebenen Wert übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="139"/>
         <source>Speed vs Accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="140"/>
         <source>Click a point</source>
         <translation>Klick auf einen Punkt</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="140"/>
         <source>Select its run in the table</source>
         <translation>Seinen Lauf in der Tabelle auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="133"/>
+        <location filename="../ui/help_dialogs.cpp" line="141"/>
         <source>Double-click a run</source>
         <translation>Doppelklick auf einen Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="133"/>
+        <location filename="../ui/help_dialogs.cpp" line="141"/>
         <source>Apply its settings to the scene</source>
         <translation>Seine Einstellungen auf die Szene anwenden</translation>
     </message>
@@ -1666,7 +1711,7 @@
     <name>carom::ui::TimelineBar</name>
     <message>
         <location filename="../ui/timeline_bar.cpp" line="57"/>
-        <source>The recorded run: drag back to see an earlier moment; Play goes on from the moment shown and forgets what came after it.</source>
+        <source>The recorded run: drag back to see an earlier moment; Run goes on from the moment shown and forgets what came after it.</source>
         <translation>Der aufgezeichnete Lauf: zurückziehen, um einen früheren Moment zu sehen; Starten setzt beim gezeigten Moment fort und vergisst, was danach kam.</translation>
     </message>
     <message numerus="yes">

@@ -4,27 +4,27 @@
 <context>
     <name>About</name>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="148"/>
+        <location filename="../ui/help_dialogs.cpp" line="156"/>
         <source>About Carom</source>
         <translation>О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="151"/>
+        <location filename="../ui/help_dialogs.cpp" line="159"/>
         <source>Carom %1</source>
         <translation>Carom %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="154"/>
+        <location filename="../ui/help_dialogs.cpp" line="162"/>
         <source>A sandbox and scene editor for collision physics: balls, planes and cylinders under gravity, solved exactly or in steps.</source>
         <translation>Песочница и редактор сцен для физики столкновений: шары, плоскости и цилиндры под действием гравитации, рассчитанные точно или по шагам.</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="159"/>
+        <location filename="../ui/help_dialogs.cpp" line="167"/>
         <source>Qt version %1</source>
         <translation>Версия Qt %1</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="160"/>
+        <location filename="../ui/help_dialogs.cpp" line="168"/>
         <source>Released under the MIT licence.</source>
         <translation>Распространяется по лицензии MIT.</translation>
     </message>
@@ -936,141 +936,186 @@
     </message>
     <message>
         <location filename="../ui/help_dialogs.cpp" line="112"/>
+        <source>Running world</source>
+        <translation>Идущий мир</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <source>Drag a ball once the run has begun</source>
+        <translation>Перетащить шар, когда прогон начался</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <source>Grab it: it follows the cursor and pushes other balls; let go to throw it</source>
+        <translation>Захватить его: он следует за курсором и толкает другие шары; отпустить — бросить</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>X, Y or Z held while grabbing</source>
+        <translation>X, Y или Z, зажатые при захвате</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <source>Keep the grabbed ball on that axis</source>
+        <translation>Держать захваченный шар на этой оси</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <source>Drag the timeline under the view</source>
+        <translation>Перетащить временную шкалу под видом</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <source>Show an earlier moment; Run goes on from there and forgets the rest</source>
+        <translation>Показать более ранний момент; «Запуск» продолжает оттуда и забывает остальное</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <source>Arrows, Page Up/Down, Home, End (on the timeline)</source>
+        <translation>Стрелки, Page Up/Down, Home, End (на временной шкале)</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <source>Step through the recorded frames</source>
+        <translation>Перейти по записанным кадрам</translation>
+    </message>
+    <message>
+        <location filename="../ui/help_dialogs.cpp" line="120"/>
         <source>Edit</source>
         <translation>Правка</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="113"/>
+        <location filename="../ui/help_dialogs.cpp" line="121"/>
         <source>Undo</source>
         <translation>Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="114"/>
+        <location filename="../ui/help_dialogs.cpp" line="122"/>
         <source>Redo</source>
         <translation>Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="115"/>
+        <location filename="../ui/help_dialogs.cpp" line="123"/>
         <source>Copy the selection (as scene text)</source>
         <translation>Копировать выбранное (как текст сцены)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="116"/>
+        <location filename="../ui/help_dialogs.cpp" line="124"/>
         <source>Paste objects, moved aside where they would overlap</source>
         <translation>Вставить объекты, сдвинув их, если они перекрываются</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="117"/>
+        <location filename="../ui/help_dialogs.cpp" line="125"/>
         <source>Duplicate the selection</source>
         <translation>Дублировать выбранное</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="118"/>
+        <location filename="../ui/help_dialogs.cpp" line="126"/>
         <source>Delete the selection</source>
         <translation>Удалить выбранное</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="119"/>
+        <location filename="../ui/help_dialogs.cpp" line="127"/>
         <source>Select every object</source>
         <translation>Выбрать все объекты</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="120"/>
+        <location filename="../ui/help_dialogs.cpp" line="128"/>
         <source>Files</source>
         <translation>Файлы</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="121"/>
+        <location filename="../ui/help_dialogs.cpp" line="129"/>
         <source>New scene</source>
         <translation>Новая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="122"/>
+        <location filename="../ui/help_dialogs.cpp" line="130"/>
         <source>Open a scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="123"/>
+        <location filename="../ui/help_dialogs.cpp" line="131"/>
         <source>Save</source>
         <translation>Сохранить</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="124"/>
+        <location filename="../ui/help_dialogs.cpp" line="132"/>
         <source>Save under another name</source>
         <translation>Сохранить под другим именем</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="125"/>
+        <location filename="../ui/help_dialogs.cpp" line="133"/>
         <source>Quit</source>
         <translation>Выйти</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="134"/>
         <source>Dropping a file on the window</source>
         <translation>Перетаскивание файла в окно</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="126"/>
+        <location filename="../ui/help_dialogs.cpp" line="134"/>
         <source>Open it</source>
         <translation>Открыть его</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="127"/>
+        <location filename="../ui/help_dialogs.cpp" line="135"/>
         <source>Outline and Properties</source>
         <translation>Структура и свойства</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="136"/>
         <source>Click, Ctrl+click, Shift+click</source>
         <translation>Щелчок, Ctrl+щелчок, Shift+щелчок</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="128"/>
+        <location filename="../ui/help_dialogs.cpp" line="136"/>
         <source>Select objects, as in the view</source>
         <translation>Выбирать объекты, как в окне сцены</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="137"/>
         <source>Double-click, F2 (in the outline)</source>
         <translation>Двойной щелчок, F2 (в структуре)</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="129"/>
+        <location filename="../ui/help_dialogs.cpp" line="137"/>
         <source>Rename the object</source>
         <translation>Переименовать объект</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="138"/>
         <source>Enter, or leaving a field</source>
         <translation>Enter или переход из поля</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="130"/>
+        <location filename="../ui/help_dialogs.cpp" line="138"/>
         <source>Apply the typed value</source>
         <translation>Применить введённое значение</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="131"/>
+        <location filename="../ui/help_dialogs.cpp" line="139"/>
         <source>Speed vs Accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="140"/>
         <source>Click a point</source>
         <translation>Щелчок по точке</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="132"/>
+        <location filename="../ui/help_dialogs.cpp" line="140"/>
         <source>Select its run in the table</source>
         <translation>Выбрать её прогон в таблице</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="133"/>
+        <location filename="../ui/help_dialogs.cpp" line="141"/>
         <source>Double-click a run</source>
         <translation>Двойной щелчок по прогону</translation>
     </message>
     <message>
-        <location filename="../ui/help_dialogs.cpp" line="133"/>
+        <location filename="../ui/help_dialogs.cpp" line="141"/>
         <source>Apply its settings to the scene</source>
         <translation>Применить его настройки к сцене</translation>
     </message>
@@ -1671,8 +1716,8 @@
     <name>carom::ui::TimelineBar</name>
     <message>
         <location filename="../ui/timeline_bar.cpp" line="57"/>
-        <source>The recorded run: drag back to see an earlier moment; Play goes on from the moment shown and forgets what came after it.</source>
-        <translation>Записанный прогон: потяните назад, чтобы увидеть более ранний момент; «Пуск» продолжает с показанного момента и забывает то, что было после него.</translation>
+        <source>The recorded run: drag back to see an earlier moment; Run goes on from the moment shown and forgets what came after it.</source>
+        <translation>Записанный прогон: потяните назад, чтобы увидеть более ранний момент; «Запуск» продолжает с показанного момента и забывает то, что было после него.</translation>
     </message>
     <message numerus="yes">
         <location filename="../ui/timeline_bar.cpp" line="61"/>

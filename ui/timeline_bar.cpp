@@ -54,15 +54,14 @@ void TimelineBar::changeEvent(QEvent* event) {
 
 void TimelineBar::retranslate() {
   slider_->setToolTip(
-      tr("The recorded run: drag back to see an earlier moment; Play goes on "
+      tr("The recorded run: drag back to see an earlier moment; Run goes on "
          "from the moment shown and forgets what came after it."));
   const QLocale locale;
-  QString text =
-      tr("t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes", nullptr, int(keyframes_))
-          .arg(locale.toString(time_, 'f', 3))
-          .arg(locale.toString(qulonglong(frame_)))
-          .arg(locale.toString(qulonglong(frameCount_)))
-          .arg(locale.toString(double(bytes_) / (1 << 20), 'f', 1));
+  QString text = tr("t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes", nullptr, int(keyframes_))
+                     .arg(locale.toString(time_, 'f', 3))
+                     .arg(locale.toString(qulonglong(frame_)))
+                     .arg(locale.toString(qulonglong(frameCount_)))
+                     .arg(locale.toString(double(bytes_) / (1 << 20), 'f', 1));
   if (scrubMilliseconds_ > 0.0)
     text += " · " + tr("replayed in %1 ms").arg(locale.toString(scrubMilliseconds_, 'f', 1));
   label_->setText(text);
