@@ -131,35 +131,46 @@ class GrabTest : public QObject {
   // ball between, and says which ball it would have crushed.
   void crushStopsTheGrab_data() {
     QTest::addColumn<int>("method");
-    QTest::addColumn<double>("speed");
+    QTest::addColumn<double>("speed");  // in radii a second
+    QTest::addColumn<double>("scale");  // the radius, m
     // Not `discrete` at 50 m/s: half a radius a step, the ball it bounces back tunnels through
     // the held ball, as through any other (the method's notes say it can tunnel).
     for (const Method m : {Method::Exact, Method::Swept, Method::Discrete})
-      for (const double speed : {0.5, 50.0})
-        if (m != Method::Discrete || speed < 1.0)
-          QTest::newRow(qPrintable(QString("%1 %2 m/s").arg(methodName(m).data()).arg(speed)))
-              << int(m) << speed;
+      for (const double speed : {5.0, 500.0})
+        if (m != Method::Discrete || speed < 10.0)
+          QTest::newRow(qPrintable(QString("%1 %2 r/s").arg(methodName(m).data()).arg(speed)))
+              << int(m) << speed << 0.1;
+    // The crush tolerances are fractions of the radius: the same at any scale.
+    for (const Method m : {Method::Exact, Method::Swept})
+      for (const double scale : {1e-7, 1e5})
+        QTest::newRow(qPrintable(QString("%1 r = %2 m").arg(methodName(m).data()).arg(scale)))
+            << int(m) << 50.0 << scale;
   }
   void crushStopsTheGrab() {
     QFETCH(int, method);
     QFETCH(double, speed);
+    QFETCH(double, scale);
+    const double r = scale;
+    speed *= r;
     Scene s;
     s.world.gravity = Vec3::Zero();
     s.world.restitution = 0.8;
     s.world.method = Method(method);
     s.world.timeStep = 1e-3;
-    s.planes = {makePlane({1, 0, 0}, {-1, 0, 0})};
-    s.balls = {makeBall({0, 0, 0}, {0, 0, 0}), makeBall({0.5, 0, 0}, {0, 0, 0})};
+    s.planes = {makePlane({10 * r, 0, 0}, {-1, 0, 0})};
+    s.balls = {makeBall({0, 0, 0}, {0, 0, 0}, r), makeBall({5 * r, 0, 0}, {0, 0, 0}, r)};
     Simulation sim(s);
     sim.grab(0);
     sim.steerGrab(Vec3(speed, 0, 0));
     // `discrete` finds overlaps after a step: by then the ball may be a step's travel in.
-    const double slack = method == int(Method::Discrete) ? 2.0 * speed * s.world.timeStep : 1e-9;
+    const double slack =
+        method == int(Method::Discrete) ? 2.0 * speed * s.world.timeStep : 1e-9 * r;
+    const double wall = 9 * r;  // where ball 1's centre touches it
     std::optional<GrabStop> stop;
     for (int k = 0; k < 4000 && !stop; ++k) {
       sim.step();
       stop = sim.takeGrabStop();
-      QVERIFY2(sim.positions()[1].x() <= 0.9 + slack,
+      QVERIFY2(sim.positions()[1].x() <= wall + slack,
                qPrintable(QString("step %1: %2").arg(k).arg(sim.positions()[1].x(), 0, 'g', 17)));
     }
     QVERIFY(stop.has_value());
@@ -170,8 +181,8 @@ class GrabTest : public QObject {
     sim.steerGrab(Vec3(speed, 0, 0));
     const Vec3 at = sim.positions()[0];
     for (int k = 0; k < 200; ++k) sim.step();
-    QVERIFY((sim.positions()[0] - at).norm() < 1e-12);
-    QVERIFY(sim.positions()[1].x() <= 0.9 + slack);
+    QVERIFY((sim.positions()[0] - at).norm() < 1e-12 * r);
+    QVERIFY(sim.positions()[1].x() <= wall + slack);
     QVERIFY(sim.positions()[1].x() > sim.positions()[0].x());
   }
 
