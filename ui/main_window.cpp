@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/accuracy_window.h"
+#include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/outline_dock.h"
@@ -66,6 +67,10 @@ MainWindow::MainWindow(QWidget* parent)
   // Below the view, where the plot's time axis has room.
   addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
   energyPlot_->setMinimumHeight(190);
+  storyDock_ = new BallStoryDock(document_, view_, this);
+  addDockWidget(Qt::BottomDockWidgetArea, storyDock_);
+  tabifyDockWidget(energyDock_, storyDock_);
+  energyDock_->raise();
   sound_ = new SoundThread(this);
   status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
@@ -320,6 +325,7 @@ void MainWindow::buildMenus() {
       {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
   viewMenu_->addSeparator();
   viewMenu_->addAction(energyDock_->toggleViewAction());
+  viewMenu_->addAction(storyDock_->toggleViewAction());
   viewMenu_->addAction(outlineDock_->toggleViewAction());
   viewMenu_->addAction(propertiesDock_->toggleViewAction());
   viewMenu_->addAction(historyDock_->toggleViewAction());
@@ -602,6 +608,7 @@ void MainWindow::showSnapshot() {
   view_->setBallPositions(snapshot->positions);
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
+  storyDock_->add(snapshot);
   sound_->play(snapshot->collisions);
   status_->showSnapshot(snapshot);
 }

@@ -28,6 +28,7 @@ class SceneRecovery;
 namespace carom::ui {
 
 class AccuracyWindow;
+class BallStoryDock;
 class EditActions;
 class SceneFiles;
 class NumberBox;
@@ -79,6 +80,7 @@ class MainWindow : public QMainWindow {
   void setRunning(bool running);
   QWidget* view() const;
   EnergyPlot* energyPlot() const { return energyPlot_; }
+  BallStoryDock* ballStoryDock() const { return storyDock_; }
   SoundThread& sound() { return *sound_; }
   QString statusText() const;
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
@@ -118,6 +120,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
+  BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
   SoundThread* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;
