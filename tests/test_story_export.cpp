@@ -1,11 +1,12 @@
-// The Ball story dock with its trails and velocity arrows, as a user meets them in the window
-// (Xvfb, Mesa's OpenGL).
+// The Ball story dock with its trails and velocity arrows, and File > Export Image, as a user
+// meets them in the window (Xvfb, Mesa's OpenGL).
 //
 // With CAROM_SCREENSHOT_DIR set, a picture of the window with two balls' stories is saved there.
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "ui/ball_story_dock.h"
+#include "ui/image_export.h"
 #include "ui/simulation_controller.h"
 
 #include <QDir>
@@ -34,6 +35,9 @@ class TestStoryExport : public carom::testing::EditorFixture {
   void showTimeMovesTheCursorAndEndsTheTrail();
   void resetRestartsTheStory();
   void dockIsInTheViewMenu();
+  void exportWritesTheChosenSize();
+  void exportRefusesBadSizesAndUnwritablePaths();
+  void exportImageMenuAsksSizeThenFile();
   void screenshotOfTheMagicRoom();
 
  private:
@@ -196,6 +200,106 @@ void TestStoryExport::dockIsInTheViewMenu() {
   QVERIFY(!dock().isVisible());
 }
 
+void TestStoryExport::exportWritesTheChosenSize() {
+  QTemporaryDir folder;
+  const QString file = folder.filePath("view.png");
+  const QSize size(640, 360);
+  QVERIFY(view().size() != size);
+  QCOMPARE(window_->imageExport()->write(file, size), QString());
+  const QImage image(file);
+  QCOMPARE(image.size(), size);
+  // The red ball where the view's camera, at the picture's aspect ratio, puts it.
+  carom::render::Camera camera = view().camera();
+  camera.setAspectRatio(640.0 / 360.0);
+  const QPointF ndc = camera.projectToNdc(document().scene().balls[0].position);
+  const QPoint centre(int(0.5 * (ndc.x() + 1.0) * size.width()),
+                      int(0.5 * (1.0 - ndc.y()) * size.height()));
+  QVERIFY(image.rect().contains(centre));
+  const QColor seen = image.pixelColor(centre);
+  QVERIFY2(seen.red() > 120 && seen.red() > seen.green() + 60 && seen.red() > seen.blue() + 60,
+           qPrintable(seen.name()));
+  // The same camera, not stretched: the ball's red runs across and down the picture in the
+  // proportions it has in the view, scaled by the heights (the vertical field of view is kept).
+  const auto extent = [](const QImage& picture, QPoint centre) {
+    const auto isRed = [&](QPoint p) {
+      const QColor c = picture.pixelColor(p);
+      return c.red() > 90 && c.red() > c.green() + 50 && c.red() > c.blue() + 50;
+    };
+    QSizeF red;
+    for (int x = 0; x < picture.width(); ++x) red.rwidth() += isRed(QPoint(x, centre.y()));
+    for (int y = 0; y < picture.height(); ++y) red.rheight() += isRed(QPoint(centre.x(), y));
+    return red;
+  };
+  const QImage shown = view().grabFramebuffer();
+  const QSizeF inView = extent(shown, (view().project(document().scene().balls[0].position) *
+                                       (shown.width() / double(view().width())))
+                                          .toPoint());
+  const QSizeF inPicture = extent(image, centre);
+  const double scale = double(size.height()) / shown.height();
+  const QString sizes = QString("view %1x%2, picture %3x%4, scale %5")
+                            .arg(inView.width())
+                            .arg(inView.height())
+                            .arg(inPicture.width())
+                            .arg(inPicture.height())
+                            .arg(scale);
+  QVERIFY2(inView.width() > 10 && inView.height() > 10, qPrintable(sizes));
+  QVERIFY2(std::abs(inPicture.width() - scale * inView.width()) <= 0.15 * inPicture.width() + 2,
+           qPrintable(sizes));
+  QVERIFY2(std::abs(inPicture.height() - scale * inView.height()) <= 0.15 * inPicture.height() + 2,
+           qPrintable(sizes));
+}
+
+void TestStoryExport::exportRefusesBadSizesAndUnwritablePaths() {
+  QSize size(1, 1);
+  using carom::ui::ImageSizeDialog;
+  QVERIFY(ImageSizeDialog::readSize("15", "100", &size).contains("between 16 and 8192"));
+  QVERIFY(ImageSizeDialog::readSize("100", "8193", &size).startsWith("Height"));
+  QVERIFY(ImageSizeDialog::readSize("abc", "100", &size).contains("whole number"));
+  QVERIFY(ImageSizeDialog::readSize("12.5", "100", &size).contains("whole number"));
+  QCOMPARE(size, QSize(1, 1));  // unchanged by a refusal
+  QVERIFY(ImageSizeDialog::readSize(" 640", "360", &size).isEmpty());
+  QCOMPARE(size, QSize(640, 360));
+
+  QTemporaryDir folder;
+  const QString file = folder.filePath("big.png");
+  QVERIFY(!window_->imageExport()->write(file, QSize(9000, 100)).isEmpty());
+  QVERIFY(!QFile::exists(file));
+  const QString error = window_->imageExport()->write("/nonexistent/folder/view.png", {64, 64});
+  QVERIFY2(error.startsWith("Could not write"), qPrintable(error));
+}
+
+void TestStoryExport::exportImageMenuAsksSizeThenFile() {
+  QTemporaryDir folder;
+  const QString typed = folder.filePath("chosen");
+  QString refusal;
+  QSize suggested;
+  carom::testing::ModalAnswerer<carom::ui::ImageSizeDialog> sizeAnswer(
+      [&](carom::ui::ImageSizeDialog* dialog) {
+        auto* width = dialog->findChild<QLineEdit*>("imageWidth");
+        auto* height = dialog->findChild<QLineEdit*>("imageHeight");
+        suggested = QSize(width->text().toInt(), height->text().toInt());
+        width->setText("0");
+        dialog->accept();  // refused: stays open and says why
+        refusal = dialog->error();
+        width->setText("320");
+        height->setText("200");
+        dialog->accept();
+      });
+  carom::testing::ModalAnswerer<QFileDialog> fileAnswer([&](QFileDialog* dialog) {
+    dialog->selectFile(typed);
+    QMetaObject::invokeMethod(dialog, "accept");
+  });
+  QAction* exportAction = window_->findChild<QAction*>("exportImage");
+  QVERIFY(exportAction);
+  QCOMPARE(exportAction->text(), QString("Export &Image…"));
+  exportAction->trigger();
+  QTRY_VERIFY(sizeAnswer.answered() && fileAnswer.answered());
+  QCOMPARE(suggested, view().size() * view().devicePixelRatio());
+  QVERIFY2(refusal.startsWith("Width: must be between"), qPrintable(refusal));
+  QCOMPARE(QImage(typed + ".png").size(), QSize(320, 200));
+  QVERIFY2(window_->statusMessage().contains("320×200"), qPrintable(window_->statusMessage()));
+}
+
 void TestStoryExport::screenshotOfTheMagicRoom() {
   QVERIFY(window_->openExample("magic-room", false));
   selectBalls({0, 3});
@@ -233,6 +337,9 @@ void TestStoryExport::screenshotOfTheMagicRoom() {
   if (!folder.isEmpty()) {
     QDir().mkpath(folder);
     QVERIFY(window_->grab().save(QDir(folder).filePath("ball-story.png")));
+    QVERIFY(window_->imageExport()
+                ->write(QDir(folder).filePath("ball-story-view.png"), QSize(1280, 720))
+                .isEmpty());
   }
 }
 

@@ -9,6 +9,7 @@
 #include "ui/editor/running_state.h"
 #include "ui/energy_plot.h"
 #include "ui/help_dialogs.h"
+#include "ui/image_export.h"
 #include "ui/language.h"
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
@@ -71,6 +72,8 @@ MainWindow::MainWindow(QWidget* parent)
   addDockWidget(Qt::BottomDockWidgetArea, storyDock_);
   tabifyDockWidget(energyDock_, storyDock_);
   energyDock_->raise();
+  imageExport_ = new ImageExport(view_, this, this);
+  connect(imageExport_, &ImageExport::message, this, &MainWindow::showMessage);
   sound_ = new SoundThread(this);
   status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
@@ -289,6 +292,8 @@ void MainWindow::buildMenus() {
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
   fileMenu_->addActions({saveAction_, saveAsAction_});
   fileMenu_->addSeparator();
+  fileMenu_->addAction(exportImageAction_);
+  fileMenu_->addSeparator();
   quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, this, &QWidget::close);
 
   editMenu_ = menuBar()->addMenu(QString());
@@ -396,6 +401,7 @@ void MainWindow::retranslate() {
   recentMenu_->setTitle(tr("Open &Recent"));
   saveAction_->setText(tr("&Save"));
   saveAsAction_->setText(tr("Save &As…"));
+  exportImageAction_->setText(tr("Export &Image…"));
   quitAction_->setText(tr("&Quit"));
 
   editMenu_->setTitle(tr("&Edit"));
@@ -629,6 +635,9 @@ void MainWindow::buildFileActions() {
   // Spelled out: the standard key is empty on X11 outside GNOME and KDE.
   saveAsAction_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
+  exportImageAction_ = new QAction(this);
+  exportImageAction_->setObjectName("exportImage");
+  connect(exportImageAction_, &QAction::triggered, imageExport_, &ImageExport::exportImage);
 }
 
 bool MainWindow::openFile(const QString& fileName, bool askToSave) {
