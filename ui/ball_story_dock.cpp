@@ -105,8 +105,9 @@ void BallStoryDock::retranslate() {
   quantity_->setToolTip(
       tr("Height is measured against gravity (along y when there is none); energy is the ball's "
          "kinetic energy plus its potential energy relative to the origin."));
+  // The value axis has no title: the chooser above names the quantity and its unit, and a dock
+  // as low as the Energy one leaves a vertical title no room.
   timeAxis_->setTitleText(tr("Simulated time (s)"));
-  valueAxis_->setTitleText(quantity_->currentText());
   showNote();
   plot();  // the series' names
 }
@@ -251,7 +252,6 @@ void BallStoryDock::plot() {
     series->attachAxis(valueAxis_);
     series_.push_back(series);
   }
-  valueAxis_->setTitleText(quantity_->currentText());
   double first = std::numeric_limits<double>::infinity();
   double last = -first, low = first, high = -first;
   for (std::size_t k = 0; k < balls.size(); ++k) {
