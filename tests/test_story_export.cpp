@@ -34,6 +34,7 @@ class TestStoryExport : public carom::testing::EditorFixture {
   void manySelectedBallsAreCapped();
   void showTimeMovesTheCursorAndEndsTheTrail();
   void resetRestartsTheStory();
+  void anEditRestartsTheStory();
   void dockIsInTheViewMenu();
   void exportWritesTheChosenSize();
   void exportRefusesBadSizesAndUnwritablePaths();
@@ -184,6 +185,22 @@ void TestStoryExport::resetRestartsTheStory() {
   // A new scene starts it over as well.
   window_->openScene(carom::testing::floorScene(), {}, "again");
   QTRY_VERIFY(dock().story().samples(0).size() <= 1);
+}
+
+// An edit restarts the simulation from the edited scene: the story forgets the run before at
+// once, and goes on from the new start.
+void TestStoryExport::anEditRestartsTheStory() {
+  throwTheBall();
+  selectBalls({0});
+  runUntil(1.0);
+  carom::Scene edited = document().scene();
+  edited.balls[0].color = "#00ff00";
+  QVERIFY(carom::testing::applyEdit(document(), edited, "green").isEmpty());
+  QVERIFY(dock().story().samples(0).empty());
+  QVERIFY(view().trails().empty());
+  QTRY_COMPARE(dock().story().samples(0).size(), std::size_t(1));
+  QCOMPARE(dock().story().samples(0).front().time, 0.0);
+  QCOMPARE(dock().story().samples(0).front().position, edited.balls[0].position);
 }
 
 void TestStoryExport::dockIsInTheViewMenu() {

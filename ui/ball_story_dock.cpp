@@ -184,6 +184,8 @@ void BallStoryDock::truncateAfter(double time) {
 void BallStoryDock::restart() {
   story_.clear();
   pinnedTime_.reset();
+  // Its positions belong to the start before: balls selected now wait for the new start's.
+  latest_.reset();
   updateView();
   plot();
 }

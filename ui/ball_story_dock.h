@@ -64,7 +64,8 @@ class BallStoryDock : public QDockWidget {
   double shownTime() const;
   // The timeline resumed from `time`: what was recorded after it is discarded.
   void truncateAfter(double time);
-  // Forgets every sample (the watched balls stay watched).
+  // Forgets every sample and the last snapshot (the watched balls stay watched): the
+  // simulation starts again, from a new or edited scene.
   void restart();
 
   const BallStory& story() const { return story_; }

@@ -58,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent)
   sync_ = new SimulationSync(document_, simulation_.get(), this);
   connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
     view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
+    storyDock_->restart();
     showSelection();
   });
   connect(sync_, &SimulationSync::message, this, &MainWindow::showMessage);
