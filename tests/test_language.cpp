@@ -6,12 +6,15 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
+#include "ui/ball_story_dock.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
 #include "ui/help_dialogs.h"
+#include "ui/image_export.h"
 #include "ui/language.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -62,6 +65,8 @@ class TestLanguage : public carom::testing::EditorFixture {
   void countsTakeTheirPluralForms_data();
   void countsTakeTheirPluralForms();
   void exampleTitleAndToolbarMessagesFollowTheLanguage();
+  void ballStoryAndExportImageFollowTheLanguage_data();
+  void ballStoryAndExportImageFollowTheLanguage();
 
  private:
   QMenu* menu(const QString& title) {
@@ -422,6 +427,57 @@ void TestLanguage::exampleTitleAndToolbarMessagesFollowTheLanguage() {
   QTest::keyClick(timeStep, Qt::Key_Return);
   QVERIFY2(window_->statusMessage().startsWith("Zeitschritt"),
            qPrintable(window_->statusMessage()));
+}
+
+void TestLanguage::ballStoryAndExportImageFollowTheLanguage_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<QString>("viewMenu");
+  QTest::addColumn<QString>("fileMenu");
+  QTest::addColumn<QString>("dockTitle");
+  QTest::addColumn<QString>("quantity");
+  QTest::addColumn<QString>("exportImage");
+  QTest::addColumn<QString>("badWidth");
+  QTest::newRow("de") << "de"
+                      << "Ansicht"
+                      << "Datei"
+                      << "Kugelverlauf"
+                      << "Höhe (m)"
+                      << "Bild exportieren…"
+                      << "Breite: muss zwischen 16 und 8192 Pixeln liegen (erhalten: 9000)";
+  QTest::newRow("ru") << "ru"
+                      << "Вид"
+                      << "Файл"
+                      << "История шара"
+                      << "Высота (m)"
+                      << "Экспорт изображения…"
+                      << "Ширина: должно быть от 16 до 8192 пикселей (получено 9000)";
+}
+
+// The Ball story dock is listed in the View menu under its title in the language, and File >
+// Export Image and its refusals speak it too.
+void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
+  QFETCH(QString, code);
+  chooseLanguage(code);
+  carom::ui::BallStoryDock* dock = window_->ballStoryDock();
+  QFETCH(QString, dockTitle);
+  // The events that carry the change are posted: the texts follow on the next turn.
+  QTRY_COMPARE(dock->windowTitle(), dockTitle);
+  QFETCH(QString, viewMenu);
+  QMenu* view = menu(viewMenu);
+  QVERIFY(view);
+  QVERIFY(view->actions().contains(dock->toggleViewAction()));
+  QCOMPARE(dock->toggleViewAction()->text(), dockTitle);
+  QFETCH(QString, quantity);
+  QCOMPARE(dock->findChild<QComboBox*>("storyQuantity")->currentText(), quantity);
+  QVERIFY(!dock->note().contains("Select"));
+  QFETCH(QString, fileMenu);
+  QFETCH(QString, exportImage);
+  QAction* exportAction = window_->findChild<QAction*>("exportImage");
+  QVERIFY(menu(fileMenu)->actions().contains(exportAction));
+  QCOMPARE(exportAction->text().remove('&'), exportImage);
+  QFETCH(QString, badWidth);
+  QSize size;
+  QCOMPARE(carom::ui::ImageSizeDialog::readSize("9000", "100", &size), badWidth);
 }
 
 QTEST_MAIN(TestLanguage)

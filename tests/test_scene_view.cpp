@@ -153,6 +153,8 @@ class TestSceneView : public QObject {
   void explosionsBrightenTheirPlace();
   void disabledExplosionsShowNothing();
   void rayAtInvertsProject();
+  void trailsAndVelocityArrowsAreDrawn();
+  void renderPictureDrawsAtItsOwnSize();
 
  private:
   struct ShownView {
@@ -770,6 +772,86 @@ void TestSceneView::rayAtInvertsProject() {
       }
     }
   }
+}
+
+// A trail in pure yellow over the floor and a velocity arrow (white) from the green ball show
+// where they are put, and go when cleared.
+void TestSceneView::trailsAndVelocityArrowsAreDrawn() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const Vec3 trailMiddle(0, 0.05, 2.0);
+  const Vec3 arrowMiddle(0, 2.0, 0);  // above the green ball at (0, 1, 0)
+  const auto yellow = [](QRgb p) { return qRed(p) > 200 && qGreen(p) > 200 && qBlue(p) < 80; };
+  const auto white = [](QRgb p) { return qRed(p) > 220 && qGreen(p) > 220 && qBlue(p) > 220; };
+  // Lines are a pixel wide: look within two pixels of where they should be.
+  const auto near = [&](const QImage& image, const Vec3& world, auto colour) {
+    const QPointF centre = view.project(world) * view.devicePixelRatioF();
+    for (int dx = -2; dx <= 2; ++dx)
+      for (int dy = -2; dy <= 2; ++dy) {
+        const QPoint p(qRound(centre.x()) + dx, qRound(centre.y()) + dy);
+        if (image.rect().contains(p) && colour(image.pixel(p))) return true;
+      }
+    return false;
+  };
+  QImage image = view.grabFramebuffer();
+  QVERIFY(!near(image, trailMiddle, yellow));
+  QVERIFY(!near(image, arrowMiddle, white));
+  view.setTrails({{{Vec3(-2, 0.05, 2), trailMiddle, Vec3(2, 0.05, 2)}, QColor(255, 255, 0)}});
+  view.setVelocityArrows({{Vec3(0, 1, 0), Vec3(0, 3, 0)}});
+  QCOMPARE(view.trails().size(), std::size_t(1));
+  int frames = *shown.frames;
+  QTRY_VERIFY(*shown.frames > frames);
+  image = view.grabFramebuffer();
+  QVERIFY(near(image, trailMiddle, yellow));
+  QVERIFY(near(image, arrowMiddle, white));
+  view.setTrails({});
+  view.setVelocityArrows({});
+  frames = *shown.frames;
+  QTRY_VERIFY(*shown.frames > frames);
+  image = view.grabFramebuffer();
+  QVERIFY(!near(image, trailMiddle, yellow));
+  QVERIFY(!near(image, arrowMiddle, white));
+}
+
+// Offscreen at a size and aspect ratio of its own (the view is 640x480): the balls where the
+// same camera at that aspect ratio puts them, each in its colour; sizes out of range give
+// nothing; another scene is drawn without disturbing the view's own.
+void TestSceneView::renderPictureDrawsAtItsOwnSize() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QSize size(800, 300);
+  SceneView::Picture picture = view.picture();
+  const QImage image = view.renderPicture(picture, size);
+  QCOMPARE(image.size(), size);
+  Camera camera = picture.camera;
+  camera.setAspectRatio(800.0 / 300.0);
+  const Channel channels[3] = {Red, Green, Blue};
+  for (int i = 0; i < 3; ++i) {
+    const QPointF ndc = camera.projectToNdc(scene.balls[i].position);
+    const QPoint at(qRound(0.5 * (ndc.x() + 1.0) * size.width()),
+                    qRound(0.5 * (1.0 - ndc.y()) * size.height()));
+    QVERIFY2(hasHue(image.pixel(at), channels[i]), qPrintable(describe(image.pixel(at))));
+  }
+  QVERIFY(!hasAnyBallHue(image.pixel(4, 4)));
+  QVERIFY(view.renderPicture(picture, QSize(SceneView::kMinPictureSide - 1, 100)).isNull());
+  QVERIFY(view.renderPicture(picture, QSize(100, SceneView::kMaxPictureSide + 1)).isNull());
+  // The red ball moved up in a picture of its own; the view still shows it where it was.
+  picture.ballPositions[0] = Vec3(-1.5, 2.5, 0);
+  const QImage moved = view.renderPicture(picture, size);
+  const QPointF ndc = camera.projectToNdc(Vec3(-1.5, 2.5, 0));
+  const QPoint at(qRound(0.5 * (ndc.x() + 1.0) * size.width()),
+                  qRound(0.5 * (1.0 - ndc.y()) * size.height()));
+  QVERIFY(hasHue(moved.pixel(at), Red));
+  QCOMPARE(view.ballPositions()[0], scene.balls[0].position);
+  view.update();
+  const int frames = *shown.frames;
+  QTRY_VERIFY(*shown.frames > frames);
+  const QImage after = view.grabFramebuffer();
+  QVERIFY(hasHue(pixelAt(view, after, scene.balls[0].position), Red));
+  QVERIFY(!hasHue(pixelAt(view, after, Vec3(-1.5, 2.5, 0)), Red));
 }
 
 QTEST_MAIN(TestSceneView)

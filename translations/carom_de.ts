@@ -630,6 +630,54 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::BallStoryDock</name>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="101"/>
+        <source>Ball Story</source>
+        <translation>Kugelverlauf</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="102"/>
+        <source>Height (m)</source>
+        <translation>Höhe (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="103"/>
+        <source>Speed (m/s)</source>
+        <translation>Geschwindigkeit (m/s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="104"/>
+        <source>Energy (J)</source>
+        <translation>Energie (J)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="106"/>
+        <source>Height is measured against gravity (along y when there is none); energy is the ball&apos;s kinetic energy plus its potential energy relative to the origin.</source>
+        <translation>Die Höhe wird entgegen der Schwerkraft gemessen (ohne Schwerkraft entlang y); die Energie ist die kinetische Energie der Kugel plus ihre potentielle Energie relativ zum Ursprung.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="110"/>
+        <source>Simulated time (s)</source>
+        <translation>Simulierte Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="117"/>
+        <source>Select balls to follow them: their story starts when they are selected.</source>
+        <translation>Wählen Sie Kugeln aus, um ihnen zu folgen: Ihr Verlauf beginnt mit der Auswahl.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="119"/>
+        <source>Showing the first %1 of %2 selected balls; each story starts when the ball is selected.</source>
+        <translation>Gezeigt werden die ersten %1 von %2 ausgewählten Kugeln; jeder Verlauf beginnt mit der Auswahl der Kugel.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="124"/>
+        <source>Each ball&apos;s story starts when it is selected.</source>
+        <translation>Der Verlauf jeder Kugel beginnt mit ihrer Auswahl.</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EditActions</name>
     <message>
         <location filename="../ui/edit_actions.cpp" line="34"/>
@@ -1127,412 +1175,488 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ImageExport</name>
+    <message>
+        <location filename="../ui/image_export.cpp" line="112"/>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="113"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="119"/>
+        <source>Cannot Export Image</source>
+        <translation>Bild kann nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="122"/>
+        <source>Exported a %1×%2 image to %3</source>
+        <translation>Bild mit %1×%2 Pixeln nach %3 exportiert</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="133"/>
+        <source>The graphics driver could not draw a %1×%2 picture.</source>
+        <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="138"/>
+        <source>Could not write %1: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::ImageSizeDialog</name>
+    <message>
+        <location filename="../ui/image_export.cpp" line="39"/>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="49"/>
+        <source>Width (pixels)</source>
+        <translation>Breite (Pixel)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="50"/>
+        <source>Height (pixels)</source>
+        <translation>Höhe (Pixel)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="63"/>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="63"/>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="67"/>
+        <source>%1: must be a whole number of pixels (got &quot;%2&quot;)</source>
+        <translation>%1: muss eine ganze Zahl von Pixeln sein (erhalten: „%2“)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="69"/>
+        <source>%1: must be between %2 and %3 pixels (got %4)</source>
+        <translation>%1: muss zwischen %2 und %3 Pixeln liegen (erhalten: %4)</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="539"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="523"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="506"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="284"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="295"/>
+        <location filename="../ui/main_window.cpp" line="304"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="302"/>
+        <location filename="../ui/main_window.cpp" line="311"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="521"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="309"/>
+        <location filename="../ui/main_window.cpp" line="318"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="619"/>
+        <location filename="../ui/main_window.cpp" line="632"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="645"/>
+        <location filename="../ui/main_window.cpp" line="658"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Throw Speed Limit</source>
         <translation>Wurfgeschwindigkeitsgrenze</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Fastest throw of a grabbed ball (m/s):</source>
         <translation>Schnellster Wurf einer gegriffenen Kugel (m/s):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="368"/>
         <source>Timeline Memory</source>
         <translation>Speicher der Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="368"/>
         <source>Memory for the recorded run (MiB):</source>
         <translation>Speicher für den aufgezeichneten Lauf (MiB):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
+        <source>Export &amp;Image…</source>
+        <translation>Bild &amp;exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
+        <location filename="../ui/main_window.cpp" line="543"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="544"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="545"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="546"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="720"/>
+        <location filename="../ui/main_window.cpp" line="737"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="501"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="808"/>
+        <location filename="../ui/main_window.cpp" line="825"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="533"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1715,7 +1839,7 @@
         <translation>Der aufgezeichnete Lauf: zurückziehen, um einen früheren Moment zu sehen; Starten setzt beim gezeigten Moment fort und vergisst, was danach kam.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/timeline_bar.cpp" line="61"/>
+        <location filename="../ui/timeline_bar.cpp" line="60"/>
         <source>t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes</source>
         <translation>
             <numerusform>t = %1 s · Bild %2 von %3 · %4 MiB in %n Schlüsselbild</numerusform>
@@ -1723,7 +1847,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/timeline_bar.cpp" line="67"/>
+        <location filename="../ui/timeline_bar.cpp" line="66"/>
         <source>replayed in %1 ms</source>
         <translation>nachgespielt in %1 ms</translation>
     </message>

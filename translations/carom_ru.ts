@@ -634,6 +634,54 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::BallStoryDock</name>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="101"/>
+        <source>Ball Story</source>
+        <translation>История шара</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="102"/>
+        <source>Height (m)</source>
+        <translation>Высота (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="103"/>
+        <source>Speed (m/s)</source>
+        <translation>Скорость (m/s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="104"/>
+        <source>Energy (J)</source>
+        <translation>Энергия (J)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="106"/>
+        <source>Height is measured against gravity (along y when there is none); energy is the ball&apos;s kinetic energy plus its potential energy relative to the origin.</source>
+        <translation>Высота отсчитывается против силы тяжести (по y, если её нет); энергия — кинетическая энергия шара плюс его потенциальная энергия относительно начала координат.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="110"/>
+        <source>Simulated time (s)</source>
+        <translation>Модельное время (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="117"/>
+        <source>Select balls to follow them: their story starts when they are selected.</source>
+        <translation>Выберите шары, чтобы следить за ними: их история начинается с момента выбора.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="119"/>
+        <source>Showing the first %1 of %2 selected balls; each story starts when the ball is selected.</source>
+        <translation>Показаны первые %1 шаров из выбранных (%2); история каждого шара начинается с момента его выбора.</translation>
+    </message>
+    <message>
+        <location filename="../ui/ball_story_dock.cpp" line="124"/>
+        <source>Each ball&apos;s story starts when it is selected.</source>
+        <translation>История каждого шара начинается с момента его выбора.</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EditActions</name>
     <message>
         <location filename="../ui/edit_actions.cpp" line="34"/>
@@ -1131,412 +1179,488 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ImageExport</name>
+    <message>
+        <location filename="../ui/image_export.cpp" line="112"/>
+        <source>Export Image</source>
+        <translation>Экспорт изображения</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="113"/>
+        <source>PNG images (*.png)</source>
+        <translation>Изображения PNG (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="119"/>
+        <source>Cannot Export Image</source>
+        <translation>Не удалось экспортировать изображение</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="122"/>
+        <source>Exported a %1×%2 image to %3</source>
+        <translation>Изображение %1×%2 экспортировано в %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="133"/>
+        <source>The graphics driver could not draw a %1×%2 picture.</source>
+        <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="138"/>
+        <source>Could not write %1: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::ImageSizeDialog</name>
+    <message>
+        <location filename="../ui/image_export.cpp" line="39"/>
+        <source>Export Image</source>
+        <translation>Экспорт изображения</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="49"/>
+        <source>Width (pixels)</source>
+        <translation>Ширина (пикселей)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="50"/>
+        <source>Height (pixels)</source>
+        <translation>Высота (пикселей)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="63"/>
+        <source>Width</source>
+        <translation>Ширина</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="63"/>
+        <source>Height</source>
+        <translation>Высота</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="67"/>
+        <source>%1: must be a whole number of pixels (got &quot;%2&quot;)</source>
+        <translation>%1: должно быть целым числом пикселей (получено «%2»)</translation>
+    </message>
+    <message>
+        <location filename="../ui/image_export.cpp" line="69"/>
+        <source>%1: must be between %2 and %3 pixels (got %4)</source>
+        <translation>%1: должно быть от %2 до %3 пикселей (получено %4)</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="539"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="189"/>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="523"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="506"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="284"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="295"/>
+        <location filename="../ui/main_window.cpp" line="304"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="302"/>
+        <location filename="../ui/main_window.cpp" line="311"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="521"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="309"/>
+        <location filename="../ui/main_window.cpp" line="318"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="619"/>
+        <location filename="../ui/main_window.cpp" line="632"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="645"/>
+        <location filename="../ui/main_window.cpp" line="658"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Throw Speed Limit</source>
         <translation>Предел скорости броска</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="349"/>
+        <location filename="../ui/main_window.cpp" line="360"/>
         <source>Fastest throw of a grabbed ball (m/s):</source>
         <translation>Наибольшая скорость броска захваченного шара (m/s):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="368"/>
         <source>Timeline Memory</source>
         <translation>Память временной шкалы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="357"/>
+        <location filename="../ui/main_window.cpp" line="368"/>
         <source>Memory for the recorded run (MiB):</source>
         <translation>Память для записанного прогона (МиБ):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
+        <source>Export &amp;Image…</source>
+        <translation>Экспорт &amp;изображения…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
+        <location filename="../ui/main_window.cpp" line="543"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="544"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="545"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="546"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="720"/>
+        <location filename="../ui/main_window.cpp" line="737"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="501"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="808"/>
+        <location filename="../ui/main_window.cpp" line="825"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="533"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1720,7 +1844,7 @@
         <translation>Записанный прогон: потяните назад, чтобы увидеть более ранний момент; «Запуск» продолжает с показанного момента и забывает то, что было после него.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/timeline_bar.cpp" line="61"/>
+        <location filename="../ui/timeline_bar.cpp" line="60"/>
         <source>t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes</source>
         <translation>
             <numerusform>t = %1 с · кадр %2 из %3 · %4 МиБ в %n ключевом кадре</numerusform>
@@ -1729,7 +1853,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/timeline_bar.cpp" line="67"/>
+        <location filename="../ui/timeline_bar.cpp" line="66"/>
         <source>replayed in %1 ms</source>
         <translation>воспроизведено за %1 мс</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/accuracy_window.h"
+#include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/outline_dock.h"
@@ -9,6 +10,7 @@
 #include "ui/energy_plot.h"
 #include "ui/grab_control.h"
 #include "ui/help_dialogs.h"
+#include "ui/image_export.h"
 #include "ui/language.h"
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
@@ -89,6 +91,7 @@ MainWindow::MainWindow(QWidget* parent)
   sync_ = new SimulationSync(document_, simulation_.get(), this);
   connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
     view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
+    storyDock_->restart();
     showSelection();
   });
   connect(sync_, &SimulationSync::message, this, &MainWindow::showMessage);
@@ -99,6 +102,12 @@ MainWindow::MainWindow(QWidget* parent)
   // Below the view, where the plot's time axis has room.
   addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
   energyPlot_->setMinimumHeight(190);
+  storyDock_ = new BallStoryDock(document_, view_, this);
+  addDockWidget(Qt::BottomDockWidgetArea, storyDock_);
+  tabifyDockWidget(energyDock_, storyDock_);
+  energyDock_->raise();
+  imageExport_ = new ImageExport(view_, this, this);
+  connect(imageExport_, &ImageExport::message, this, &MainWindow::showMessage);
   sound_ = new SoundThread(this);
   status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
@@ -320,6 +329,8 @@ void MainWindow::buildMenus() {
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
   fileMenu_->addActions({saveAction_, saveAsAction_});
   fileMenu_->addSeparator();
+  fileMenu_->addAction(exportImageAction_);
+  fileMenu_->addSeparator();
   quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, this, &QWidget::close);
 
   editMenu_ = menuBar()->addMenu(QString());
@@ -375,6 +386,7 @@ void MainWindow::buildMenus() {
       {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
   viewMenu_->addSeparator();
   viewMenu_->addAction(energyDock_->toggleViewAction());
+  viewMenu_->addAction(storyDock_->toggleViewAction());
   viewMenu_->addAction(outlineDock_->toggleViewAction());
   viewMenu_->addAction(propertiesDock_->toggleViewAction());
   viewMenu_->addAction(historyDock_->toggleViewAction());
@@ -445,6 +457,7 @@ void MainWindow::retranslate() {
   recentMenu_->setTitle(tr("Open &Recent"));
   saveAction_->setText(tr("&Save"));
   saveAsAction_->setText(tr("Save &As…"));
+  exportImageAction_->setText(tr("Export &Image…"));
   quitAction_->setText(tr("&Quit"));
 
   editMenu_->setTitle(tr("&Edit"));
@@ -659,6 +672,12 @@ void MainWindow::showSnapshot() {
   view_->setBallPositions(snapshot->positions);
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
+  // Looking back along the timeline shows the story then; the run going on from there records
+  // again (and an earlier time truncates the story, as Reset does).
+  if (snapshot->frame < snapshot->frameCount)
+    storyDock_->showTime(snapshot->time);
+  else
+    storyDock_->add(snapshot);
   sound_->play(snapshot->collisions);
   timeline_->showSnapshot(*snapshot);
   grab_->showSnapshot(*snapshot);
@@ -681,6 +700,9 @@ void MainWindow::buildFileActions() {
   // Spelled out: the standard key is empty on X11 outside GNOME and KDE.
   saveAsAction_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::saveAs);
+  exportImageAction_ = new QAction(this);
+  exportImageAction_->setObjectName("exportImage");
+  connect(exportImageAction_, &QAction::triggered, imageExport_, &ImageExport::exportImage);
 }
 
 bool MainWindow::openFile(const QString& fileName, bool askToSave) {

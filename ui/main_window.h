@@ -28,6 +28,8 @@ class SceneRecovery;
 namespace carom::ui {
 
 class AccuracyWindow;
+class BallStoryDock;
+class ImageExport;
 class EditActions;
 class SceneFiles;
 class NumberBox;
@@ -81,6 +83,8 @@ class MainWindow : public QMainWindow {
   void setRunning(bool running);
   QWidget* view() const;
   EnergyPlot* energyPlot() const { return energyPlot_; }
+  BallStoryDock* ballStoryDock() const { return storyDock_; }
+  ImageExport* imageExport() const { return imageExport_; }
   SoundThread& sound() { return *sound_; }
   QString statusText() const;
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
@@ -120,6 +124,9 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
+  BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
+  ImageExport* imageExport_ = nullptr;  // File > Export Image
+  QAction* exportImageAction_ = nullptr;
   SoundThread* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;

@@ -84,4 +84,18 @@ void LineRenderer::drawArrow(const QMatrix4x4& viewProjection, const QVector3D& 
   gl_->glEnable(GL_DEPTH_TEST);
 }
 
+void LineRenderer::drawPath(const QMatrix4x4& viewProjection, const std::vector<Vec3>& points,
+                            const QColor& color) {
+  if (points.size() < 2) return;
+  std::vector<Float3> vertices;
+  vertices.reserve(points.size());
+  for (const Vec3& point : points) vertices.push_back(toFloat3(point));
+  uploadBuffer(gl_, buffer_, vertices, GL_STREAM_DRAW);
+  program_->bind();
+  program_->setUniformValue("viewProjection", viewProjection);
+  program_->setUniformValue("lineColor", rgb(color));
+  gl_->glBindVertexArray(vao_);
+  gl_->glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(vertices.size()));
+}
+
 }  // namespace carom::render

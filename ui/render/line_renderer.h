@@ -1,6 +1,6 @@
 #pragma once
-// Plain lines in one colour each: the world's axes and the editor's handle arrow, which share
-// one program and one streamed buffer.
+// Plain lines in one colour each: the world's axes, the editor's handle arrows, the watched
+// balls' velocity arrows and trails, which share one program and one streamed buffer.
 
 #include "sim/scene.h"
 #include "ui/render/bounds.h"
@@ -11,6 +11,7 @@
 #include <QVector3D>
 
 #include <memory>
+#include <vector>
 
 class QOpenGLShaderProgram;
 
@@ -29,6 +30,9 @@ class LineRenderer {
   // From `from` to `to` with two barbs at the tip, on top of everything.
   void drawArrow(const QMatrix4x4& viewProjection, const QVector3D& eye, const Vec3& from,
                  const Vec3& to, const QColor& color);
+  // A line through `points` in order, hidden where the scene is in front of it.
+  void drawPath(const QMatrix4x4& viewProjection, const std::vector<Vec3>& points,
+                const QColor& color);
 
  private:
   QOpenGLFunctions_3_3_Core* gl_;

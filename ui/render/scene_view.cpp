@@ -9,6 +9,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
 #include <QSize>
 #include <QSurfaceFormat>
@@ -36,6 +37,9 @@ PackedColor pack(const QColor& color) {
 }
 
 const QColor kSelectionColor(255, 140, 13);
+// Velocity arrows of the watched balls: apart from the handles' orange, the sparks' yellow and
+// the trails' tints of the balls' colours.
+const QColor kVelocityColor(255, 255, 255);
 
 // Selected planes, cylinders and boxes take on the selection's colour.
 QColor shown(const QColor& color, bool selected) {
@@ -545,6 +549,71 @@ void SceneView::setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows) {
   update();
 }
 
+void SceneView::setTrails(std::vector<Trail> trails) {
+  trails_ = std::move(trails);
+  update();
+}
+
+void SceneView::setVelocityArrows(std::vector<Arrow> arrows) {
+  velocityArrows_ = std::move(arrows);
+  update();
+}
+
+SceneView::Picture SceneView::picture() const {
+  Camera camera = camera_;
+  camera.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
+  return {scene_,        ballPositions_, explosions_.live(), trails_, velocityArrows_,
+          handleArrows_, camera};
+}
+
+QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
+  const auto inRange = [](int side) { return side >= kMinPictureSide && side <= kMaxPictureSide; };
+  if (!inRange(size.width()) || !inRange(size.height()) || !glReady_) return {};
+  makeCurrent();
+  // The picture's content stands in for the view's while it is drawn, through the same code
+  // that draws the view; the view's own is put back after.
+  const bool otherScene = picture.scene != scene_;
+  std::shared_ptr<const RenderScene> ownScene = std::exchange(scene_, picture.scene);
+  std::vector<Vec3> ownPositions = std::exchange(ballPositions_, picture.ballPositions);
+  std::vector<Trail> ownTrails = std::exchange(trails_, picture.trails);
+  std::vector<Arrow> ownVelocities = std::exchange(velocityArrows_, picture.velocityArrows);
+  std::vector<Arrow> ownHandles = std::exchange(handleArrows_, picture.handleArrows);
+  if (otherScene || staticDataDirty_) uploadStaticData();
+  uploadBallPositions();
+
+  QOpenGLFramebufferObjectFormat format;
+  format.setAttachment(QOpenGLFramebufferObject::Depth);
+  format.setInternalTextureFormat(GL_RGBA8);
+  if (antialiasing() && multisample_->samples() > 1) format.setSamples(multisample_->samples());
+  QImage image;
+  {
+    QOpenGLFramebufferObject target(size, format);
+    if (target.isValid() && target.bind()) {
+      glViewport(0, 0, size.width(), size.height());
+      clearFrame();
+      Camera camera = picture.camera;
+      camera.setAspectRatio(static_cast<double>(size.width()) / size.height());
+      drawPicture(frameCamera(camera), size.height(), picture.explosions);
+      glBindVertexArray(0);
+      glUseProgram(0);
+      glDisable(GL_CULL_FACE);
+      glDisable(GL_DEPTH_TEST);
+      // A multisampled target is resolved into a plain one by toImage.
+      image = target.toImage().convertToFormat(QImage::Format_RGB32);
+      target.release();
+    }
+  }
+  scene_ = std::move(ownScene);
+  ballPositions_ = std::move(ownPositions);
+  trails_ = std::move(ownTrails);
+  velocityArrows_ = std::move(ownVelocities);
+  handleArrows_ = std::move(ownHandles);
+  if (otherScene) staticDataDirty_ = true;
+  positionsDirty_ = true;
+  doneCurrent();
+  return image;
+}
+
 Eigen::AlignedBox3d SceneView::clipBox() const {
   if (!scene_) return Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
   return Eigen::AlignedBox3d(scene_->bounds.min, scene_->bounds.max);
@@ -651,18 +720,27 @@ void SceneView::paintGL() {
   if (positionsDirty_) uploadBallPositions();
   advanceExplosions();
   const bool multisampled = beginFrame();
-  const FrameCamera frame = frameCamera();
-  // Balls first: most of the walls and floor behind them then fail the depth test before their
-  // shading runs, which is most of the frame on a software renderer.
-  drawBalls(frame);
-  drawStatics(frame);
-  if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
-  explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions_.live());
-  for (const auto& [base, tip] : handleArrows_)
-    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
+  camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
+  drawPicture(frameCamera(camera_), height() * devicePixelRatioF(), explosions_.live());
   if (multisampled) multisample_->blitTo(defaultFramebufferObject());
   endFrame();
   emit frameRendered(static_cast<double>(timer.nsecsElapsed()) / 1e6);
+}
+
+void SceneView::drawPicture(const FrameCamera& frame, double pixelHeight,
+                            const std::vector<ExplosionPool::Live>& explosions) {
+  // Balls first: most of the walls and floor behind them then fail the depth test before their
+  // shading runs, which is most of the frame on a software renderer.
+  drawBalls(frame, pixelHeight);
+  drawStatics(frame);
+  if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
+  for (const Trail& trail : trails_)
+    lineRenderer_->drawPath(frame.viewProjection, trail.points, trail.color);
+  explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions);
+  for (const auto& [base, tip] : velocityArrows_)
+    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kVelocityColor);
+  for (const auto& [base, tip] : handleArrows_)
+    lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
 }
 
 void SceneView::advanceExplosions() {
@@ -679,19 +757,22 @@ bool SceneView::beginFrame() {
   const bool multisampled = antialiasing() && multisample_->samples() > 1 &&
                             multisample_->bind(QSize(devicePixels(width()), devicePixels(height())),
                                                defaultFramebufferObject());
+  clearFrame();
+  return multisampled;
+}
+
+void SceneView::clearFrame() {
   glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glCullFace(GL_BACK);
   glFrontFace(GL_CCW);
-  return multisampled;
 }
 
-SceneView::FrameCamera SceneView::frameCamera() {
-  camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
+SceneView::FrameCamera SceneView::frameCamera(const Camera& camera) const {
   return {
-      camera_.viewProjection(), camera_.eye(),
+      camera.viewProjection(), camera.eye(),
       QVector3D(static_cast<float>(kLightDirection.x()), static_cast<float>(kLightDirection.y()),
                 static_cast<float>(kLightDirection.z()))};
 }
@@ -703,12 +784,12 @@ void SceneView::useProgram(QOpenGLShaderProgram& program, const FrameCamera& fra
   program.setUniformValue("lightDirection", frame.light);
 }
 
-void SceneView::drawBalls(const FrameCamera& frame) {
+void SceneView::drawBalls(const FrameCamera& frame, double pixelHeight) {
   glDisable(GL_CULL_FACE);
   if (uploadedBallCount_ == 0) return;
   useProgram(*ballProgram_, frame);
   // Per device pixel, so that the soft edge is a pixel wide on any screen.
-  const double deviceHeight = std::max(1.0, height() * devicePixelRatioF());
+  const double deviceHeight = std::max(1.0, pixelHeight);
   const double viewHeightAtUnitDistance =
       2.0 * std::tan(0.5 * camera_.verticalFov() * std::numbers::pi / 180.0);
   ballProgram_->setUniformValue("pixelAngle",

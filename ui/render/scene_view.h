@@ -8,11 +8,14 @@
 #include "ui/render/render_scene.h"
 
 #include <Eigen/Geometry>
+#include <QColor>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QMatrix4x4>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSize>
 #include <QTimer>
 #include <QVector3D>
 
@@ -34,6 +37,27 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Q_OBJECT
 
  public:
+  // A ball's recent path, drawn as a line through its points in `color`.
+  struct Trail {
+    std::vector<Vec3> points;
+    QColor color;
+  };
+  using Arrow = std::pair<Vec3, Vec3>;  // from its base to its tip
+
+  // Everything one picture of the view shows: what renderPicture draws.
+  struct Picture {
+    std::shared_ptr<const RenderScene> scene;
+    std::vector<Vec3> ballPositions;  // one per ball of the scene
+    std::vector<ExplosionPool::Live> explosions;
+    std::vector<Trail> trails;
+    std::vector<Arrow> velocityArrows;
+    std::vector<Arrow> handleArrows;
+    Camera camera;  // its aspect ratio is the picture's own
+  };
+  // Sides of a rendered picture, in pixels.
+  static constexpr int kMinPictureSide = 16;
+  static constexpr int kMaxPictureSide = 8192;
+
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
@@ -70,6 +94,21 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // Arrows drawn on top of everything, each from its base to its tip: the editor's handles of a
   // ball's velocity, a plane's normal, a cylinder's axis, or a box's faces and turn.
   void setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows);
+  // The recent paths of the balls being watched (the Ball story), drawn in depth with the scene.
+  void setTrails(std::vector<Trail> trails);
+  const std::vector<Trail>& trails() const { return trails_; }
+  // The watched balls' velocities, drawn on top like the handles, in their own colour.
+  void setVelocityArrows(std::vector<Arrow> arrows);
+  const std::vector<Arrow>& velocityArrows() const { return velocityArrows_; }
+
+  // What the view shows now, with its camera.
+  Picture picture() const;
+  // Draws `picture` offscreen, into a framebuffer of `size` pixels (each side from
+  // kMinPictureSide to kMaxPictureSide), as the view draws itself: the camera keeps its vertical
+  // field of view and takes the picture's aspect ratio, and antialiasing is as the view's. Null
+  // when the size is out of range, the view has no GL yet (never shown) or the driver refuses
+  // the framebuffer. The view's own state is left as it was.
+  QImage renderPicture(const Picture& picture, const QSize& size);
 
   // The camera target tracks this ball; -1 stops. Panning or Home stop it too.
   void setFollowedBall(int index);
@@ -130,10 +169,15 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void advanceExplosions();
   // Binds the framebuffer to draw into and clears it; true if it is the multisampled one.
   bool beginFrame();
-  FrameCamera frameCamera();
+  // Clears the bound framebuffer and sets the state every frame starts from.
+  void clearFrame();
+  FrameCamera frameCamera(const Camera& camera) const;
+  // Everything after the clear, into the bound framebuffer `pixelHeight` device pixels high.
+  void drawPicture(const FrameCamera& frame, double pixelHeight,
+                   const std::vector<ExplosionPool::Live>& explosions);
   void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
   void sortBallsFrontToBack(const QVector3D& eye);
-  void drawBalls(const FrameCamera& frame);
+  void drawBalls(const FrameCamera& frame, double pixelHeight);
   // Cylinders, boxes and planes, after the balls.
   void drawStatics(const FrameCamera& frame);
   // Leaves the GL state as Qt's compositing expects it, once the GPU is done.
@@ -154,6 +198,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::vector<int> highlightedCylinders_;
   std::vector<int> highlightedBoxes_;
   std::vector<std::pair<Vec3, Vec3>> handleArrows_;
+  std::vector<Trail> trails_;
+  std::vector<Arrow> velocityArrows_;
   std::optional<bool> antialiasingChoice_;
   bool softwareRenderer_ = false;
   QElapsedTimer clock_;
