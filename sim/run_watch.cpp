@@ -83,11 +83,12 @@ std::string describe(const WatchEvent& e) {
              number(e.tolerance) + "), most in " + ball + at;
     case WatchKind::Escape:
       return ball + " escaped into " + otherText(e.otherKind, e.other) + ": its centre is " +
-             number(e.value) + " radii past the surface (tolerance " + number(e.tolerance) + ")" +
-             at;
+             number(e.value) + " of its radius past the surface (tolerance " + number(e.tolerance) +
+             ")" + at;
     case WatchKind::Penetration:
       return ball + " overlaps " + otherText(e.otherKind, e.other) + " by " + number(e.value) +
-             " of the smaller radius (tolerance " + number(e.tolerance) + ")" + at;
+             (e.otherKind == WatchOther::Ball ? " of the smaller radius" : " of its radius") +
+             " (tolerance " + number(e.tolerance) + ")" + at;
   }
   return {};
 }
