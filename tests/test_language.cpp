@@ -11,6 +11,7 @@
 #include "ui/editor/scene_recovery.h"
 #include "ui/help_dialogs.h"
 #include "ui/language.h"
+#include "ui/watch_menu.h"
 
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -123,6 +124,9 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   QTRY_COMPARE(menuTitles().first(), QString("Datei"));
   QVERIFY2(menuTitles().contains("Hilfe"), qPrintable(menuTitles().join(", ")));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Starten"));
+  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Überwachung"));
+  QCOMPARE(window_->findChild<QAction*>("watchTolerances")->text().remove('&'),
+           QString("Toleranzen…"));
   QCOMPARE(window_->findChild<QAction*>("toolAddBall")->text(), QString("Kugel hinzufügen"));
   QCOMPARE(window_->findChild<QAction*>("toolAddBall")->toolTip(), QString("Kugel hinzufügen (B)"));
   QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Eigenschaften"));
@@ -148,6 +152,7 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   chooseLanguage("en");
   QTRY_COMPARE(menuTitles().first(), QString("File"));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Run"));
+  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Watch"));
   QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Properties"));
   QCOMPARE(labelOf("timeStep"), QString("Time step"));
   QCOMPARE(gravityY->text(), QString("-9.81"));

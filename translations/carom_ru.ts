@@ -522,6 +522,54 @@
     </message>
 </context>
 <context>
+    <name>carom::ui</name>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="16"/>
+        <source>ball %1 (%2)</source>
+        <translation>шар %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="17"/>
+        <source>ball %1</source>
+        <translation>шар %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="31"/>
+        <source>plane %1</source>
+        <translation>плоскость %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="33"/>
+        <source>cylinder %1</source>
+        <translation>цилиндр %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="36"/>
+        <source>box %1</source>
+        <translation>ящик %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="50"/>
+        <source>At %1 s %2 has a position or velocity that is not a finite number.</source>
+        <translation>В %1 s у объекта «%2» положение или скорость — не конечное число.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="53"/>
+        <source>At %1 s the energy rose by %2 of the scene&apos;s energy scale (tolerance %3); %4 gained the most.</source>
+        <translation>В %1 s энергия выросла на %2 от масштаба энергии сцены (допуск %3); больше всего получил %4.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="57"/>
+        <source>At %1 s %2 got inside %3: its centre is %4 of its radius past the surface.</source>
+        <translation>В %1 s %2 оказался внутри объекта «%3»: его центр на %4 радиуса за поверхностью.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="60"/>
+        <source>At %1 s %2 overlaps %3 by %4 of the radius (tolerance %5).</source>
+        <translation>В %1 s %2 перекрывается с %3 на %4 радиуса (допуск %5).</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
         <location filename="../ui/accuracy_window.cpp" line="114"/>
@@ -1070,380 +1118,395 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="153"/>
-        <location filename="../ui/main_window.cpp" line="421"/>
+        <location filename="../ui/main_window.cpp" line="161"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="423"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="248"/>
+        <location filename="../ui/main_window.cpp" line="256"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="259"/>
+        <location filename="../ui/main_window.cpp" line="267"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="266"/>
+        <location filename="../ui/main_window.cpp" line="274"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="273"/>
+        <location filename="../ui/main_window.cpp" line="281"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="387"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="390"/>
+        <location filename="../ui/main_window.cpp" line="403"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="395"/>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="409"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="408"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="418"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="562"/>
+        <location filename="../ui/main_window.cpp" line="575"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="588"/>
+        <location filename="../ui/main_window.cpp" line="601"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="388"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="389"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="391"/>
+        <location filename="../ui/main_window.cpp" line="404"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="376"/>
+        <location filename="../ui/main_window.cpp" line="389"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="378"/>
+        <location filename="../ui/main_window.cpp" line="391"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="392"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="407"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="661"/>
+        <location filename="../ui/main_window.cpp" line="632"/>
+        <source>Stopped by the watch: %1</source>
+        <translation>Остановлено наблюдением: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="648"/>
+        <source>Simulation Stopped</source>
+        <translation>Симуляция остановлена</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="651"/>
+        <source>The run is paused. The last step that passed the watch ended at %1 s. The checks and their tolerances are in Simulation &gt; Watch.</source>
+        <translation>Прогон приостановлен. Последний шаг, прошедший проверку, закончился в %1 s. Проверки и их допуски — в меню Симуляция &gt; Наблюдение.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="713"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="375"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="377"/>
+        <location filename="../ui/main_window.cpp" line="390"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="397"/>
+        <location filename="../ui/main_window.cpp" line="410"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="398"/>
+        <location filename="../ui/main_window.cpp" line="411"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="399"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="444"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="749"/>
+        <location filename="../ui/main_window.cpp" line="801"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="393"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="483"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="410"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1617,6 +1680,97 @@
         <location filename="../ui/status_readout.cpp" line="76"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — физика не успевает; замедленный ход</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WatchMenu</name>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="119"/>
+        <source>&amp;Watch</source>
+        <translation>&amp;Наблюдение</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="121"/>
+        <source>Stop on &amp;Non-finite Numbers</source>
+        <translation>Останавливать при &amp;не конечных числах</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="122"/>
+        <source>Stop on &amp;Energy Rise</source>
+        <translation>Останавливать при &amp;росте энергии</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="124"/>
+        <source>Only where no restitution exceeds 1, so that energy can only fall</source>
+        <translation>Только если ни один коэффициент восстановления не больше 1, так что энергия может лишь убывать</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="125"/>
+        <source>Stop on Escape Through a &amp;Solid</source>
+        <translation>Останавливать при уходе сквозь &amp;тело</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="126"/>
+        <source>Stop on Deep &amp;Penetration</source>
+        <translation>Останавливать при глубоком &amp;проникновении</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="127"/>
+        <source>&amp;Tolerances…</source>
+        <translation>&amp;Допуски…</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WatchToleranceDialog</name>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="15"/>
+        <source>Watch Tolerances</source>
+        <translation>Допуски наблюдения</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="27"/>
+        <source>Energy rise</source>
+        <translation>Рост энергии</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="29"/>
+        <source>How far the total energy may rise above its value at the start, as a fraction of the scene&apos;s energy scale (kinetic energy plus the balls&apos; weight times the scene&apos;s height)</source>
+        <translation>Насколько полная энергия может превысить начальную, в долях масштаба энергии сцены (кинетическая энергия плюс вес шаров, умноженный на высоту сцены)</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="32"/>
+        <source>Escape depth</source>
+        <translation>Глубина ухода</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="34"/>
+        <source>How far a ball&apos;s centre may be past a solid&apos;s surface, as a fraction of its radius</source>
+        <translation>Насколько центр шара может зайти за поверхность тела, в долях его радиуса</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="35"/>
+        <source>Penetration</source>
+        <translation>Проникновение</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="36"/>
+        <source>How deep an overlap may be, as a fraction of the smaller radius</source>
+        <translation>Насколько глубоким может быть перекрытие, в долях меньшего радиуса</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="39"/>
+        <source>Energy rise:</source>
+        <translation>Рост энергии:</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="40"/>
+        <source>Escape depth:</source>
+        <translation>Глубина ухода:</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="41"/>
+        <source>Penetration:</source>
+        <translation>Проникновение:</translation>
     </message>
 </context>
 <context>

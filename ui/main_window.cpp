@@ -3,6 +3,7 @@
 #include "ui/accuracy_window.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
@@ -22,6 +23,8 @@
 #include "ui/simulation_sync.h"
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"
+#include "ui/watch_menu.h"
+#include "ui/watch_text.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -34,6 +37,7 @@
 #include <QDropEvent>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
@@ -138,6 +142,10 @@ QWidget* MainWindow::view() const {
 
 QString MainWindow::statusText() const {
   return status_->text();
+}
+
+QMessageBox* MainWindow::watchDialog() const {
+  return watchDialog_;
 }
 
 int MainWindow::framesRendered() const {
@@ -304,6 +312,11 @@ void MainWindow::buildMenus() {
   simulationMenu_->addActions({playAction_, stepAction_, resetAction_});
   simulationMenu_->addSeparator();
   accuracyAction_ = simulationMenu_->addAction(QString(), this, [this] { openAccuracyWindow(); });
+  watchMenu_ = new WatchMenu(this);
+  simulationMenu_->addMenu(watchMenu_);
+  connect(watchMenu_, &WatchMenu::settingsChanged, simulation_.get(),
+          &SimulationController::setWatchSettings);
+  simulation_->setWatchSettings(watchMenu_->settings());
   simulationMenu_->addSeparator();
   simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
 
@@ -604,6 +617,45 @@ void MainWindow::showSnapshot() {
   energyPlot_->add(*snapshot);
   sound_->play(snapshot->collisions);
   status_->showSnapshot(snapshot);
+  if (snapshot->watchEvents != watchEventsShown_) {
+    watchEventsShown_ = snapshot->watchEvents;
+    if (snapshot->watchEvent) showWatchEvent(*snapshot);
+  }
+}
+
+void MainWindow::showWatchEvent(const SimulationSnapshot& snapshot) {
+  const WatchEvent& event = *snapshot.watchEvent;
+  playAction_->setChecked(false);  // the worker has paused; the control follows
+  const Scene& scene = document_->scene();
+  const QString text = watchEventText(event, scene);
+  // Stays until another message replaces it: the dialog may be closed before it is read.
+  statusBar()->showMessage(tr("Stopped by the watch: %1").arg(text));
+  if (event.ball >= 0 && event.ball < int(scene.balls.size())) {
+    document_->setSelection({{editor::ObjectKind::Ball, event.ball}});
+    const bool known =
+        event.ball < int(snapshot.positions.size()) && snapshot.positions[event.ball].allFinite();
+    if (known) {
+      const Vec3 reach = Vec3::Constant(kWatchFrameRadii * scene.balls[event.ball].radius);
+      const Vec3& centre = snapshot.positions[event.ball];
+      view_->setFollowedBall(-1);
+      view_->camera().frame({centre - reach, centre + reach});
+      view_->update();
+    }
+  }
+  // Shown without waiting: snapshots keep coming while it is up. A newer event replaces it.
+  if (watchDialog_) watchDialog_->close();
+  auto* box =
+      new QMessageBox(QMessageBox::Warning, tr("Simulation Stopped"), text, QMessageBox::Ok, this);
+  box->setObjectName("watchDialog");
+  box->setInformativeText(
+      tr("The run is paused. The last step that passed the watch ended at %1 s. The checks "
+         "and their tolerances are in Simulation > Watch.")
+          .arg(editor::formatShortNumber(event.lastGoodTime)));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setWindowModality(Qt::WindowModal);
+  watchDialog_ = box;
+  box->show();
+  emit watchStopped(event);
 }
 
 // ---- Files ---------------------------------------------------------------------------------

@@ -59,5 +59,8 @@ void SimulationController::setSpeed(double factor) {
 void SimulationController::setWorld(const carom::World& world) {
   post([worker = worker_, world] { worker->setWorld(world); });
 }
+void SimulationController::setWatchSettings(const carom::WatchSettings& settings) {
+  post([worker = worker_, settings] { worker->setWatchSettings(settings); });
+}
 
 }  // namespace carom::ui

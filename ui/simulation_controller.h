@@ -2,6 +2,7 @@
 // The GUI's handle on the simulation: owns the worker thread and forwards every request to the
 // worker as a queued call (CallQueue), so nothing here ever waits on the physics.
 
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
 
@@ -31,6 +32,8 @@ class SimulationController : public QObject {
   void setSpeed(double factor);
   // New world settings (valid), applied from the running state on.
   void setWorld(const carom::World& world);
+  // The run watch's checks (valid), from the next step on.
+  void setWatchSettings(const carom::WatchSettings& settings);
 
   // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }

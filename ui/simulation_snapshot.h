@@ -3,11 +3,13 @@
 // publishes a new one after each batch of steps; the GUI reads the latest without waiting.
 
 #include "sim/run_stats.h"
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace carom::ui {
@@ -28,6 +30,11 @@ struct SimulationSnapshot {
   bool running = false;
   double realTimeFactor = 0.0;  // simulated seconds per real second, over the last batch
   bool fallingBehind = false;   // the physics could not keep up with the requested speed
+  // The run watch's latest event and how many there have been since the worker started. Every
+  // later snapshot carries them too, so that an event is not lost with a snapshot the GUI never
+  // took: the GUI shows an event when the count has changed. The worker paused on it.
+  std::optional<WatchEvent> watchEvent;
+  std::uint64_t watchEvents = 0;
 };
 
 // A single-slot mailbox: the writer swaps in a new snapshot, the reader takes the latest. The

@@ -39,6 +39,7 @@ void SimulationWorker::reset() {
   simulation_ = std::make_unique<Simulation>(scene_);
   simulation_->setCollisionLog(true);
   initialEnergy_ = simulation_->totalEnergy();
+  watch_.rebase(*simulation_);
   owed_ = 0.0;
   sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   if (!timer_) {
@@ -64,6 +65,7 @@ void SimulationWorker::stepOnce() {
   if (!simulation_) return;
   running_ = false;
   simulation_->step();
+  watchStep();
   publish();
 }
 
@@ -77,7 +79,24 @@ void SimulationWorker::setWorld(const carom::World& world) {
   scene_.world = world;
   simulation_->setWorld(world);
   if (newGravity) initialEnergy_ = simulation_->totalEnergy();  // measured in the new field
+  // New settings do work on the balls (stronger gravity, a livelier restitution): the energy
+  // the watch compares with starts again here.
+  watch_.rebase(*simulation_);
   publish();
+}
+
+void SimulationWorker::setWatchSettings(const carom::WatchSettings& settings) {
+  watch_.setSettings(settings);
+}
+
+bool SimulationWorker::watchStep() {
+  std::optional<WatchEvent> event = watch_.check(*simulation_);
+  if (!event) return true;
+  watchEvent_ = std::move(event);
+  ++watchEvents_;
+  running_ = false;
+  owed_ = 0.0;
+  return false;
 }
 
 void SimulationWorker::tick() {
@@ -93,6 +112,7 @@ void SimulationWorker::tick() {
   while (owed_ >= dt && work.nsecsElapsed() * 1e-9 < kWorkBudgetSeconds) {
     simulation_->step();
     owed_ -= dt;
+    if (!watchStep()) break;
   }
   sinceBacklogDropped_ += elapsed;
   if (owed_ > kMaxBacklogSeconds * std::max(speed_, 1e-9) + dt) {
@@ -132,6 +152,8 @@ void SimulationWorker::publish() {
   snapshot->running = running_;
   snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
   snapshot->fallingBehind = running_ && sinceBacklogDropped_ < kFallingBehindHoldSeconds;
+  snapshot->watchEvent = watchEvent_;
+  snapshot->watchEvents = watchEvents_;
   if (exchange_.publish(std::move(snapshot))) emit snapshotPublished();
 }
 

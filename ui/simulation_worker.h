@@ -3,6 +3,7 @@
 // through queued calls (SimulationController) and reads its results from the SnapshotExchange,
 // so the GUI never waits on the physics and the worker never touches a widget.
 
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
 
@@ -35,6 +36,8 @@ class SimulationWorker : public QObject {
   void reset();
   void setSpeed(double factor);  // simulated seconds per real second
   void setWorld(const carom::World& world);
+  // The run watch's checks (valid settings), from the next step on; all off: no watch.
+  void setWatchSettings(const carom::WatchSettings& settings);
 
  signals:
   // A new snapshot is in the exchange (at most one per batch of steps).
@@ -43,6 +46,9 @@ class SimulationWorker : public QObject {
  private:
   void tick();
   void publish();
+  // After a step: runs the watch; on an event pauses and keeps it for the snapshots. True when
+  // the run goes on.
+  bool watchStep();
 
   SnapshotExchange& exchange_;
   Scene scene_;
@@ -60,6 +66,9 @@ class SimulationWorker : public QObject {
   // blink on and off with every batch.
   double sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   std::uint64_t startNumber_ = 0;
+  RunWatch watch_;
+  std::optional<WatchEvent> watchEvent_;
+  std::uint64_t watchEvents_ = 0;
 };
 
 }  // namespace carom::ui
