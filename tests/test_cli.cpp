@@ -1000,6 +1000,16 @@ class TestCli : public QObject {
     QVERIFY2(run.out.contains("diverged: escape, ball 1 (\"nut\"), at 0.1 s (last good step 0 s)"),
              qPrintable(run.describe()));
     QVERIFY2(run.err.contains("stopped by the watch at 0.1 of 10 s"), qPrintable(run.describe()));
+    // A trajectory ends with the state the watch stopped on.
+    const QString csv = dir_.filePath("crush.csv");
+    const CliRun traced =
+        runCli({"run", crushScene(), "--stop-on-divergence", "--trajectory", csv});
+    VERIFY_EXIT(traced, 3);
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = file.readAll().trimmed().split('\n');
+    QCOMPARE(rows.size(), 1 + 2 + 2);  // the header, then both balls at 0 and at 0.1 s
+    QVERIFY2(rows.last().startsWith("0.1"), rows.last().constData());
   }
 
   void stopOnDivergenceJson() {

@@ -348,7 +348,8 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
       trajectory.isOpen() ? 1
                           : std::max<std::uint64_t>(
                                 1, std::uint64_t(std::ceil(double(ticks) / kOverlapCheckpoints)));
-  // The watch looks after every tick: the runs it watches go a tick a slice.
+  // The watch looks after every tick: the runs it watches go a tick a slice (and keep one if a
+  // tick takes longer than a slice).
   std::optional<RunWatch> watch;
   if (options.stopOnDivergence) {
     watch.emplace(options.watch);
@@ -371,6 +372,19 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
     const double sliceSeconds = slice.nsecsElapsed() * 1e-9;
     result.runSeconds += sliceSeconds;
     done = next;
+    if (!watch && sliceSeconds < 0.5 * kSliceSeconds && sliceTicks < (std::uint64_t{1} << 62))
+      sliceTicks *= 2;
+    else if (sliceSeconds > 2.0 * kSliceSeconds && sliceTicks > 1)
+      sliceTicks /= 2;
+    if (done == nextCheckpoint) {
+      measuring.restart();
+      const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
+      result.maxPenetration = std::max(result.maxPenetration, overlaps.maxPenetration);
+      if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
+        return trajectoryFailed(trajectory, err);
+      result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
+    }
+    // After the trajectory's row, so that the file ends with the state the watch stopped on.
     if (watch) {
       measuring.restart();
       result.divergence = watch->check(sim);
@@ -381,17 +395,6 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
           result.divergedBallName = QString::fromStdString(scene.balls[ball].name);
         break;
       }
-    } else if (sliceSeconds < 0.5 * kSliceSeconds && sliceTicks < (std::uint64_t{1} << 62)) {
-      sliceTicks *= 2;
-    }
-    if (sliceSeconds > 2.0 * kSliceSeconds && sliceTicks > 1) sliceTicks /= 2;
-    if (done == nextCheckpoint) {
-      measuring.restart();
-      const OverlapReport overlaps = measureOverlaps(sim.bodies(), sim.positions());
-      result.maxPenetration = std::max(result.maxPenetration, overlaps.maxPenetration);
-      if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
-        return trajectoryFailed(trajectory, err);
-      result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
     }
     progress.update(sim.time());
   }
