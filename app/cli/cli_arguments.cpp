@@ -218,7 +218,7 @@ QString usageText() {
       "      first: a non-finite position or velocity (non-finite), total energy above its\n"
       "      start by more than F (default 0.05) of the scene's energy scale when no\n"
       "      restitution exceeds 1 (energy-rise), a ball's centre F radii (default 0) inside a\n"
-      "      solid (escape), an overlap deeper than F (default 0.1) of the smaller radius\n"
+      "      solid (escape), an overlap deeper than F (default 0.5) of the smaller radius\n"
       "      (penetration). It prints the report so far and the event (kind, ball, time)\n"
       "      and exits with 3. --watch-off turns the checks named off.\n"
       "  carom-cli validate SCENE\n"
