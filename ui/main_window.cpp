@@ -632,12 +632,12 @@ void MainWindow::showWatchEvent(const SimulationSnapshot& snapshot) {
   statusBar()->showMessage(tr("Stopped by the watch: %1").arg(text));
   if (event.ball >= 0 && event.ball < int(scene.balls.size())) {
     document_->setSelection({{editor::ObjectKind::Ball, event.ball}});
+    // Following a ball, the view now follows this one (the selection's); otherwise it frames it.
     const bool known =
         event.ball < int(snapshot.positions.size()) && snapshot.positions[event.ball].allFinite();
-    if (known) {
+    if (known && !followAction_->isChecked()) {
       const Vec3 reach = Vec3::Constant(kWatchFrameRadii * scene.balls[event.ball].radius);
       const Vec3& centre = snapshot.positions[event.ball];
-      view_->setFollowedBall(-1);
       view_->camera().frame({centre - reach, centre + reach});
       view_->update();
     }
