@@ -279,6 +279,8 @@ class TestCli : public QObject {
     QVERIFY2(run.out.contains("carom-cli validate"), run.out.constData());
     QVERIFY2(run.out.contains("carom-cli bench"), run.out.constData());
     QVERIFY2(run.out.contains("carom-cli study"), run.out.constData());
+    QVERIFY2(run.out.contains("--stop-on-divergence"), run.out.constData());
+    QVERIFY2(run.out.contains("3 stopped by the watch"), run.out.constData());
     QVERIFY2(run.err.isEmpty(), run.err.constData());
   }
 
@@ -675,6 +677,21 @@ class TestCli : public QObject {
         << QStringList{"run", scene, "--duration", "abc"} << QStringList{"--duration", "abc"};
     QTest::newRow("--duration without value")
         << QStringList{"run", scene, "--duration"} << QStringList{"--duration", "value"};
+    QTest::newRow("--watch-penetration -1")
+        << QStringList{"run", scene, "--stop-on-divergence", "--watch-penetration", "-1"}
+        << QStringList{"--watch-penetration", "'-1'"};
+    QTest::newRow("--watch-energy-rise nan")
+        << QStringList{"run", scene, "--stop-on-divergence", "--watch-energy-rise", "nan"}
+        << QStringList{"--watch-energy-rise", "nan"};
+    QTest::newRow("--watch-escape without value")
+        << QStringList{"run", scene, "--stop-on-divergence", "--watch-escape"}
+        << QStringList{"--watch-escape", "value"};
+    QTest::newRow("--watch-off unknown check")
+        << QStringList{"run", scene, "--stop-on-divergence", "--watch-off", "escape,speed"}
+        << QStringList{"--watch-off", "'speed'", "energy-rise"};
+    QTest::newRow("watch option without --stop-on-divergence")
+        << QStringList{"run", scene, "--watch-off", "escape"}
+        << QStringList{"--stop-on-divergence"};
     QTest::newRow("--trajectory into missing directory")
         << QStringList{"run", scene, "--json", "--trajectory", noDir}
         << QStringList{"trajectory", noDir};
@@ -960,6 +977,91 @@ class TestCli : public QObject {
 
   // A FIFO with no writer would block a read forever: anything but a regular file is refused
   // at once, before it is opened.
+  // --- the watch: --stop-on-divergence ---
+
+  // A heavy ball crushes a light one against a thick box at a step far too long for it: the
+  // light ball's centre ends up in the box after the first step (test_watch has the same).
+  QString crushScene() {
+    return writeFile("crush.json", sceneText(R"(
+ "world": {"gravity": [0, 0, 0], "timeStep": 0.1, "method": "discrete"},
+ "boxes": [{"center": [1, 0, 0], "halfExtents": [0.5, 1, 1]}],
+ "balls": [
+  {"position": [-0.5, 0, 0], "velocity": [8, 0, 0], "radius": 0.3, "mass": 1000},
+  {"position": [0.39, 0, 0], "velocity": [0, 0, 0], "radius": 0.1, "mass": 0.001, "name": "nut"}
+ ])",
+                                             2));
+  }
+
+  void stopOnDivergenceText() {
+    const CliRun run = runCli({"run", crushScene(), "--stop-on-divergence"});
+    VERIFY_EXIT(run, 3);
+    QVERIFY2(run.out.startsWith("method:"), qPrintable(run.describe()));
+    QVERIFY2(run.out.contains("simulated: 0.1 s"), qPrintable(run.describe()));
+    QVERIFY2(run.out.contains("diverged: escape, ball 1 (\"nut\"), at 0.1 s (last good step 0 s)"),
+             qPrintable(run.describe()));
+    QVERIFY2(run.err.contains("stopped by the watch at 0.1 of 10 s"), qPrintable(run.describe()));
+    // A trajectory ends with the state the watch stopped on.
+    const QString csv = dir_.filePath("crush.csv");
+    const CliRun traced =
+        runCli({"run", crushScene(), "--stop-on-divergence", "--trajectory", csv});
+    VERIFY_EXIT(traced, 3);
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = file.readAll().trimmed().split('\n');
+    QCOMPARE(rows.size(), 1 + 2 + 2);  // the header, then both balls at 0 and at 0.1 s
+    QVERIFY2(rows.last().startsWith("0.1"), rows.last().constData());
+  }
+
+  void stopOnDivergenceJson() {
+    // With the escape check off the centre in the box is an overlap of two radii.
+    const CliRun run =
+        runCli({"run", crushScene(), "--stop-on-divergence", "--watch-off", "escape", "--json"});
+    VERIFY_EXIT(run, 3);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    const QJsonObject divergence = report["divergence"].toObject();
+    QCOMPARE(divergence["kind"].toString(), QString("penetration"));
+    QCOMPARE(divergence["ball"].toInt(-1), 1);
+    QCOMPARE(divergence["ballName"].toString(), QString("nut"));
+    QCOMPARE(divergence["time"].toDouble(), 0.1);
+    QCOMPARE(divergence["lastGoodTime"].toDouble(-1), 0.0);
+    QCOMPARE(divergence["tolerance"].toDouble(), 0.5);
+    QVERIFY2(divergence["value"].toDouble() > 1.9, qPrintable(run.describe()));
+    QCOMPARE(report["simulatedTime"].toDouble(), 0.1);
+  }
+
+  void watchOffRunsToTheEnd() {
+    const CliRun run = runCli({"run", crushScene(), "--stop-on-divergence", "--watch-off",
+                               "escape,penetration", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    QVERIFY2(report["divergence"].isNull(), qPrintable(run.describe()));
+    QCOMPARE(report["simulatedTime"].toDouble(), 10.0);
+    // A tolerance wider than the overlap lets the same run through.
+    const CliRun wide = runCli({"run", crushScene(), "--stop-on-divergence", "--watch-off",
+                                "escape", "--watch-penetration", "2.5"});
+    VERIFY_EXIT(wide, 0);
+    QVERIFY2(!wide.out.contains("diverged"), qPrintable(wide.describe()));
+  }
+
+  void watchSilentOnCorrectRuns_data() {
+    QTest::addColumn<QString>("method");
+    QTest::newRow("exact") << "exact";
+    QTest::newRow("swept") << "swept";
+  }
+  void watchSilentOnCorrectRuns() {
+    QFETCH(QString, method);
+    const CliRun run = runCli({"run", magicRoom(), "--method", method, "--duration", "20",
+                               "--stop-on-divergence", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    QVERIFY2(report.contains("divergence") && report["divergence"].isNull(),
+             qPrintable(run.describe()));
+    // Without the option the report has no such key.
+    const CliRun plain = runCli({"run", magicRoom(), "--duration", "1", "--json"});
+    VERIFY_EXIT(plain, 0);
+    QVERIFY(!QJsonDocument::fromJson(plain.out).object().contains("divergence"));
+  }
+
   void nonRegularFileIsRefused_data() {
     QTest::addColumn<QString>("command");
     QTest::newRow("validate") << "validate";

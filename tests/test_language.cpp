@@ -13,6 +13,7 @@
 #include "ui/help_dialogs.h"
 #include "ui/image_export.h"
 #include "ui/language.h"
+#include "ui/watch_menu.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -128,6 +129,9 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   QTRY_COMPARE(menuTitles().first(), QString("Datei"));
   QVERIFY2(menuTitles().contains("Hilfe"), qPrintable(menuTitles().join(", ")));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Starten"));
+  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Überwachung"));
+  QCOMPARE(window_->findChild<QAction*>("watchTolerances")->text().remove('&'),
+           QString("Toleranzen…"));
   QCOMPARE(window_->findChild<QAction*>("toolAddBall")->text(), QString("Kugel hinzufügen"));
   QCOMPARE(window_->findChild<QAction*>("toolAddBall")->toolTip(), QString("Kugel hinzufügen (B)"));
   QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Eigenschaften"));
@@ -153,6 +157,7 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   chooseLanguage("en");
   QTRY_COMPARE(menuTitles().first(), QString("File"));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Run"));
+  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Watch"));
   QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Properties"));
   QCOMPARE(labelOf("timeStep"), QString("Time step"));
   QCOMPARE(gravityY->text(), QString("-9.81"));

@@ -520,6 +520,54 @@
     </message>
 </context>
 <context>
+    <name>carom::ui</name>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="16"/>
+        <source>ball %1 (%2)</source>
+        <translation>Kugel %1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="17"/>
+        <source>ball %1</source>
+        <translation>Kugel %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="31"/>
+        <source>plane %1</source>
+        <translation>Ebene %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="33"/>
+        <source>cylinder %1</source>
+        <translation>Zylinder %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="36"/>
+        <source>box %1</source>
+        <translation>Quader %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="50"/>
+        <source>At %1 s %2 has a position or velocity that is not a finite number.</source>
+        <translation>Bei %1 s hat %2 eine Position oder Geschwindigkeit, die keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="53"/>
+        <source>At %1 s the energy rose by %2 of the scene&apos;s energy scale (tolerance %3); %4 gained the most.</source>
+        <translation>Bei %1 s stieg die Energie um %2 der Energieskala der Szene (Toleranz %3); %4 gewann am meisten.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="57"/>
+        <source>At %1 s %2 got inside %3: its centre is %4 of its radius past the surface.</source>
+        <translation>Bei %1 s geriet %2 in %3: Ihr Mittelpunkt liegt %4 ihres Radius hinter der Oberfläche.</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_text.cpp" line="60"/>
+        <source>At %1 s %2 overlaps %3 by %4 of the radius (tolerance %5).</source>
+        <translation>Bei %1 s überlappt %2 mit %3 um %4 des Radius (Toleranz %5).</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
         <location filename="../ui/accuracy_window.cpp" line="114"/>
@@ -1248,415 +1296,435 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="539"/>
+        <location filename="../ui/main_window.cpp" line="553"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="207"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="504"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="207"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="506"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="535"/>
+        <location filename="../ui/main_window.cpp" line="549"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="534"/>
+        <location filename="../ui/main_window.cpp" line="548"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="536"/>
+        <location filename="../ui/main_window.cpp" line="550"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="551"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="538"/>
+        <location filename="../ui/main_window.cpp" line="552"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="522"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="509"/>
+        <location filename="../ui/main_window.cpp" line="523"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="525"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="529"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
+        <location filename="../ui/main_window.cpp" line="302"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="517"/>
+        <location filename="../ui/main_window.cpp" line="531"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="518"/>
+        <location filename="../ui/main_window.cpp" line="532"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="519"/>
+        <location filename="../ui/main_window.cpp" line="533"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="304"/>
+        <location filename="../ui/main_window.cpp" line="313"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="311"/>
+        <location filename="../ui/main_window.cpp" line="320"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="318"/>
+        <location filename="../ui/main_window.cpp" line="327"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="502"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="632"/>
+        <location filename="../ui/main_window.cpp" line="646"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="658"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="360"/>
+        <location filename="../ui/main_window.cpp" line="374"/>
         <source>Throw Speed Limit</source>
         <translation>Wurfgeschwindigkeitsgrenze</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="360"/>
+        <location filename="../ui/main_window.cpp" line="374"/>
         <source>Fastest throw of a grabbed ball (m/s):</source>
         <translation>Schnellster Wurf einer gegriffenen Kugel (m/s):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="368"/>
+        <location filename="../ui/main_window.cpp" line="382"/>
         <source>Timeline Memory</source>
         <translation>Speicher der Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="368"/>
+        <location filename="../ui/main_window.cpp" line="382"/>
         <source>Memory for the recorded run (MiB):</source>
         <translation>Speicher für den aufgezeichneten Lauf (MiB):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="543"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="544"/>
+        <location filename="../ui/main_window.cpp" line="558"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="546"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.cpp" line="711"/>
+        <source>Stopped by the watch: %1</source>
+        <translation>Von der Überwachung angehalten: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="727"/>
+        <source>Simulation Stopped</source>
+        <translation>Simulation angehalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="730"/>
+        <source>The run is paused. The last step that passed the watch ended at %1 s. The checks and their tolerances are in Simulation &gt; Watch.</source>
+        <translation>Der Lauf ist pausiert. Der letzte Schritt, der die Überwachung bestand, endete bei %1 s. Die Prüfungen und ihre Toleranzen stehen unter Simulation &gt; Überwachung.</translation>
+    </message>
+    <message>
         <location filename="../ui/main_window.cpp" line="737"/>
+        <source>Show the Moment Before</source>
+        <translation>Den Moment davor zeigen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="802"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="444"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="483"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="825"/>
+        <location filename="../ui/main_window.cpp" line="890"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="542"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="547"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="540"/>
+        <location filename="../ui/main_window.cpp" line="554"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1850,6 +1918,97 @@
         <location filename="../ui/timeline_bar.cpp" line="66"/>
         <source>replayed in %1 ms</source>
         <translation>nachgespielt in %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WatchMenu</name>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="119"/>
+        <source>&amp;Watch</source>
+        <translation>Ü&amp;berwachung</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="121"/>
+        <source>Stop on &amp;Non-finite Numbers</source>
+        <translation>Bei &amp;nicht endlichen Zahlen anhalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="122"/>
+        <source>Stop on &amp;Energy Rise</source>
+        <translation>Bei &amp;Energieanstieg anhalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="124"/>
+        <source>Only where no restitution exceeds 1, so that energy can only fall</source>
+        <translation>Nur wenn keine Stoßzahl größer als 1 ist, sodass die Energie nur fallen kann</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="125"/>
+        <source>Stop on Escape Through a &amp;Solid</source>
+        <translation>Bei Flucht durch einen &amp;Festkörper anhalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="126"/>
+        <source>Stop on Deep &amp;Penetration</source>
+        <translation>Bei tiefem &amp;Eindringen anhalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_menu.cpp" line="127"/>
+        <source>&amp;Tolerances…</source>
+        <translation>&amp;Toleranzen…</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WatchToleranceDialog</name>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="15"/>
+        <source>Watch Tolerances</source>
+        <translation>Toleranzen der Überwachung</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="27"/>
+        <source>Energy rise</source>
+        <translation>Energieanstieg</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="29"/>
+        <source>How far the total energy may rise above its value at the start, as a fraction of the scene&apos;s energy scale (kinetic energy plus the balls&apos; weight times the scene&apos;s height)</source>
+        <translation>Wie weit die Gesamtenergie über ihren Anfangswert steigen darf, als Anteil der Energieskala der Szene (kinetische Energie plus Gewicht der Kugeln mal Höhe der Szene)</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="32"/>
+        <source>Escape depth</source>
+        <translation>Fluchttiefe</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="34"/>
+        <source>How far a ball&apos;s centre may be past a solid&apos;s surface, as a fraction of its radius</source>
+        <translation>Wie weit der Mittelpunkt einer Kugel hinter der Oberfläche eines Festkörpers liegen darf, als Anteil ihres Radius</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="35"/>
+        <source>Penetration</source>
+        <translation>Eindringtiefe</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="36"/>
+        <source>How deep an overlap may be, as a fraction of the smaller radius</source>
+        <translation>Wie tief eine Überlappung sein darf, als Anteil des kleineren Radius</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="39"/>
+        <source>Energy rise:</source>
+        <translation>Energieanstieg:</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="40"/>
+        <source>Escape depth:</source>
+        <translation>Fluchttiefe:</translation>
+    </message>
+    <message>
+        <location filename="../ui/watch_tolerance_dialog.cpp" line="41"/>
+        <source>Penetration:</source>
+        <translation>Eindringtiefe:</translation>
     </message>
 </context>
 <context>

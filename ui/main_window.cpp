@@ -4,6 +4,7 @@
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
@@ -27,6 +28,8 @@
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"
 #include "ui/timeline_bar.h"
+#include "ui/watch_menu.h"
+#include "ui/watch_text.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -40,7 +43,9 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -183,6 +188,10 @@ QWidget* MainWindow::view() const {
 
 QString MainWindow::statusText() const {
   return status_->text();
+}
+
+QMessageBox* MainWindow::watchDialog() const {
+  return watchDialog_;
 }
 
 int MainWindow::framesRendered() const {
@@ -351,6 +360,11 @@ void MainWindow::buildMenus() {
   simulationMenu_->addActions({playAction_, stepAction_, resetAction_});
   simulationMenu_->addSeparator();
   accuracyAction_ = simulationMenu_->addAction(QString(), this, [this] { openAccuracyWindow(); });
+  watchMenu_ = new WatchMenu(this);
+  simulationMenu_->addMenu(watchMenu_);
+  connect(watchMenu_, &WatchMenu::settingsChanged, simulation_.get(),
+          &SimulationController::setWatchSettings);
+  simulation_->setWatchSettings(watchMenu_->settings());
   simulationMenu_->addSeparator();
   simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
   simulationMenu_->addSeparator();
@@ -682,6 +696,52 @@ void MainWindow::showSnapshot() {
   timeline_->showSnapshot(*snapshot);
   grab_->showSnapshot(*snapshot);
   status_->showSnapshot(snapshot);
+  if (snapshot->watchEvents != watchEventsShown_) {
+    watchEventsShown_ = snapshot->watchEvents;
+    if (snapshot->watchEvent) showWatchEvent(*snapshot);
+  }
+}
+
+void MainWindow::showWatchEvent(const SimulationSnapshot& snapshot) {
+  const WatchEvent& event = *snapshot.watchEvent;
+  playAction_->setChecked(false);  // the worker has paused; the control follows
+  const Scene& scene = document_->scene();
+  const QString text = watchEventText(event, scene);
+  // Stays until another message replaces it: the dialog may be closed before it is read.
+  statusBar()->showMessage(tr("Stopped by the watch: %1").arg(text));
+  if (event.ball >= 0 && event.ball < int(scene.balls.size())) {
+    document_->setSelection({{editor::ObjectKind::Ball, event.ball}});
+    // Following a ball, the view now follows this one (the selection's); otherwise it frames it.
+    const bool known =
+        event.ball < int(snapshot.positions.size()) && snapshot.positions[event.ball].allFinite();
+    if (known && !followAction_->isChecked()) {
+      const Vec3 reach = Vec3::Constant(kWatchFrameRadii * scene.balls[event.ball].radius);
+      const Vec3& centre = snapshot.positions[event.ball];
+      view_->camera().frame({centre - reach, centre + reach});
+      view_->update();
+    }
+  }
+  // Shown without waiting: snapshots keep coming while it is up. A newer event replaces it.
+  if (watchDialog_) watchDialog_->close();
+  auto* box =
+      new QMessageBox(QMessageBox::Warning, tr("Simulation Stopped"), text, QMessageBox::Ok, this);
+  box->setObjectName("watchDialog");
+  box->setInformativeText(
+      tr("The run is paused. The last step that passed the watch ended at %1 s. The checks "
+         "and their tolerances are in Simulation > Watch.")
+          .arg(editor::formatShortNumber(event.lastGoodTime)));
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setWindowModality(Qt::WindowModal);
+  // The timeline holds the frame before the event: the last one that passed.
+  if (snapshot.frameCount > 0) {
+    QPushButton* before = box->addButton(tr("Show the Moment Before"), QMessageBox::ActionRole);
+    before->setObjectName("showMomentBefore");
+    const std::uint64_t frame = snapshot.frameCount - 1;
+    connect(before, &QPushButton::clicked, this, [this, frame] { simulation_->showFrame(frame); });
+  }
+  watchDialog_ = box;
+  box->show();
+  emit watchStopped(event);
 }
 
 // ---- Files ---------------------------------------------------------------------------------

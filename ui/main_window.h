@@ -2,10 +2,12 @@
 // The sandbox window: the 3D view in the centre, the simulation controls on a toolbar, the
 // numbers in the status bar. It observes the simulation through snapshots and never waits on it.
 
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 
 #include <functional>
@@ -16,6 +18,7 @@ class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QMessageBox;
 class QToolBar;
 
 namespace carom::editor {
@@ -36,6 +39,7 @@ class NumberBox;
 class StatusReadout;
 class TimelineBar;
 class GrabControl;
+class WatchMenu;
 class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
@@ -91,6 +95,15 @@ class MainWindow : public QMainWindow {
   AccuracyWindow* openAccuracyWindow(double duration = 5.0);
   // Frames drawn and snapshots shown so far (for the status line and tests).
   int framesRendered() const;
+  // Simulation > Watch, and the dialog of the last event the watch stopped the run on while it
+  // is open.
+  WatchMenu* watchMenu() const { return watchMenu_; }
+  QMessageBox* watchDialog() const;
+
+ signals:
+  // The run watch paused the run on `event`, which the window has shown. `event.lastGoodTime`
+  // is the last step the watch passed: the moment a timeline should offer to go back to.
+  void watchStopped(const carom::WatchEvent& event);
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -118,6 +131,8 @@ class MainWindow : public QMainWindow {
   void buildMenus();
   void buildHelpMenu();
   void showSnapshot();
+  // Pauses, says what happened in the status bar and a dialog, selects the ball and frames it.
+  void showWatchEvent(const SimulationSnapshot& snapshot);
   void changeTimeStep(double factor);
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
@@ -202,6 +217,11 @@ class MainWindow : public QMainWindow {
   std::size_t recordingBudget() const;
   static constexpr int kMinTimelineMebibytes = 16;
   static constexpr int kMaxTimelineMebibytes = 65536;
+  WatchMenu* watchMenu_ = nullptr;
+  std::uint64_t watchEventsShown_ = 0;  // the worker's count of events as of the last shown
+  QPointer<QMessageBox> watchDialog_;
+  // The view frames a ball the watch stopped on with this many radii around it.
+  static constexpr double kWatchFrameRadii = 8.0;
 };
 
 }  // namespace carom::ui

@@ -59,6 +59,9 @@ void SimulationController::setSpeed(double factor) {
 void SimulationController::setWorld(const carom::World& world) {
   post([worker = worker_, world] { worker->setWorld(world); });
 }
+void SimulationController::setWatchSettings(const carom::WatchSettings& settings) {
+  post([worker = worker_, settings] { worker->setWatchSettings(settings); });
+}
 
 void SimulationController::showFrame(std::uint64_t frame) {
   // A slider dragged fast asks for frames faster than they can be reproduced: only the newest

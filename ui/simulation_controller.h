@@ -2,6 +2,7 @@
 // The GUI's handle on the simulation: owns the worker thread and forwards every request to the
 // worker as a queued call (CallQueue), so nothing here ever waits on the physics.
 
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
 
@@ -40,6 +41,8 @@ class SimulationController : public QObject {
   void moveGrab(const carom::Vec3& target);
   void releaseGrab(const carom::Vec3& velocity);
   void setThrowLimit(double speed);
+  // The run watch's checks (valid), from the next step on.
+  void setWatchSettings(const carom::WatchSettings& settings);
 
   // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }

@@ -4,6 +4,7 @@
 
 #include "sim/grab.h"
 #include "sim/run_stats.h"
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 
 #include <cstdint>
@@ -40,6 +41,11 @@ struct SimulationSnapshot {
   int grabbed = -1;
   std::optional<GrabStop> grabStop;  // why the grab stopped, while it lasts
   bool throwCapped = false;          // the last throw was cut to the throw limit
+  // The run watch's latest event and how many there have been since the worker started. Every
+  // later snapshot carries them too, so that an event is not lost with a snapshot the GUI never
+  // took: the GUI shows an event when the count has changed. The worker paused on it.
+  std::optional<WatchEvent> watchEvent;
+  std::uint64_t watchEvents = 0;
 };
 
 // A single-slot mailbox: the writer swaps in a new snapshot, the reader takes the latest. The

@@ -53,6 +53,7 @@ void SimulationWorker::reset() {
   throwCapped_ = false;
   simulation_->setCollisionLog(true);
   initialEnergy_ = simulation_->totalEnergy();
+  watch_.rebase(*simulation_);
   owed_ = 0.0;
   sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   if (!timer_) {
@@ -81,6 +82,7 @@ void SimulationWorker::stepOnce() {
   running_ = false;
   recording_->step(*simulation_);
   noteGrabStop();
+  watchStep();
   publish();
 }
 
@@ -95,7 +97,27 @@ void SimulationWorker::setWorld(const carom::World& world) {
   scene_.world = world;
   intervene({Intervention::Kind::SetWorld, -1, Vec3::Zero(), world});
   if (newGravity) initialEnergy_ = simulation_->totalEnergy();  // measured in the new field
+  // New settings do work on the balls (stronger gravity, a livelier restitution): the energy
+  // the watch compares with starts again here.
+  watch_.rebase(*simulation_);
   publish();
+}
+
+void SimulationWorker::setWatchSettings(const carom::WatchSettings& settings) {
+  watch_.setSettings(settings);
+}
+
+bool SimulationWorker::watchStep() {
+  // A held ball does work on what it pushes: the energy the watch compares with follows it
+  // until the ball is let go.
+  if (simulation_->grabbed() >= 0) watch_.rebase(*simulation_);
+  std::optional<WatchEvent> event = watch_.check(*simulation_);
+  if (!event) return true;
+  watchEvent_ = std::move(event);
+  ++watchEvents_;
+  running_ = false;
+  owed_ = 0.0;
+  return false;
 }
 
 void SimulationWorker::tick() {
@@ -117,6 +139,7 @@ void SimulationWorker::tick() {
   while (owed_ >= dt && work.nsecsElapsed() * 1e-9 < kWorkBudgetSeconds) {
     recording_->step(*simulation_);
     owed_ -= dt;
+    if (!watchStep()) break;
   }
   noteGrabStop();
   sinceBacklogDropped_ += elapsed;
@@ -168,6 +191,8 @@ void SimulationWorker::goOnFromShownFrame() {
   grabStop_.reset();
   // A frame in the middle of a grab goes on without the hand that held it.
   if (simulation_->grabbed() >= 0) intervene({Intervention::Kind::Release, -1, Vec3::Zero(), {}});
+  // The watch compares with the frame the run goes on from.
+  watch_.rebase(*simulation_);
 }
 
 void SimulationWorker::intervene(const Intervention& what) {
@@ -178,6 +203,7 @@ void SimulationWorker::grab(int ball) {
   if (!simulation_ || ball < 0 || ball >= simulation_->ballCount()) return;
   goOnFromShownFrame();
   intervene({Intervention::Kind::Grab, ball, Vec3::Zero(), {}});
+  watch_.rebase(*simulation_);
   grabTarget_.reset();
   grabStop_.reset();
   throwCapped_ = false;
@@ -203,6 +229,7 @@ void SimulationWorker::releaseGrab(const Vec3& velocity) {
   throwCapped_ = thrown.norm() > throwLimit_;
   if (throwCapped_) thrown *= throwLimit_ / thrown.norm();
   intervene({Intervention::Kind::Release, -1, thrown, {}});
+  watch_.rebase(*simulation_);  // the throw gave the ball its energy
   grabTarget_.reset();
   grabStop_.reset();
   publish();
@@ -248,6 +275,8 @@ void SimulationWorker::publish() {
   snapshot->running = running_;
   snapshot->realTimeFactor = running_ ? lastRealTimeFactor_ : 0.0;
   snapshot->fallingBehind = running_ && sinceBacklogDropped_ < kFallingBehindHoldSeconds;
+  snapshot->watchEvent = watchEvent_;
+  snapshot->watchEvents = watchEvents_;
   if (exchange_.publish(std::move(snapshot))) emit snapshotPublished();
 }
 

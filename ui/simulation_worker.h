@@ -5,6 +5,7 @@
 
 #include "sim/grab.h"
 #include "sim/run_recording.h"
+#include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
 
@@ -40,6 +41,8 @@ class SimulationWorker : public QObject {
   void reset();
   void setSpeed(double factor);  // simulated seconds per real second
   void setWorld(const carom::World& world);
+  // The run watch's checks (valid settings), from the next step on; all off: no watch.
+  void setWatchSettings(const carom::WatchSettings& settings);
 
   // The timeline (sim/run_recording.h): shows frame `frame` of the recorded run, paused. Play,
   // a step, a grab or a new setting goes on from the frame shown, and the recorded frames
@@ -66,6 +69,9 @@ class SimulationWorker : public QObject {
   void goOnFromShownFrame();
   void intervene(const carom::Intervention& what);
   void noteGrabStop();
+  // After a step: runs the watch; on an event pauses and keeps it for the snapshots. True when
+  // the run goes on.
+  bool watchStep();
 
   SnapshotExchange& exchange_;
   Scene scene_;
@@ -94,6 +100,9 @@ class SimulationWorker : public QObject {
   // blink on and off with every batch.
   double sinceBacklogDropped_ = std::numeric_limits<double>::infinity();
   std::uint64_t startNumber_ = 0;
+  RunWatch watch_;
+  std::optional<WatchEvent> watchEvent_;
+  std::uint64_t watchEvents_ = 0;
 };
 
 }  // namespace carom::ui

@@ -7,8 +7,9 @@
 namespace carom::cli {
 
 // Exit codes: 0 success, 2 bad input (usage, unreadable or invalid scene), 1 internal failure,
-// 130 a run stopped by Ctrl+C (after its report so far; the shells' code for SIGINT).
-enum ExitCode { kOk = 0, kInternalError = 1, kBadInput = 2, kInterrupted = 130 };
+// 3 a run stopped by its watch (--stop-on-divergence, after its report so far), 130 a run
+// stopped by Ctrl+C (after its report so far; the shells' code for SIGINT).
+enum ExitCode { kOk = 0, kInternalError = 1, kBadInput = 2, kDiverged = 3, kInterrupted = 130 };
 
 // Runs the command in `arguments` (without the program name), writing results to `out` and
 // messages and progress to `err`.

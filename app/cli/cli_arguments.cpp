@@ -38,13 +38,83 @@ ParseResult success(Command::Kind kind) {
   return {command, {}};
 }
 
+// The checks named in a --watch-off list ("energy-rise,escape"), into `settings`; the word not
+// understood, if any.
+std::optional<QString> turnChecksOff(const QString& list, WatchSettings& settings) {
+  for (const QString& word : list.split(',')) {
+    bool known = false;
+    for (int k = 0; k < kWatchKindCount; ++k) {
+      const std::string_view name = watchKindName(WatchKind(k));
+      if (word != QString::fromUtf8(name.data(), name.size())) continue;
+      known = true;
+      switch (WatchKind(k)) {
+        case WatchKind::NonFinite:
+          settings.nonFinite = false;
+          break;
+        case WatchKind::EnergyRise:
+          settings.energyRise = false;
+          break;
+        case WatchKind::Escape:
+          settings.escape = false;
+          break;
+        case WatchKind::Penetration:
+          settings.penetration = false;
+          break;
+      }
+    }
+    if (!known) return word;
+  }
+  return std::nullopt;
+}
+
+// The watch's options: --watch-off and a tolerance a check. True when `arg` was one of them
+// (its value taken from args[i + 1]); `error` says what was wrong.
+bool parseWatchOption(const QStringList& args, int& i, WatchSettings& settings, bool& given,
+                      QString& error) {
+  const QString& arg = args[i];
+  double* tolerance = arg == "--watch-energy-rise"   ? &settings.energyRiseTolerance
+                      : arg == "--watch-escape"      ? &settings.escapeTolerance
+                      : arg == "--watch-penetration" ? &settings.penetrationTolerance
+                                                     : nullptr;
+  if (!tolerance && arg != "--watch-off") return false;
+  given = true;
+  if (i + 1 >= args.size()) {
+    error = QString("%1 needs a value").arg(arg);
+    return true;
+  }
+  const QString value = args[++i];
+  if (!tolerance) {
+    if (const auto word = turnChecksOff(value, settings))
+      error = QString(
+                  "--watch-off takes checks from non-finite, energy-rise, escape, "
+                  "penetration, separated by commas (got '%1')")
+                  .arg(*word);
+    return true;
+  }
+  const auto number = parseNumber(value, 0.0, kMaxWatchTolerance);
+  if (!number)
+    error = QString("%1 must be a number from 0 to %2 (got '%3')")
+                .arg(arg)
+                .arg(kMaxWatchTolerance)
+                .arg(value);
+  else
+    *tolerance = *number;
+  return true;
+}
+
 ParseResult parseRun(const QStringList& args, bool validateOnly) {
   Command command;
   command.kind = validateOnly ? Command::Validate : Command::Run;
   RunOptions& run = command.run;
   bool haveScene = false;
+  bool watchGiven = false;
   for (int i = 0; i < args.size(); ++i) {
     const QString& arg = args[i];
+    QString watchError;
+    if (!validateOnly && parseWatchOption(args, i, run.watch, watchGiven, watchError)) {
+      if (!watchError.isEmpty()) return failure(watchError);
+      continue;
+    }
     const bool takesValue =
         !validateOnly && (arg == "--duration" || arg == "--method" || arg == "--integrator" ||
                           arg == "--dt" || arg == "--trajectory");
@@ -68,11 +138,15 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
       }
     } else if (!validateOnly && arg == "--json") {
       run.json = true;
+    } else if (!validateOnly && arg == "--stop-on-divergence") {
+      run.stopOnDivergence = true;
     } else if (const auto problem = takeScene(arg, run.scenePath, haveScene)) {
       return failure(*problem);
     }
   }
   if (!haveScene) return failure("no scene file given");
+  if (watchGiven && !run.stopOnDivergence)
+    return failure("the --watch-... options set the watch of --stop-on-divergence: give it too");
   return {command, {}};
 }
 
@@ -139,6 +213,16 @@ QString usageText() {
       "  carom-cli run SCENE [--duration S] [--method exact|swept|discrete]\n"
       "                      [--integrator explicit-euler|symplectic-euler|velocity-verlet]\n"
       "                      [--dt S] [--trajectory FILE.csv] [--json]\n"
+      "                      [--stop-on-divergence [--watch-off CHECK,...]\n"
+      "                       [--watch-energy-rise F] [--watch-escape F]\n"
+      "                       [--watch-penetration F]]\n"
+      "      --stop-on-divergence checks every step for numbers gone wrong and stops at the\n"
+      "      first: a non-finite position or velocity (non-finite), total energy above its\n"
+      "      start by more than F (default 0.05) of the scene's energy scale when no\n"
+      "      restitution exceeds 1 (energy-rise), a ball's centre F radii (default 0) inside a\n"
+      "      solid (escape), an overlap deeper than F (default 0.5) of the smaller radius\n"
+      "      (penetration). It prints the report so far and the event (kind, ball, time)\n"
+      "      and exits with 3. --watch-off turns the checks named off.\n"
       "  carom-cli validate SCENE\n"
       "  carom-cli bench [--quick] [--timeline]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"
@@ -149,7 +233,8 @@ QString usageText() {
       "  carom-cli --help | --version\n"
       "A run shows progress on standard error (a bar on a terminal, a line every 10 s\n"
       "otherwise); Ctrl+C stops it and prints the report so far, marked as interrupted.\n"
-      "Exit codes: 0 success, 2 bad input, 1 internal failure, 130 interrupted by Ctrl+C.\n");
+      "Exit codes: 0 success, 2 bad input, 1 internal failure, 3 stopped by the watch\n"
+      "(--stop-on-divergence), 130 interrupted by Ctrl+C.\n");
 }
 
 }  // namespace carom::cli

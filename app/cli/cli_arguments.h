@@ -1,6 +1,8 @@
 #pragma once
 // The command line of carom-cli, parsed into plain values; nothing runs here.
 
+#include "sim/run_watch.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -16,6 +18,9 @@ struct RunOptions {
   std::optional<double> timeStep;
   std::optional<QString> trajectoryPath;
   bool json = false;
+  // --stop-on-divergence: the run watch checks every step and stops the run at its first event.
+  bool stopOnDivergence = false;
+  WatchSettings watch;  // valid (validateWatchSettings)
 };
 
 // The Speed vs accuracy study of a scene, as the window runs it, for timing its thread pool.

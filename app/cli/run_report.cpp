@@ -2,6 +2,7 @@
 
 #include "app/cli/cli.h"
 #include "sim/measures.h"
+#include "sim/run_watch.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdint>
+#include <optional>
 
 #include <unistd.h>
 
@@ -155,7 +157,17 @@ struct RunResult {
   double maxPenetration = 0.0;
   int escaped = 0;
   int resting = 0;
+  bool watched = false;                  // --stop-on-divergence
+  std::optional<WatchEvent> divergence;  // what stopped the run, when the watch did
+  QString divergedBallName;              // the ball's name in the scene, if it has one
 };
+
+// "ball 3" or "ball 3 ("cue")".
+QString ballText(int ball, const QString& name) {
+  QString text = QString("ball %1").arg(ball);
+  if (!name.isEmpty()) text += QString(" (\"%1\")").arg(name);
+  return text;
+}
 
 bool writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>& state) {
   QByteArray rows;
@@ -173,6 +185,22 @@ bool writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>&
 int trajectoryFailed(const QFile& file, QTextStream& err) {
   err << "carom-cli: writing " << file.fileName() << " failed: " << file.errorString() << "\n";
   return kInternalError;
+}
+
+// Absent without --stop-on-divergence, null when the watch saw nothing.
+QJsonValue divergenceJson(const RunResult& result) {
+  if (!result.watched) return QJsonValue::Undefined;
+  if (!result.divergence) return QJsonValue::Null;
+  const WatchEvent& e = *result.divergence;
+  const std::string_view kind = watchKindName(e.kind);
+  return QJsonObject{{"kind", QString::fromUtf8(kind.data(), kind.size())},
+                     {"ball", e.ball},
+                     {"ballName", result.divergedBallName},
+                     {"time", e.time},
+                     {"lastGoodTime", e.lastGoodTime},
+                     {"value", e.value},
+                     {"tolerance", e.tolerance},
+                     {"text", QString::fromStdString(e.text)}};
 }
 
 QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
@@ -211,6 +239,7 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
       {"wakes", double(stats.wakes)},
       {"minimumBounces", double(stats.minimumBounces)},
       {"restingAtEnd", result.resting},
+      {"divergence", divergenceJson(result)},
       {"model", model},
       {"balls", balls},
   };
@@ -226,6 +255,14 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
   out << "\nsimulated: " << sim.time() << " s in " << result.wallSeconds << " s wall\n";
   if (result.interrupted)
     out << "interrupted: by Ctrl+C at " << sim.time() << " of " << result.durationAsked << " s\n";
+  if (const std::optional<WatchEvent>& e = result.divergence) {
+    const std::string_view kind = watchKindName(e->kind);
+    out << "diverged: " << QString::fromUtf8(kind.data(), kind.size()) << ", "
+        << ballText(e->ball, result.divergedBallName) << ", at "
+        << QString::number(e->time, 'g', 12) << " s (last good step "
+        << QString::number(e->lastGoodTime, 'g', 12) << " s): " << QString::fromStdString(e->text)
+        << "\n";
+  }
   out << "wall: " << result.wallSeconds << " s: set-up " << result.setupSeconds << " s, run "
       << result.runSeconds << " s, measurements " << result.measureSeconds << " s\n";
   out << "collisions: ball-ball " << stats.collisions.ballBall << ", ball-plane "
@@ -311,6 +348,14 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
       trajectory.isOpen() ? 1
                           : std::max<std::uint64_t>(
                                 1, std::uint64_t(std::ceil(double(ticks) / kOverlapCheckpoints)));
+  // The watch looks after every tick: the runs it watches go a tick a slice (and keep one if a
+  // tick takes longer than a slice).
+  std::optional<RunWatch> watch;
+  if (options.stopOnDivergence) {
+    watch.emplace(options.watch);
+    watch->rebase(sim);
+    result.watched = true;
+  }
   std::uint64_t done = 0;
   std::uint64_t sliceTicks = 1;
   while (done < ticks) {
@@ -327,7 +372,7 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
     const double sliceSeconds = slice.nsecsElapsed() * 1e-9;
     result.runSeconds += sliceSeconds;
     done = next;
-    if (sliceSeconds < 0.5 * kSliceSeconds && sliceTicks < (std::uint64_t{1} << 62))
+    if (!watch && sliceSeconds < 0.5 * kSliceSeconds && sliceTicks < (std::uint64_t{1} << 62))
       sliceTicks *= 2;
     else if (sliceSeconds > 2.0 * kSliceSeconds && sliceTicks > 1)
       sliceTicks /= 2;
@@ -338,6 +383,18 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
       if (trajectory.isOpen() && !writeTrajectoryRows(trajectory, sim.time(), sim.state()))
         return trajectoryFailed(trajectory, err);
       result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
+    }
+    // After the trajectory's row, so that the file ends with the state the watch stopped on.
+    if (watch) {
+      measuring.restart();
+      result.divergence = watch->check(sim);
+      result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
+      if (result.divergence) {
+        const int ball = result.divergence->ball;
+        if (ball >= 0 && ball < int(scene.balls.size()))
+          result.divergedBallName = QString::fromStdString(scene.balls[ball].name);
+        break;
+      }
     }
     progress.update(sim.time());
   }
@@ -358,6 +415,12 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
     out << QJsonDocument(reportJson(sim, result)).toJson(QJsonDocument::Compact) << "\n";
   else
     printText(out, sim, result);
+  if (result.divergence) {
+    err << "carom-cli: stopped by the watch at " << sim.time() << " of " << options.duration
+        << " s: " << QString::fromStdString(result.divergence->text)
+        << "; the report covers the run so far\n";
+    return kDiverged;
+  }
   if (!result.interrupted) return kOk;
   err << "carom-cli: interrupted at " << sim.time() << " of " << options.duration
       << " s; the report covers the run so far\n";

@@ -11,7 +11,7 @@ namespace carom::cli {
 
 // `started` was started before the scene was loaded: the report's wall time is all the work,
 // its set-up part included. Returns kInterrupted, after the report so far, when Ctrl+C stopped
-// the run.
+// the run, and kDiverged when the watch (options.stopOnDivergence) did.
 int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer& started,
              QTextStream& out, QTextStream& err);
 
