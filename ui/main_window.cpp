@@ -106,7 +106,7 @@ MainWindow::MainWindow(QWidget* parent)
   energyDock_->setWidget(energyPlot_);
   // Below the view, where the plot's time axis has room.
   addDockWidget(Qt::BottomDockWidgetArea, energyDock_);
-  energyPlot_->setMinimumHeight(190);
+  energyPlot_->setMinimumHeight(170);
   storyDock_ = new BallStoryDock(document_, view_, this);
   addDockWidget(Qt::BottomDockWidgetArea, storyDock_);
   tabifyDockWidget(energyDock_, storyDock_);

@@ -19,7 +19,7 @@ TimelineBar::TimelineBar(QWidget* parent)
   label_->setObjectName("timelineLabel");
   slider_->setRange(0, 0);
   auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(6, 2, 6, 2);
+  layout->setContentsMargins(6, 0, 6, 0);
   layout->addWidget(slider_, 1);
   layout->addWidget(label_);
   // Only the user's moves ask for a frame: showSnapshot() sets the slider with signals blocked.
