@@ -1,7 +1,7 @@
 #pragma once
 // `carom-cli bench --timeline`: what recording a run costs (sim/run_recording.h): the memory it
 // holds under its budget and how long showing an earlier frame takes, for the magic room after
-// an hour of simulated time and a gas of 10,000 balls after a minute.
+// an hour of simulated time and the bench's gas of 10,000 balls after a minute.
 
 #include "app/cli/cli_arguments.h"
 
