@@ -179,6 +179,21 @@ class TimelineTest : public EditorFixture {
       QVERIFY(reset->positions[i] == sceneBefore.balls[i].position);
   }
 
+  // A click on a ball in a run in progress selects it and leaves the run alone.
+  void clickInARunSelectsWithoutGrabbing() {
+    runUntil(0.4);
+    const auto paused = pause();
+    document().setSelection({});
+    click(paused->positions[2]);
+    QTRY_VERIFY(document().selection().size() == 1);
+    QCOMPARE(document().selection().front().index, 2);
+    QTest::qWait(200);
+    const auto after = window_->simulation().latest();
+    QCOMPARE(after->frameCount, paused->frameCount);
+    QVERIFY(after->positions == paused->positions && after->velocities == paused->velocities);
+    QCOMPARE(after->grabbed, -1);
+  }
+
   // At the scene's start, the same drag edits the scene as before: one undo step.
   void dragAtTheStartStillEditsTheScene() {
     const Vec3 start = document().scene().balls[0].position;

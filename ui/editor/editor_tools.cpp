@@ -344,12 +344,11 @@ bool EditorTools::pressOnRunningBall(const QPointF& position) {
   const std::optional<RayHit> hit = castRay(running, origin, direction, &clip);
   if (!hit || objectKindOf(hit->kind) != ObjectKind::Ball) return false;
   document_->setSelection({{ObjectKind::Ball, hit->index}});
-  drag_ = Drag::Grab;
+  // The grab begins when the cursor moves: a click only selects, and leaves the ball alone.
+  drag_ = Drag::PendingGrab;
+  grabbedBall_ = hit->index;
   grabPoint_ = hit->point;
   grabbedCentre_ = runningBalls_[hit->index];
-  grabSamples_.clear();
-  grabClock_.start();
-  emit grabStarted(hit->index);
   return true;
 }
 
@@ -385,6 +384,14 @@ Vec3 EditorTools::snapped(Vec3 position) const {
 }
 
 bool EditorTools::mouseMove(QMouseEvent* event) {
+  if (drag_ == Drag::PendingGrab) {
+    const QPointF moved = event->position() - pressPosition_;
+    if (std::hypot(moved.x(), moved.y()) <= kClickSlopPixels) return true;
+    drag_ = Drag::Grab;
+    grabSamples_.clear();
+    grabClock_.start();
+    emit grabStarted(grabbedBall_);
+  }
   if (drag_ == Drag::Grab) {
     moveGrab(event->position());
     return true;
@@ -428,6 +435,7 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
 bool EditorTools::mouseRelease(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton) return false;
   const Drag drag = std::exchange(drag_, Drag::None);
+  if (drag == Drag::PendingGrab) return true;  // a click on a running ball: selected
   if (drag == Drag::Grab) {
     emit grabReleased(releaseVelocity());
     return true;

@@ -82,7 +82,7 @@ class EditorTools : public QObject {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  enum class Drag { None, Pending, Objects, Handle, Grab };
+  enum class Drag { None, Pending, Objects, Handle, PendingGrab, Grab };
   bool mousePress(QMouseEvent* event);
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
@@ -132,6 +132,7 @@ class EditorTools : public QObject {
   int gesture_ = 0;
   bool refusedDuringDrag_ = false;
   std::vector<Vec3> runningBalls_;
+  int grabbedBall_ = -1;
   Vec3 grabbedCentre_ = Vec3::Zero();  // the grabbed ball's centre at the press
   // The grab's recent targets with the real time they were given, for the throw's velocity.
   struct GrabSample {
