@@ -10,6 +10,7 @@
 #include "ui/watch_tolerance_dialog.h"
 
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 
 using carom::Vec3;
@@ -83,6 +84,21 @@ class TestWatchWindow : public carom::testing::EditorFixture {
     window_->setRunning(true);
     QTRY_VERIFY_WITH_TIMEOUT(latest()->time > 0.5, 10000);
     QVERIFY(!window_->watchDialog());
+  }
+
+  // The dialog offers the last frame that passed the watch, from the timeline.
+  void offersTheMomentBefore() {
+    window_->setRunning(true);
+    QTRY_VERIFY(window_->watchDialog());
+    const auto stopped = latest();
+    QVERIFY(stopped->watchEvent);
+    auto* before = window_->watchDialog()->findChild<QPushButton*>("showMomentBefore");
+    QVERIFY(before);
+    before->click();
+    QTRY_VERIFY(latest()->frame + 1 == stopped->frameCount);
+    QCOMPARE(latest()->time, stopped->watchEvent->lastGoodTime);
+    QVERIFY(latest()->positions != stopped->positions);
+    QTRY_VERIFY(!window_->watchDialog());
   }
 
   void checksTurnedOffLetTheRunGoOn() {
