@@ -123,11 +123,8 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   const double approach = (mh.velocity - mo.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[h], bodies_.restitution[o]);
   noteRestitution(restitution);
-  // The minimum separation of collideBalls, with the held ball feeling no gravity.
-  const bool pressed = gravityOn(o).dot(n) < 0.0;
-  const double separation = restitution >= 1.0 ? slideSpeed_[o] : restSpeed_[o];
-  const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
-  const double lossless = pressed || restitution >= 1.0 ? 0.0 : separation;
+  // The floor of collideBalls; the held ball feels no gravity (gravityOn).
+  const auto [minimum, lossless] = pairFloor(h, o, n, restitution);
   Vec3 heldVelocity = mh.velocity, exchanged = mo.velocity;
   resolveBallBall(heldVelocity, exchanged, 0.0, bodies_.inverseMass[o], n, restitution, 0.0);
   const double exchangedEnergy = 0.5 * (exchanged.squaredNorm() - mo.velocity.squaredNorm());

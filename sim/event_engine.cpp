@@ -545,12 +545,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h). Only an
     // inelastic pair can collapse: an elastic one parts at the slide speed, which it needs only
     // when it meets at no speed (balls placed touching, a frictionless pyramid).
-    const bool pressed = (gravityOn(j) - gravityOn(i)).dot(n) < 0.0;
-    const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
-                                                 : std::min(restSpeed_[i], restSpeed_[j]);
-    const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
-    // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
-    const double lossless = pressed || restitution >= 1.0 ? 0.0 : separation;
+    const auto [minimum, lossless] = pairFloor(i, j, n, restitution);
     // What the exchange alone gives each ball, without the minimum separation: the energy an
     // elastic pair's books keep (closeBooks).
     Vec3 exchangedA = ma.velocity, exchangedB = mb.velocity;
@@ -574,6 +569,16 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (!answered) closeBooks(j, exchangedJ);
   if (!a.resting) predict(i);
   if (!b.resting) predict(j);
+}
+
+EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
+                                              double restitution) const {
+  const bool pressed = (gravityOn(j) - gravityOn(i)).dot(n) < 0.0;
+  const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
+                                               : std::min(restSpeed_[i], restSpeed_[j]);
+  // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
+  return {pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_,
+          pressed || restitution >= 1.0 ? 0.0 : separation};
 }
 
 void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,

@@ -164,6 +164,15 @@ class EventEngine {
   void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
                          std::vector<CollisionRecord>* log);
   void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
+  // The least separation speed of balls i and j meeting along unit normal n (from i to j), and
+  // the approach below which restitution takes nothing (rules 1 and 8 of rest_policy.h): a
+  // pair that gravity presses together parts at no less than the rest speed (an elastic one
+  // at the slide speed).
+  struct PairFloor {
+    double minimum;
+    double lossless;
+  };
+  PairFloor pairFloor(int i, int j, const Vec3& n, double restitution) const;
   // The held ball h meets a static shape: it slides along what it touches, as far as its
   // steering takes it, and bounces off nothing (it has no mass to bounce with).
   void heldMeetsStatic(int h, StaticRef ref, RunStats& stats, std::vector<CollisionRecord>* log);
