@@ -311,13 +311,14 @@ QString VideoExport::begin(const VideoSettings& settings, bool interactive) {
   written_ = 0;
   pending_.clear();
   nextPending_ = 0;
-  // The view's camera and scene as they are now, without what belongs to the editor or to
-  // the moment shown.
+  // The view's camera and scene as they are now, without what belongs to the editor (handles,
+  // the selection's highlight) or to the moment shown.
   picture_ = view_->picture();
   picture_.explosions.clear();
   picture_.trails.clear();
   picture_.velocityArrows.clear();
   picture_.handleArrows.clear();
+  picture_.highlights = false;
 
   if (settings.format == VideoSettings::Format::Mp4) {
     encoder_ = new QProcess(this);
