@@ -23,6 +23,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace carom::ui {
@@ -36,8 +37,9 @@ constexpr double kEndSlackSeconds = 1e-6;
 // The GUI renders for about this long at a turn, then lets the window breathe.
 constexpr qint64 kPumpMilliseconds = 40;
 constexpr int kPumpIntervalMilliseconds = 5;
-// ffmpeg reads at its own pace; no more frames than this wait in the pipe for it.
-constexpr qint64 kEncoderBacklogFrames = 4;
+// ffmpeg reads at its own pace: no more than this waits in the pipe for it, or a single frame
+// when that is larger.
+constexpr qint64 kEncoderBacklogBytes = qint64(32) << 20;
 
 // In the user's locale ("1,5" in German) or plainly, and finite.
 bool readNumber(const QString& text, double* value) {
@@ -381,7 +383,9 @@ void VideoExport::pump() {
         break;
       }
     }
-    if (encoder_ && encoder_->bytesToWrite() > kEncoderBacklogFrames * frameBytes) break;
+    if (encoder_ && encoder_->bytesToWrite() > 0 &&
+        encoder_->bytesToWrite() + frameBytes > std::max(kEncoderBacklogBytes, frameBytes))
+      break;
     const QString error = writeFrame(pending_[nextPending_++]);
     if (!error.isEmpty()) {
       fail(error);
@@ -436,7 +440,6 @@ void VideoExport::encoderFinished(int exitCode, QProcess::ExitStatus status) {
 }
 
 QString VideoExport::ffmpegError() {
-  if (!encoder_) return tr("ffmpeg failed (exit code %1): %2").arg(-1).arg(QString());
   if (encoder_->state() != QProcess::NotRunning) encoder_->waitForFinished(3000);
   QString said = QString::fromLocal8Bit(encoder_->readAllStandardError()).trimmed();
   if (said.isEmpty()) said = encoder_->errorString();

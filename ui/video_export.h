@@ -126,7 +126,8 @@ class VideoExport : public QObject {
   void fail(const QString& reason);
   // Stops the worker, ffmpeg and the progress; removes a half-written MP4.
   void stop(bool removeVideo);
-  // What ffmpeg said as it failed (waiting a moment for it to end, so that it has said it).
+  // What ffmpeg (running or just ended) said as it failed, waiting a moment for it to end so
+  // that it has said it.
   QString ffmpegError();
 
   render::SceneView* view_;
