@@ -1928,104 +1928,104 @@
 <context>
     <name>carom::ui::VideoExport</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="196"/>
+        <location filename="../ui/video_export.cpp" line="198"/>
         <source>Start: must not be before 0 s (got %1 s)</source>
         <translation>Anfang: darf nicht vor 0 s liegen (erhalten: %1 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="198"/>
+        <location filename="../ui/video_export.cpp" line="200"/>
         <source>End: must not be before the start, %1 s (got %2 s)</source>
         <translation>Ende: darf nicht vor dem Anfang (%1 s) liegen (erhalten: %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="201"/>
+        <location filename="../ui/video_export.cpp" line="203"/>
         <source>End: the run is recorded up to %1 s only (got %2 s)</source>
         <translation>Ende: der Lauf ist nur bis %1 s aufgezeichnet (erhalten: %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="204"/>
+        <location filename="../ui/video_export.cpp" line="206"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="214"/>
+        <location filename="../ui/video_export.cpp" line="216"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
         <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde: wählen Sie PNG-Bilder oder installieren Sie ffmpeg.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="219"/>
+        <location filename="../ui/video_export.cpp" line="221"/>
         <source>MP4: the width and height must be even (got %1×%2)</source>
         <translation>MP4: Breite und Höhe müssen gerade sein (erhalten: %1×%2)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="255"/>
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="257"/>
+        <location filename="../ui/video_export.cpp" line="355"/>
         <source>Export Video</source>
         <translation>Video exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="256"/>
+        <location filename="../ui/video_export.cpp" line="258"/>
         <source>MP4 videos (*.mp4)</source>
         <translation>MP4-Videos (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="263"/>
+        <location filename="../ui/video_export.cpp" line="265"/>
         <source>Export Video: Folder for the Frames</source>
         <translation>Video exportieren: Ordner für die Bilder</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="270"/>
-        <location filename="../ui/video_export.cpp" line="467"/>
+        <location filename="../ui/video_export.cpp" line="272"/>
+        <location filename="../ui/video_export.cpp" line="471"/>
         <source>Cannot Export Video</source>
         <translation>Video kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="281"/>
+        <location filename="../ui/video_export.cpp" line="283"/>
         <source>A video is being exported already.</source>
         <translation>Es wird bereits ein Video exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="284"/>
+        <location filename="../ui/video_export.cpp" line="286"/>
         <source>There is no run to export yet.</source>
         <translation>Es gibt noch keinen Lauf zum Exportieren.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="289"/>
+        <location filename="../ui/video_export.cpp" line="291"/>
         <source>No folder or file was chosen.</source>
         <translation>Es wurde kein Ordner und keine Datei gewählt.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="292"/>
+        <location filename="../ui/video_export.cpp" line="294"/>
         <source>Could not create the folder %1.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="294"/>
+        <location filename="../ui/video_export.cpp" line="296"/>
         <source>Could not write into the folder %1.</source>
         <translation>In den Ordner %1 kann nicht geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="297"/>
+        <location filename="../ui/video_export.cpp" line="299"/>
         <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
         <translation>Der Ordner %1 enthält bereits Bilder (frame_*.png): wählen Sie einen anderen Ordner oder entfernen Sie sie zuerst.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="303"/>
+        <location filename="../ui/video_export.cpp" line="305"/>
         <source>Could not write %1: its folder does not exist or cannot be written.</source>
         <translation>%1 konnte nicht geschrieben werden: der Ordner existiert nicht oder ist nicht beschreibbar.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="306"/>
+        <location filename="../ui/video_export.cpp" line="308"/>
         <source>Could not write %1: it is a folder.</source>
         <translation>%1 konnte nicht geschrieben werden: es ist ein Ordner.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="340"/>
+        <location filename="../ui/video_export.cpp" line="343"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>ffmpeg konnte nicht gestartet werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="349"/>
+        <location filename="../ui/video_export.cpp" line="352"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>%n Videobild wird exportiert…</numerusform>
@@ -2033,12 +2033,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="349"/>
+        <location filename="../ui/video_export.cpp" line="352"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="377"/>
+        <location filename="../ui/video_export.cpp" line="380"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Der Lauf wurde während des Exports zurückgesetzt oder von einem früheren Bild aus fortgesetzt; der Export endete nach %n Bild.</numerusform>
@@ -2046,27 +2046,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="395"/>
+        <location filename="../ui/video_export.cpp" line="400"/>
         <source>Finishing the video…</source>
         <translation>Das Video wird fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="409"/>
+        <location filename="../ui/video_export.cpp" line="414"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="418"/>
+        <location filename="../ui/video_export.cpp" line="423"/>
         <source>Could not write %1: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="443"/>
+        <location filename="../ui/video_export.cpp" line="447"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>ffmpeg ist fehlgeschlagen (Exit-Code %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="447"/>
+        <location filename="../ui/video_export.cpp" line="451"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>%n Videobild mit %1×%2 bei %3 fps nach %4 exportiert</numerusform>
@@ -2074,7 +2074,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="461"/>
+        <location filename="../ui/video_export.cpp" line="465"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n zuvor geschriebenes Bild bleibt in %1.</numerusform>
@@ -2082,12 +2082,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="479"/>
+        <location filename="../ui/video_export.cpp" line="483"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Videoexport abgebrochen; das unfertige Video wurde entfernt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="480"/>
+        <location filename="../ui/video_export.cpp" line="484"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Videoexport nach %n Bild abgebrochen; es bleibt in %1.</numerusform>
@@ -2098,72 +2098,72 @@
 <context>
     <name>carom::ui::VideoExportDialog</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="79"/>
+        <location filename="../ui/video_export.cpp" line="81"/>
         <source>Export Video</source>
         <translation>Video exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="91"/>
+        <location filename="../ui/video_export.cpp" line="93"/>
         <source>PNG images in a folder</source>
         <translation>PNG-Bilder in einem Ordner</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="92"/>
+        <location filename="../ui/video_export.cpp" line="94"/>
         <source>MP4 video (ffmpeg)</source>
         <translation>MP4-Video (ffmpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="94"/>
+        <location filename="../ui/video_export.cpp" line="96"/>
         <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
         <translation>Der Lauf ist von 0 bis %1 s aufgezeichnet. Jedes Videobild zeigt den aufgezeichneten Schritt, der zu seinem Zeitpunkt oder als letzter davor endete.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="106"/>
+        <location filename="../ui/video_export.cpp" line="108"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
         <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde (scripts/setup-debian.sh installiert es); PNG-Bilder brauchen nichts weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="116"/>
+        <location filename="../ui/video_export.cpp" line="118"/>
         <source>Start (s)</source>
         <translation>Anfang (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="117"/>
+        <location filename="../ui/video_export.cpp" line="119"/>
         <source>End (s)</source>
         <translation>Ende (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="118"/>
+        <location filename="../ui/video_export.cpp" line="120"/>
         <source>Frames per second</source>
         <translation>Bilder pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="119"/>
+        <location filename="../ui/video_export.cpp" line="121"/>
         <source>Width (pixels)</source>
         <translation>Breite (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="120"/>
+        <location filename="../ui/video_export.cpp" line="122"/>
         <source>Height (pixels)</source>
         <translation>Höhe (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="121"/>
+        <location filename="../ui/video_export.cpp" line="123"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="139"/>
+        <location filename="../ui/video_export.cpp" line="141"/>
         <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Anfang: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="140"/>
+        <location filename="../ui/video_export.cpp" line="142"/>
         <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Ende: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="142"/>
+        <location filename="../ui/video_export.cpp" line="144"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
     </message>

@@ -1934,104 +1934,104 @@
 <context>
     <name>carom::ui::VideoExport</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="196"/>
+        <location filename="../ui/video_export.cpp" line="198"/>
         <source>Start: must not be before 0 s (got %1 s)</source>
         <translation>Начало: должно быть не раньше 0 s (получено %1 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="198"/>
+        <location filename="../ui/video_export.cpp" line="200"/>
         <source>End: must not be before the start, %1 s (got %2 s)</source>
         <translation>Конец: должен быть не раньше начала, %1 s (получено %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="201"/>
+        <location filename="../ui/video_export.cpp" line="203"/>
         <source>End: the run is recorded up to %1 s only (got %2 s)</source>
         <translation>Конец: прогон записан только до %1 s (получено %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="204"/>
+        <location filename="../ui/video_export.cpp" line="206"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="214"/>
+        <location filename="../ui/video_export.cpp" line="216"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
         <translation>Для MP4 нужен ffmpeg, но в PATH его нет: выберите изображения PNG или установите ffmpeg.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="219"/>
+        <location filename="../ui/video_export.cpp" line="221"/>
         <source>MP4: the width and height must be even (got %1×%2)</source>
         <translation>MP4: ширина и высота должны быть чётными (получено %1×%2)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="255"/>
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="257"/>
+        <location filename="../ui/video_export.cpp" line="355"/>
         <source>Export Video</source>
         <translation>Экспорт видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="256"/>
+        <location filename="../ui/video_export.cpp" line="258"/>
         <source>MP4 videos (*.mp4)</source>
         <translation>Видео MP4 (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="263"/>
+        <location filename="../ui/video_export.cpp" line="265"/>
         <source>Export Video: Folder for the Frames</source>
         <translation>Экспорт видео: папка для кадров</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="270"/>
-        <location filename="../ui/video_export.cpp" line="467"/>
+        <location filename="../ui/video_export.cpp" line="272"/>
+        <location filename="../ui/video_export.cpp" line="471"/>
         <source>Cannot Export Video</source>
         <translation>Не удалось экспортировать видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="281"/>
+        <location filename="../ui/video_export.cpp" line="283"/>
         <source>A video is being exported already.</source>
         <translation>Видео уже экспортируется.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="284"/>
+        <location filename="../ui/video_export.cpp" line="286"/>
         <source>There is no run to export yet.</source>
         <translation>Ещё нет прогона для экспорта.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="289"/>
+        <location filename="../ui/video_export.cpp" line="291"/>
         <source>No folder or file was chosen.</source>
         <translation>Не выбраны ни папка, ни файл.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="292"/>
+        <location filename="../ui/video_export.cpp" line="294"/>
         <source>Could not create the folder %1.</source>
         <translation>Не удалось создать папку %1.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="294"/>
+        <location filename="../ui/video_export.cpp" line="296"/>
         <source>Could not write into the folder %1.</source>
         <translation>Не удалось записать в папку %1.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="297"/>
+        <location filename="../ui/video_export.cpp" line="299"/>
         <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
         <translation>В папке %1 уже есть кадры (frame_*.png): выберите другую папку или сначала удалите их.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="303"/>
+        <location filename="../ui/video_export.cpp" line="305"/>
         <source>Could not write %1: its folder does not exist or cannot be written.</source>
         <translation>Не удалось записать %1: папка не существует или недоступна для записи.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="306"/>
+        <location filename="../ui/video_export.cpp" line="308"/>
         <source>Could not write %1: it is a folder.</source>
         <translation>Не удалось записать %1: это папка.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="340"/>
+        <location filename="../ui/video_export.cpp" line="343"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>Не удалось запустить ffmpeg: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="349"/>
+        <location filename="../ui/video_export.cpp" line="352"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>Экспорт %n кадра видео…</numerusform>
@@ -2040,12 +2040,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="349"/>
+        <location filename="../ui/video_export.cpp" line="352"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="377"/>
+        <location filename="../ui/video_export.cpp" line="380"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадра.</numerusform>
@@ -2054,27 +2054,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="395"/>
+        <location filename="../ui/video_export.cpp" line="400"/>
         <source>Finishing the video…</source>
         <translation>Завершение видео…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="409"/>
+        <location filename="../ui/video_export.cpp" line="414"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="418"/>
+        <location filename="../ui/video_export.cpp" line="423"/>
         <source>Could not write %1: %2</source>
         <translation>Не удалось записать %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="443"/>
+        <location filename="../ui/video_export.cpp" line="447"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>Ошибка ffmpeg (код выхода %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="447"/>
+        <location filename="../ui/video_export.cpp" line="451"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>Экспортирован %n кадр видео %1×%2 при %3 fps в %4</numerusform>
@@ -2083,7 +2083,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="461"/>
+        <location filename="../ui/video_export.cpp" line="465"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n уже записанный кадр оставлен в %1.</numerusform>
@@ -2092,12 +2092,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="479"/>
+        <location filename="../ui/video_export.cpp" line="483"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Экспорт видео отменён; незаконченное видео удалено.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="480"/>
+        <location filename="../ui/video_export.cpp" line="484"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Экспорт видео отменён после %n кадра; он оставлен в %1.</numerusform>
@@ -2109,72 +2109,72 @@
 <context>
     <name>carom::ui::VideoExportDialog</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="79"/>
+        <location filename="../ui/video_export.cpp" line="81"/>
         <source>Export Video</source>
         <translation>Экспорт видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="91"/>
+        <location filename="../ui/video_export.cpp" line="93"/>
         <source>PNG images in a folder</source>
         <translation>Изображения PNG в папке</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="92"/>
+        <location filename="../ui/video_export.cpp" line="94"/>
         <source>MP4 video (ffmpeg)</source>
         <translation>Видео MP4 (ffmpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="94"/>
+        <location filename="../ui/video_export.cpp" line="96"/>
         <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
         <translation>Прогон записан от 0 до %1 s. Каждый кадр видео показывает записанный шаг, закончившийся в его момент или последним перед ним.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="106"/>
+        <location filename="../ui/video_export.cpp" line="108"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
         <translation>Для MP4 нужен ffmpeg, но в PATH его нет (его устанавливает scripts/setup-debian.sh); для изображений PNG больше ничего не нужно.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="116"/>
+        <location filename="../ui/video_export.cpp" line="118"/>
         <source>Start (s)</source>
         <translation>Начало (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="117"/>
+        <location filename="../ui/video_export.cpp" line="119"/>
         <source>End (s)</source>
         <translation>Конец (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="118"/>
+        <location filename="../ui/video_export.cpp" line="120"/>
         <source>Frames per second</source>
         <translation>Кадров в секунду</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="119"/>
+        <location filename="../ui/video_export.cpp" line="121"/>
         <source>Width (pixels)</source>
         <translation>Ширина (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="120"/>
+        <location filename="../ui/video_export.cpp" line="122"/>
         <source>Height (pixels)</source>
         <translation>Высота (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="121"/>
+        <location filename="../ui/video_export.cpp" line="123"/>
         <source>Format</source>
         <translation>Формат</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="139"/>
+        <location filename="../ui/video_export.cpp" line="141"/>
         <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Начало: должно быть числом секунд (получено «%1»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="140"/>
+        <location filename="../ui/video_export.cpp" line="142"/>
         <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Конец: должен быть числом секунд (получено «%1»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="142"/>
+        <location filename="../ui/video_export.cpp" line="144"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
     </message>
