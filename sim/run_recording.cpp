@@ -102,6 +102,14 @@ std::uint64_t RunRecording::keyframeBefore(std::uint64_t frame) const {
   return std::prev(after)->frame;
 }
 
+std::uint64_t RunRecording::keyframeAtTime(double time) const {
+  // Steps only move time forward, so the keyframes are in order of time too.
+  const auto after = std::upper_bound(
+      keyframes_.begin() + 1, keyframes_.end(), time,
+      [](double t, const Keyframe& keyframe) { return t < keyframe.simulation->time(); });
+  return std::prev(after)->frame;
+}
+
 std::unique_ptr<Simulation> RunRecording::reproduce(std::uint64_t frame) const {
   frame = std::min(frame, frames_);
   const auto after = std::upper_bound(

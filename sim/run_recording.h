@@ -62,6 +62,9 @@ class RunRecording {
   void replay(Simulation& shown, std::uint64_t from, std::uint64_t to) const;
   // The keyframe a replay to `frame` would start from.
   std::uint64_t keyframeBefore(std::uint64_t frame) const;
+  // The latest keyframe at a simulated time not after `time` (frame 0 when none is): where a
+  // replay of the run from that time on starts, without stepping from the very start.
+  std::uint64_t keyframeAtTime(double time) const;
   // Forgets everything after frame `frame` (the run goes on from there).
   void truncate(std::uint64_t frame);
 

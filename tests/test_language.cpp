@@ -13,6 +13,7 @@
 #include "ui/help_dialogs.h"
 #include "ui/image_export.h"
 #include "ui/language.h"
+#include "ui/video_export.h"
 #include "ui/watch_menu.h"
 
 #include <QComboBox>
@@ -442,24 +443,30 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage_data() {
   QTest::addColumn<QString>("quantity");
   QTest::addColumn<QString>("exportImage");
   QTest::addColumn<QString>("badWidth");
+  QTest::addColumn<QString>("exportVideo");
+  QTest::addColumn<QString>("badEnd");
   QTest::newRow("de") << "de"
                       << "Ansicht"
                       << "Datei"
                       << "Kugelverlauf"
                       << "Höhe (m)"
                       << "Bild exportieren…"
-                      << "Breite: muss zwischen 16 und 8192 Pixeln liegen (erhalten: 9000)";
+                      << "Breite: muss zwischen 16 und 8192 Pixeln liegen (erhalten: 9000)"
+                      << "Video exportieren…"
+                      << "Ende: der Lauf ist nur bis 2 s aufgezeichnet (erhalten: 2,5 s)";
   QTest::newRow("ru") << "ru"
                       << "Вид"
                       << "Файл"
                       << "История шара"
                       << "Высота (m)"
                       << "Экспорт изображения…"
-                      << "Ширина: должно быть от 16 до 8192 пикселей (получено 9000)";
+                      << "Ширина: должно быть от 16 до 8192 пикселей (получено 9000)"
+                      << "Экспорт видео…"
+                      << "Конец: прогон записан только до 2 s (получено 2,5 s)";
 }
 
 // The Ball story dock is listed in the View menu under its title in the language, and File >
-// Export Image and its refusals speak it too.
+// Export Image and Export Video and their refusals speak it too.
 void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
   QFETCH(QString, code);
   chooseLanguage(code);
@@ -483,6 +490,17 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
   QFETCH(QString, badWidth);
   QSize size;
   QCOMPARE(carom::ui::ImageSizeDialog::readSize("9000", "100", &size), badWidth);
+  // File > Export Video, and a refusal with a number in the language's format.
+  QFETCH(QString, exportVideo);
+  QAction* videoAction = window_->findChild<QAction*>("exportVideo");
+  QVERIFY(menu(fileMenu)->actions().contains(videoAction));
+  QCOMPARE(videoAction->text().remove('&'), exportVideo);
+  QFETCH(QString, badEnd);
+  carom::ui::VideoSettings video;
+  video.from = 0.0;
+  video.to = 2.5;
+  video.size = QSize(320, 240);
+  QCOMPARE(carom::ui::VideoExport::check(video, 2.0, true), badEnd);
 }
 
 QTEST_MAIN(TestLanguage)

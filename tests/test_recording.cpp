@@ -124,6 +124,30 @@ class RecordingTest : public QObject {
     QVERIFY(same(momentOf(*recording.reproduce(211)), moments[211]));
   }
 
+  // The keyframe a replay from a moment starts at: the latest not after it, by simulated time
+  // (the time step changes at frame 150), and frame 0 before the start.
+  void keyframeAtTime() {
+    const Scene scene = elasticGasRoom(40, Method::Swept);
+    Simulation live(scene);
+    const std::size_t keyframeBytes = live.memoryBytes();
+    RunRecording recording(live, 40 * keyframeBytes, 0.0);  // thinned: keyframes irregular
+    std::vector<Moment> moments;
+    recordRun(recording, live, moments);
+    QVERIFY(recording.keyframeCount() > 3);
+    QCOMPARE(recording.keyframeAtTime(-1.0), std::uint64_t(0));
+    QCOMPARE(recording.keyframeAtTime(0.0), std::uint64_t(0));
+    QCOMPARE(recording.keyframeAtTime(1e9), std::uint64_t(300));
+    for (std::uint64_t frame = 1; frame < moments.size(); frame += 7) {
+      const double time = moments[frame].time;
+      const std::uint64_t key = recording.keyframeAtTime(time);
+      QVERIFY2(key <= frame, qPrintable(QString("%1 > %2").arg(key).arg(frame)));
+      QCOMPARE(key, recording.keyframeBefore(frame));  // no later keyframe is at or before it
+      // A little before the frame's time, the keyframe is at most the previous frame's.
+      QVERIFY(recording.keyframeAtTime(time - 1e-12) <= frame - 1 ||
+              moments[frame - 1].time == time);
+    }
+  }
+
   // Going back and on from there forgets the old future and records the new one.
   void truncateAndGoOn() {
     const Scene scene = elasticGasRoom(80, Method::Swept);

@@ -155,6 +155,7 @@ class TestSceneView : public QObject {
   void rayAtInvertsProject();
   void trailsAndVelocityArrowsAreDrawn();
   void renderPictureDrawsAtItsOwnSize();
+  void renderPictureWithoutHighlights();
 
  private:
   struct ShownView {
@@ -852,6 +853,26 @@ void TestSceneView::renderPictureDrawsAtItsOwnSize() {
   const QImage after = view.grabFramebuffer();
   QVERIFY(hasHue(pixelAt(view, after, scene.balls[0].position), Red));
   QVERIFY(!hasHue(pixelAt(view, after, Vec3(-1.5, 2.5, 0)), Red));
+}
+
+// A picture without highlights (a video's) shows a selected ball and plane as if nothing were
+// selected, and the view keeps its highlight for the next picture.
+void TestSceneView::renderPictureWithoutHighlights() {
+  ShownView shown = showView(testScene());
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const QSize size(320, 240);
+  SceneView::Picture picture = view.picture();
+  QVERIFY(picture.highlights);
+  const QImage unselected = view.renderPicture(picture, size);
+  view.setHighlighted({0}, {0}, {}, {});
+  const QImage selected = view.renderPicture(picture, size);
+  QVERIFY(!unselected.isNull());
+  QVERIFY(selected != unselected);
+  picture.highlights = false;
+  QCOMPARE(view.renderPicture(picture, size), unselected);
+  picture.highlights = true;
+  QCOMPARE(view.renderPicture(picture, size), selected);
 }
 
 QTEST_MAIN(TestSceneView)

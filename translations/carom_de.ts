@@ -1296,435 +1296,440 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="207"/>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="213"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="207"/>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="213"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="549"/>
+        <location filename="../ui/main_window.cpp" line="556"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="548"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="550"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="551"/>
+        <location filename="../ui/main_window.cpp" line="558"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="552"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="509"/>
+        <location filename="../ui/main_window.cpp" line="516"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="529"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="523"/>
+        <location filename="../ui/main_window.cpp" line="530"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="532"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="302"/>
+        <location filename="../ui/main_window.cpp" line="308"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="539"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="313"/>
+        <location filename="../ui/main_window.cpp" line="319"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="534"/>
+        <location filename="../ui/main_window.cpp" line="541"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="326"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="535"/>
+        <location filename="../ui/main_window.cpp" line="542"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="327"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="502"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="653"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="679"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="374"/>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Throw Speed Limit</source>
         <translation>Wurfgeschwindigkeitsgrenze</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="374"/>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Fastest throw of a grabbed ball (m/s):</source>
         <translation>Schnellster Wurf einer gegriffenen Kugel (m/s):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="382"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>Timeline Memory</source>
         <translation>Speicher der Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="382"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>Memory for the recorded run (MiB):</source>
         <translation>Speicher für den aufgezeichneten Lauf (MiB):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
+        <source>Export &amp;Video…</source>
+        <translation>&amp;Video exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="531"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="558"/>
+        <location filename="../ui/main_window.cpp" line="565"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="566"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="567"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="711"/>
+        <location filename="../ui/main_window.cpp" line="718"/>
         <source>Stopped by the watch: %1</source>
         <translation>Von der Überwachung angehalten: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="734"/>
         <source>Simulation Stopped</source>
         <translation>Simulation angehalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="737"/>
         <source>The run is paused. The last step that passed the watch ended at %1 s. The checks and their tolerances are in Simulation &gt; Watch.</source>
         <translation>Der Lauf ist pausiert. Der letzte Schritt, der die Überwachung bestand, endete bei %1 s. Die Prüfungen und ihre Toleranzen stehen unter Simulation &gt; Überwachung.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="737"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>Show the Moment Before</source>
         <translation>Den Moment davor zeigen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="802"/>
+        <location filename="../ui/main_window.cpp" line="812"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="521"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="522"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="517"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="890"/>
+        <location filename="../ui/main_window.cpp" line="900"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="549"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="547"/>
+        <location filename="../ui/main_window.cpp" line="554"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="554"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1918,6 +1923,249 @@
         <location filename="../ui/timeline_bar.cpp" line="66"/>
         <source>replayed in %1 ms</source>
         <translation>nachgespielt in %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::VideoExport</name>
+    <message>
+        <location filename="../ui/video_export.cpp" line="198"/>
+        <source>Start: must not be before 0 s (got %1 s)</source>
+        <translation>Anfang: darf nicht vor 0 s liegen (erhalten: %1 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="200"/>
+        <source>End: must not be before the start, %1 s (got %2 s)</source>
+        <translation>Ende: darf nicht vor dem Anfang (%1 s) liegen (erhalten: %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="203"/>
+        <source>End: the run is recorded up to %1 s only (got %2 s)</source>
+        <translation>Ende: der Lauf ist nur bis %1 s aufgezeichnet (erhalten: %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="206"/>
+        <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
+        <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="216"/>
+        <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
+        <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde: wählen Sie PNG-Bilder oder installieren Sie ffmpeg.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="221"/>
+        <source>MP4: the width and height must be even (got %1×%2)</source>
+        <translation>MP4: Breite und Höhe müssen gerade sein (erhalten: %1×%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="257"/>
+        <location filename="../ui/video_export.cpp" line="355"/>
+        <source>Export Video</source>
+        <translation>Video exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="258"/>
+        <source>MP4 videos (*.mp4)</source>
+        <translation>MP4-Videos (*.mp4)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="265"/>
+        <source>Export Video: Folder for the Frames</source>
+        <translation>Video exportieren: Ordner für die Bilder</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="272"/>
+        <location filename="../ui/video_export.cpp" line="471"/>
+        <source>Cannot Export Video</source>
+        <translation>Video kann nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="283"/>
+        <source>A video is being exported already.</source>
+        <translation>Es wird bereits ein Video exportiert.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="286"/>
+        <source>There is no run to export yet.</source>
+        <translation>Es gibt noch keinen Lauf zum Exportieren.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="291"/>
+        <source>No folder or file was chosen.</source>
+        <translation>Es wurde kein Ordner und keine Datei gewählt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="294"/>
+        <source>Could not create the folder %1.</source>
+        <translation>Der Ordner %1 konnte nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="296"/>
+        <source>Could not write into the folder %1.</source>
+        <translation>In den Ordner %1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="299"/>
+        <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
+        <translation>Der Ordner %1 enthält bereits Bilder (frame_*.png): wählen Sie einen anderen Ordner oder entfernen Sie sie zuerst.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="305"/>
+        <source>Could not write %1: its folder does not exist or cannot be written.</source>
+        <translation>%1 konnte nicht geschrieben werden: der Ordner existiert nicht oder ist nicht beschreibbar.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="308"/>
+        <source>Could not write %1: it is a folder.</source>
+        <translation>%1 konnte nicht geschrieben werden: es ist ein Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="343"/>
+        <source>Could not start ffmpeg: %1</source>
+        <translation>ffmpeg konnte nicht gestartet werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="352"/>
+        <source>Exporting %n video frame(s)…</source>
+        <translation>
+            <numerusform>%n Videobild wird exportiert…</numerusform>
+            <numerusform>%n Videobilder werden exportiert…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="352"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="380"/>
+        <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
+        <translation>
+            <numerusform>Der Lauf wurde während des Exports zurückgesetzt oder von einem früheren Bild aus fortgesetzt; der Export endete nach %n Bild.</numerusform>
+            <numerusform>Der Lauf wurde während des Exports zurückgesetzt oder von einem früheren Bild aus fortgesetzt; der Export endete nach %n Bildern.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="400"/>
+        <source>Finishing the video…</source>
+        <translation>Das Video wird fertiggestellt…</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="414"/>
+        <source>The graphics driver could not draw a %1×%2 picture.</source>
+        <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="423"/>
+        <source>Could not write %1: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="447"/>
+        <source>ffmpeg failed (exit code %1): %2</source>
+        <translation>ffmpeg ist fehlgeschlagen (Exit-Code %1): %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="451"/>
+        <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
+        <translation>
+            <numerusform>%n Videobild mit %1×%2 bei %3 fps nach %4 exportiert</numerusform>
+            <numerusform>%n Videobilder mit %1×%2 bei %3 fps nach %4 exportiert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="465"/>
+        <source>The %n frame(s) written before were left in %1.</source>
+        <translation>
+            <numerusform>%n zuvor geschriebenes Bild bleibt in %1.</numerusform>
+            <numerusform>Die %n zuvor geschriebenen Bilder bleiben in %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="483"/>
+        <source>Video export cancelled; the unfinished video was removed.</source>
+        <translation>Videoexport abgebrochen; das unfertige Video wurde entfernt.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="484"/>
+        <source>Video export cancelled after %n frame(s); they were left in %1.</source>
+        <translation>
+            <numerusform>Videoexport nach %n Bild abgebrochen; es bleibt in %1.</numerusform>
+            <numerusform>Videoexport nach %n Bildern abgebrochen; sie bleiben in %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::VideoExportDialog</name>
+    <message>
+        <location filename="../ui/video_export.cpp" line="81"/>
+        <source>Export Video</source>
+        <translation>Video exportieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="93"/>
+        <source>PNG images in a folder</source>
+        <translation>PNG-Bilder in einem Ordner</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="94"/>
+        <source>MP4 video (ffmpeg)</source>
+        <translation>MP4-Video (ffmpeg)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="96"/>
+        <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
+        <translation>Der Lauf ist von 0 bis %1 s aufgezeichnet. Jedes Videobild zeigt den aufgezeichneten Schritt, der zu seinem Zeitpunkt oder als letzter davor endete.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="108"/>
+        <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
+        <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde (scripts/setup-debian.sh installiert es); PNG-Bilder brauchen nichts weiter.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="118"/>
+        <source>Start (s)</source>
+        <translation>Anfang (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="119"/>
+        <source>End (s)</source>
+        <translation>Ende (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="120"/>
+        <source>Frames per second</source>
+        <translation>Bilder pro Sekunde</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="121"/>
+        <source>Width (pixels)</source>
+        <translation>Breite (Pixel)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="122"/>
+        <source>Height (pixels)</source>
+        <translation>Höhe (Pixel)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="123"/>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="141"/>
+        <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
+        <translation>Anfang: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="142"/>
+        <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
+        <translation>Ende: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="144"/>
+        <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
+        <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
     </message>
 </context>
 <context>

@@ -57,4 +57,42 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>carom::ui::VideoExport</name>
+    <message numerus="yes">
+        <source>Exporting %n video frame(s)…</source>
+        <translation>
+            <numerusform>Exporting %n video frame…</numerusform>
+            <numerusform>Exporting %n video frames…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
+        <translation>
+            <numerusform>The run was reset or went on from an earlier frame during the export, which stopped after %n frame.</numerusform>
+            <numerusform>The run was reset or went on from an earlier frame during the export, which stopped after %n frames.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
+        <translation>
+            <numerusform>Exported %n video frame of %1×%2 at %3 fps to %4</numerusform>
+            <numerusform>Exported %n video frames of %1×%2 at %3 fps to %4</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The %n frame(s) written before were left in %1.</source>
+        <translation>
+            <numerusform>The %n frame written before was left in %1.</numerusform>
+            <numerusform>The %n frames written before were left in %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Video export cancelled after %n frame(s); they were left in %1.</source>
+        <translation>
+            <numerusform>Video export cancelled after %n frame; it was left in %1.</numerusform>
+            <numerusform>Video export cancelled after %n frames; they were left in %1.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

@@ -1300,435 +1300,440 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="553"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="207"/>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="213"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="207"/>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="213"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="549"/>
+        <location filename="../ui/main_window.cpp" line="556"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="548"/>
+        <location filename="../ui/main_window.cpp" line="555"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="550"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="551"/>
+        <location filename="../ui/main_window.cpp" line="558"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="552"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="509"/>
+        <location filename="../ui/main_window.cpp" line="516"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="529"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="523"/>
+        <location filename="../ui/main_window.cpp" line="530"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="532"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="535"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="302"/>
+        <location filename="../ui/main_window.cpp" line="308"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="539"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="313"/>
+        <location filename="../ui/main_window.cpp" line="319"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="534"/>
+        <location filename="../ui/main_window.cpp" line="541"/>
         <source>Exact (event-driven), swept, or discrete steps</source>
         <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="320"/>
+        <location filename="../ui/main_window.cpp" line="326"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="535"/>
+        <location filename="../ui/main_window.cpp" line="542"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="327"/>
+        <location filename="../ui/main_window.cpp" line="333"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="502"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="646"/>
+        <location filename="../ui/main_window.cpp" line="653"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="679"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="374"/>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Throw Speed Limit</source>
         <translation>Предел скорости броска</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="374"/>
+        <location filename="../ui/main_window.cpp" line="380"/>
         <source>Fastest throw of a grabbed ball (m/s):</source>
         <translation>Наибольшая скорость броска захваченного шара (m/s):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="382"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>Timeline Memory</source>
         <translation>Память временной шкалы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="382"/>
+        <location filename="../ui/main_window.cpp" line="388"/>
         <source>Memory for the recorded run (MiB):</source>
         <translation>Память для записанного прогона (МиБ):</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Export &amp;Image…</source>
         <translation>Экспорт &amp;изображения…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
+        <source>Export &amp;Video…</source>
+        <translation>Экспорт ви&amp;део…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="524"/>
+        <location filename="../ui/main_window.cpp" line="531"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="558"/>
+        <location filename="../ui/main_window.cpp" line="565"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="566"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="567"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="711"/>
+        <location filename="../ui/main_window.cpp" line="718"/>
         <source>Stopped by the watch: %1</source>
         <translation>Остановлено наблюдением: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="727"/>
+        <location filename="../ui/main_window.cpp" line="734"/>
         <source>Simulation Stopped</source>
         <translation>Симуляция остановлена</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="730"/>
+        <location filename="../ui/main_window.cpp" line="737"/>
         <source>The run is paused. The last step that passed the watch ended at %1 s. The checks and their tolerances are in Simulation &gt; Watch.</source>
         <translation>Прогон приостановлен. Последний шаг, прошедший проверку, закончился в %1 s. Проверки и их допуски — в меню Симуляция &gt; Наблюдение.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="737"/>
+        <location filename="../ui/main_window.cpp" line="744"/>
         <source>Show the Moment Before</source>
         <translation>Показать момент перед этим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="802"/>
+        <location filename="../ui/main_window.cpp" line="812"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="521"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="522"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="517"/>
+        <location filename="../ui/main_window.cpp" line="524"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="890"/>
+        <location filename="../ui/main_window.cpp" line="900"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="549"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="547"/>
+        <location filename="../ui/main_window.cpp" line="554"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="554"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1924,6 +1929,254 @@
         <location filename="../ui/timeline_bar.cpp" line="66"/>
         <source>replayed in %1 ms</source>
         <translation>воспроизведено за %1 мс</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::VideoExport</name>
+    <message>
+        <location filename="../ui/video_export.cpp" line="198"/>
+        <source>Start: must not be before 0 s (got %1 s)</source>
+        <translation>Начало: должно быть не раньше 0 s (получено %1 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="200"/>
+        <source>End: must not be before the start, %1 s (got %2 s)</source>
+        <translation>Конец: должен быть не раньше начала, %1 s (получено %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="203"/>
+        <source>End: the run is recorded up to %1 s only (got %2 s)</source>
+        <translation>Конец: прогон записан только до %1 s (получено %2 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="206"/>
+        <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
+        <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="216"/>
+        <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
+        <translation>Для MP4 нужен ffmpeg, но в PATH его нет: выберите изображения PNG или установите ffmpeg.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="221"/>
+        <source>MP4: the width and height must be even (got %1×%2)</source>
+        <translation>MP4: ширина и высота должны быть чётными (получено %1×%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="257"/>
+        <location filename="../ui/video_export.cpp" line="355"/>
+        <source>Export Video</source>
+        <translation>Экспорт видео</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="258"/>
+        <source>MP4 videos (*.mp4)</source>
+        <translation>Видео MP4 (*.mp4)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="265"/>
+        <source>Export Video: Folder for the Frames</source>
+        <translation>Экспорт видео: папка для кадров</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="272"/>
+        <location filename="../ui/video_export.cpp" line="471"/>
+        <source>Cannot Export Video</source>
+        <translation>Не удалось экспортировать видео</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="283"/>
+        <source>A video is being exported already.</source>
+        <translation>Видео уже экспортируется.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="286"/>
+        <source>There is no run to export yet.</source>
+        <translation>Ещё нет прогона для экспорта.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="291"/>
+        <source>No folder or file was chosen.</source>
+        <translation>Не выбраны ни папка, ни файл.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="294"/>
+        <source>Could not create the folder %1.</source>
+        <translation>Не удалось создать папку %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="296"/>
+        <source>Could not write into the folder %1.</source>
+        <translation>Не удалось записать в папку %1.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="299"/>
+        <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
+        <translation>В папке %1 уже есть кадры (frame_*.png): выберите другую папку или сначала удалите их.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="305"/>
+        <source>Could not write %1: its folder does not exist or cannot be written.</source>
+        <translation>Не удалось записать %1: папка не существует или недоступна для записи.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="308"/>
+        <source>Could not write %1: it is a folder.</source>
+        <translation>Не удалось записать %1: это папка.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="343"/>
+        <source>Could not start ffmpeg: %1</source>
+        <translation>Не удалось запустить ffmpeg: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="352"/>
+        <source>Exporting %n video frame(s)…</source>
+        <translation>
+            <numerusform>Экспорт %n кадра видео…</numerusform>
+            <numerusform>Экспорт %n кадров видео…</numerusform>
+            <numerusform>Экспорт %n кадров видео…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="352"/>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="380"/>
+        <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
+        <translation>
+            <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадра.</numerusform>
+            <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадров.</numerusform>
+            <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадров.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="400"/>
+        <source>Finishing the video…</source>
+        <translation>Завершение видео…</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="414"/>
+        <source>The graphics driver could not draw a %1×%2 picture.</source>
+        <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="423"/>
+        <source>Could not write %1: %2</source>
+        <translation>Не удалось записать %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="447"/>
+        <source>ffmpeg failed (exit code %1): %2</source>
+        <translation>Ошибка ffmpeg (код выхода %1): %2</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="451"/>
+        <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
+        <translation>
+            <numerusform>Экспортирован %n кадр видео %1×%2 при %3 fps в %4</numerusform>
+            <numerusform>Экспортировано %n кадра видео %1×%2 при %3 fps в %4</numerusform>
+            <numerusform>Экспортировано %n кадров видео %1×%2 при %3 fps в %4</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="465"/>
+        <source>The %n frame(s) written before were left in %1.</source>
+        <translation>
+            <numerusform>%n уже записанный кадр оставлен в %1.</numerusform>
+            <numerusform>%n уже записанных кадра оставлены в %1.</numerusform>
+            <numerusform>%n уже записанных кадров оставлены в %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="483"/>
+        <source>Video export cancelled; the unfinished video was removed.</source>
+        <translation>Экспорт видео отменён; незаконченное видео удалено.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/video_export.cpp" line="484"/>
+        <source>Video export cancelled after %n frame(s); they were left in %1.</source>
+        <translation>
+            <numerusform>Экспорт видео отменён после %n кадра; он оставлен в %1.</numerusform>
+            <numerusform>Экспорт видео отменён после %n кадров; они оставлены в %1.</numerusform>
+            <numerusform>Экспорт видео отменён после %n кадров; они оставлены в %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::VideoExportDialog</name>
+    <message>
+        <location filename="../ui/video_export.cpp" line="81"/>
+        <source>Export Video</source>
+        <translation>Экспорт видео</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="93"/>
+        <source>PNG images in a folder</source>
+        <translation>Изображения PNG в папке</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="94"/>
+        <source>MP4 video (ffmpeg)</source>
+        <translation>Видео MP4 (ffmpeg)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="96"/>
+        <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
+        <translation>Прогон записан от 0 до %1 s. Каждый кадр видео показывает записанный шаг, закончившийся в его момент или последним перед ним.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="108"/>
+        <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
+        <translation>Для MP4 нужен ffmpeg, но в PATH его нет (его устанавливает scripts/setup-debian.sh); для изображений PNG больше ничего не нужно.</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="118"/>
+        <source>Start (s)</source>
+        <translation>Начало (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="119"/>
+        <source>End (s)</source>
+        <translation>Конец (s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="120"/>
+        <source>Frames per second</source>
+        <translation>Кадров в секунду</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="121"/>
+        <source>Width (pixels)</source>
+        <translation>Ширина (пикселей)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="122"/>
+        <source>Height (pixels)</source>
+        <translation>Высота (пикселей)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="123"/>
+        <source>Format</source>
+        <translation>Формат</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="141"/>
+        <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
+        <translation>Начало: должно быть числом секунд (получено «%1»)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="142"/>
+        <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
+        <translation>Конец: должен быть числом секунд (получено «%1»)</translation>
+    </message>
+    <message>
+        <location filename="../ui/video_export.cpp" line="144"/>
+        <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
+        <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,7 @@
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"
 #include "ui/timeline_bar.h"
+#include "ui/video_export.h"
 #include "ui/watch_menu.h"
 #include "ui/watch_text.h"
 
@@ -113,6 +114,11 @@ MainWindow::MainWindow(QWidget* parent)
   energyDock_->raise();
   imageExport_ = new ImageExport(view_, this, this);
   connect(imageExport_, &ImageExport::message, this, &MainWindow::showMessage);
+  videoExport_ = new VideoExport(view_, simulation_.get(), this, this);
+  connect(videoExport_, &VideoExport::message, this, &MainWindow::showMessage);
+  // The frames come from the recording, which a running simulation would go on extending.
+  connect(videoExport_, &VideoExport::pauseRequested, this,
+          [this] { playAction_->setChecked(false); });
   sound_ = new SoundThread(this);
   status_ = new StatusReadout(sound_);
   // Permanent: passing messages (saves, refusals) show beside the readout, not over it.
@@ -338,7 +344,7 @@ void MainWindow::buildMenus() {
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::fillRecentMenu);
   fileMenu_->addActions({saveAction_, saveAsAction_});
   fileMenu_->addSeparator();
-  fileMenu_->addAction(exportImageAction_);
+  fileMenu_->addActions({exportImageAction_, exportVideoAction_});
   fileMenu_->addSeparator();
   quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, this, &QWidget::close);
 
@@ -472,6 +478,7 @@ void MainWindow::retranslate() {
   saveAction_->setText(tr("&Save"));
   saveAsAction_->setText(tr("Save &As…"));
   exportImageAction_->setText(tr("Export &Image…"));
+  exportVideoAction_->setText(tr("Export &Video…"));
   quitAction_->setText(tr("&Quit"));
 
   editMenu_->setTitle(tr("&Edit"));
@@ -763,6 +770,9 @@ void MainWindow::buildFileActions() {
   exportImageAction_ = new QAction(this);
   exportImageAction_->setObjectName("exportImage");
   connect(exportImageAction_, &QAction::triggered, imageExport_, &ImageExport::exportImage);
+  exportVideoAction_ = new QAction(this);
+  exportVideoAction_->setObjectName("exportVideo");
+  connect(exportVideoAction_, &QAction::triggered, videoExport_, &VideoExport::exportVideo);
 }
 
 bool MainWindow::openFile(const QString& fileName, bool askToSave) {

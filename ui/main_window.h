@@ -33,6 +33,7 @@ namespace carom::ui {
 class AccuracyWindow;
 class BallStoryDock;
 class ImageExport;
+class VideoExport;
 class EditActions;
 class SceneFiles;
 class NumberBox;
@@ -89,6 +90,7 @@ class MainWindow : public QMainWindow {
   EnergyPlot* energyPlot() const { return energyPlot_; }
   BallStoryDock* ballStoryDock() const { return storyDock_; }
   ImageExport* imageExport() const { return imageExport_; }
+  VideoExport* videoExport() const { return videoExport_; }
   SoundThread& sound() { return *sound_; }
   QString statusText() const;
   // Opens the Speed vs accuracy window on the current scene and settings, and starts it.
@@ -141,7 +143,9 @@ class MainWindow : public QMainWindow {
   EnergyPlot* energyPlot_ = nullptr;
   BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
   ImageExport* imageExport_ = nullptr;  // File > Export Image
+  VideoExport* videoExport_ = nullptr;  // File > Export Video
   QAction* exportImageAction_ = nullptr;
+  QAction* exportVideoAction_ = nullptr;
   SoundThread* sound_ = nullptr;
   QAction* muteAction_ = nullptr;
   QAction* explosionsAction_ = nullptr;

@@ -72,6 +72,12 @@ void SimulationController::showFrame(std::uint64_t frame) {
 void SimulationController::setRecordingBudget(std::size_t bytes) {
   post([worker = worker_, bytes] { worker->setRecordingBudget(bytes); });
 }
+void SimulationController::exportVideo(std::shared_ptr<VideoFrameQueue> frames, double from,
+                                       double to, int fps) {
+  post([worker = worker_, frames = std::move(frames), from, to, fps]() mutable {
+    worker->exportVideo(std::move(frames), from, to, fps);
+  });
+}
 void SimulationController::grab(int ball) {
   post([worker = worker_, ball] { worker->grab(ball); });
 }

@@ -19,6 +19,7 @@ namespace carom::ui {
 
 class CallQueue;
 class SimulationWorker;
+class VideoFrameQueue;
 
 class SimulationController : public QObject {
   Q_OBJECT
@@ -41,6 +42,8 @@ class SimulationController : public QObject {
   void moveGrab(const carom::Vec3& target);
   void releaseGrab(const carom::Vec3& velocity);
   void setThrowLimit(double speed);
+  // The video export's frames, replayed from the recorded run (SimulationWorker::exportVideo).
+  void exportVideo(std::shared_ptr<VideoFrameQueue> frames, double from, double to, int fps);
   // The run watch's checks (valid), from the next step on.
   void setWatchSettings(const carom::WatchSettings& settings);
 

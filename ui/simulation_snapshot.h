@@ -34,6 +34,7 @@ struct SimulationSnapshot {
   // The timeline (sim/run_recording.h).
   std::uint64_t frame = 0;       // the frame shown
   std::uint64_t frameCount = 0;  // the frames recorded: the live run's present
+  double latestTime = 0.0;       // the simulated time of the newest frame recorded
   std::size_t recordingBytes = 0;
   std::size_t keyframes = 0;
   double scrubMilliseconds = 0.0;  // what reproducing the frame shown took, when it was

@@ -27,6 +27,9 @@ constexpr std::size_t kMaxPendingCollisions = 4096;
 // Simulated m/s: fast enough for a hard throw across a room, slow enough not to fling a ball
 // out of sight.
 constexpr double kDefaultThrowLimit = 50.0;
+// Recorded frames are sums of steps: a frame that should fall exactly on a video frame's moment
+// may come out a rounding error after it. A nanosecond is far below any time step.
+constexpr double kVideoTimeSlack = 1e-9;
 
 }  // namespace
 
@@ -45,6 +48,7 @@ void SimulationWorker::loadScene(const carom::Scene& scene, std::uint64_t number
 }
 
 void SimulationWorker::reset() {
+  abandonVideo();
   simulation_ = std::make_unique<Simulation>(scene_);
   recording_ = std::make_unique<RunRecording>(*simulation_, recordingBudget_);
   shown_.reset();
@@ -123,6 +127,7 @@ bool SimulationWorker::watchStep() {
 void SimulationWorker::tick() {
   const double elapsed = clock_.nsecsElapsed() * 1e-9;
   clock_.restart();
+  makeVideoFrames();
   if (!running_ || !simulation_) return;
   owed_ += elapsed * speed_;
   QElapsedTimer work;
@@ -184,6 +189,7 @@ void SimulationWorker::setRecordingBudget(std::size_t bytes) {
 
 void SimulationWorker::goOnFromShownFrame() {
   if (!shown_) return;
+  abandonVideo();  // the frames it replays are about to be forgotten
   recording_->truncate(shownFrame_);
   simulation_ = std::move(shown_);
   simulation_->setCollisionLog(true);
@@ -193,6 +199,72 @@ void SimulationWorker::goOnFromShownFrame() {
   if (simulation_->grabbed() >= 0) intervene({Intervention::Kind::Release, -1, Vec3::Zero(), {}});
   // The watch compares with the frame the run goes on from.
   watch_.rebase(*simulation_);
+}
+
+void SimulationWorker::exportVideo(std::shared_ptr<VideoFrameQueue> frames, double from, double to,
+                                   int fps) {
+  abandonVideo();
+  if (!frames) return;
+  if (!simulation_ || fps <= 0 || !(from >= 0.0) || !(to >= from)) {
+    frames->abandon();
+    return;
+  }
+  auto job = std::make_unique<VideoJob>();
+  job->frames = std::move(frames);
+  // A fresh copy from the keyframe before the stretch: the live run and the frame shown stay
+  // as they are.
+  job->frame = recording_->keyframeAtTime(from);
+  job->replay = recording_->reproduce(job->frame);
+  job->replay->setCollisionLog(false);
+  job->lastFrame = recording_->frameCount();
+  job->from = from;
+  job->fps = fps;
+  video_ = std::move(job);
+  makeVideoFrames();
+}
+
+void SimulationWorker::abandonVideo() {
+  if (video_) video_->frames->abandon();
+  video_.reset();
+}
+
+void SimulationWorker::makeVideoFrames() {
+  if (!video_) return;
+  VideoJob& job = *video_;
+  VideoFrameQueue& queue = *job.frames;
+  QElapsedTimer work;
+  work.start();
+  // The work is cut into pieces between recorded frames, so that a cancel or another request
+  // waits at most a tick's budget.
+  for (;;) {
+    if (queue.cancelled()) {
+      video_.reset();
+      return;
+    }
+    if (job.next >= queue.count()) {
+      video_.reset();  // all made; the GUI counts them
+      return;
+    }
+    if (queue.room() == 0 || work.nsecsElapsed() * 1e-9 >= kWorkBudgetSeconds) return;
+    const double moment = videoFrameTime(job.from, job.fps, job.next);
+    Simulation& replay = *job.replay;
+    // Recorded frames are at step ends: the replay's frame is due if it is not after the
+    // moment (the first frame there is, whatever its time, stands in before it).
+    if (!job.haveHeld || replay.time() <= moment + kVideoTimeSlack) {
+      job.held.clear();
+      for (const BallState& ball : replay.state()) job.held.push_back(ball.position);
+      job.heldTime = replay.time();
+      job.haveHeld = true;
+      if (job.frame < job.lastFrame) {
+        recording_->replay(replay, job.frame, job.frame + 1);
+        ++job.frame;
+        continue;
+      }
+    }
+    // The replay is past the moment, or at the last recorded frame: what is held is shown.
+    queue.push({job.next, moment, job.heldTime, job.held});
+    ++job.next;
+  }
 }
 
 void SimulationWorker::intervene(const Intervention& what) {
@@ -256,6 +328,7 @@ void SimulationWorker::publish() {
   }
   snapshot->frameCount = recording_->frameCount();
   snapshot->frame = shown_ ? shownFrame_ : snapshot->frameCount;
+  snapshot->latestTime = simulation_->time();
   snapshot->recordingBytes = recording_->memoryBytes();
   snapshot->keyframes = recording_->keyframeCount();
   snapshot->scrubMilliseconds = lastScrubMilliseconds_;

@@ -8,6 +8,7 @@
 #include "sim/run_watch.h"
 #include "sim/scene.h"
 #include "ui/simulation_snapshot.h"
+#include "ui/video_frames.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -49,6 +50,12 @@ class SimulationWorker : public QObject {
   // after it are forgotten.
   void showFrame(std::uint64_t frame);
   void setRecordingBudget(std::size_t bytes);
+  // The video export (ui/video_export.h): replays the recorded run from `from` to `to`
+  // (simulated seconds) on a copy of its own, leaving the live run and the frame shown alone,
+  // and pushes into `frames` the ball positions of the latest recorded frame at or before each
+  // video frame's moment, a batch at each tick as far as the queue has room, until all are made,
+  // the queue is cancelled, or the run is reset or goes on from an earlier frame (abandoned).
+  void exportVideo(std::shared_ptr<VideoFrameQueue> frames, double from, double to, int fps);
 
   // Grabbing (sim/grab.h). While running, the held ball is steered to reach the latest target
   // by the end of each batch of steps; paused, it moves there at once as far as it is clear.
@@ -72,6 +79,9 @@ class SimulationWorker : public QObject {
   // After a step: runs the watch; on an event pauses and keeps it for the snapshots. True when
   // the run goes on.
   bool watchStep();
+  // Makes the video frames due, as far as the queue has room and the tick's budget lasts.
+  void makeVideoFrames();
+  void abandonVideo();
 
   SnapshotExchange& exchange_;
   Scene scene_;
@@ -103,6 +113,20 @@ class SimulationWorker : public QObject {
   RunWatch watch_;
   std::optional<WatchEvent> watchEvent_;
   std::uint64_t watchEvents_ = 0;
+  struct VideoJob {
+    std::shared_ptr<VideoFrameQueue> frames;
+    std::unique_ptr<Simulation> replay;  // at recorded frame `frame`
+    std::uint64_t frame = 0;
+    std::uint64_t lastFrame = 0;  // the newest recorded when the export began
+    double from = 0.0;
+    int fps = 1;
+    int next = 0;  // the next video frame to make
+    // The latest recorded frame not after the next video frame's moment, as far as known.
+    std::vector<Vec3> held;
+    double heldTime = 0.0;
+    bool haveHeld = false;
+  };
+  std::unique_ptr<VideoJob> video_;
 };
 
 }  // namespace carom::ui

@@ -562,8 +562,9 @@ void SceneView::setVelocityArrows(std::vector<Arrow> arrows) {
 SceneView::Picture SceneView::picture() const {
   Camera camera = camera_;
   camera.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
-  return {scene_,        ballPositions_, explosions_.live(), trails_, velocityArrows_,
-          handleArrows_, camera};
+  return {
+      scene_, ballPositions_, explosions_.live(), trails_, velocityArrows_, handleArrows_, camera,
+      true};
 }
 
 QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
@@ -578,7 +579,18 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
   std::vector<Trail> ownTrails = std::exchange(trails_, picture.trails);
   std::vector<Arrow> ownVelocities = std::exchange(velocityArrows_, picture.velocityArrows);
   std::vector<Arrow> ownHandles = std::exchange(handleArrows_, picture.handleArrows);
-  if (otherScene || staticDataDirty_) uploadStaticData();
+  // The highlight is in the static data: without it, that is uploaded again before and after.
+  const bool plain =
+      !picture.highlights && (!highlightedBalls_.empty() || !highlightedPlanes_.empty() ||
+                              !highlightedCylinders_.empty() || !highlightedBoxes_.empty());
+  std::vector<int> ownHighlights[4];
+  if (plain) {
+    ownHighlights[0] = std::exchange(highlightedBalls_, {});
+    ownHighlights[1] = std::exchange(highlightedPlanes_, {});
+    ownHighlights[2] = std::exchange(highlightedCylinders_, {});
+    ownHighlights[3] = std::exchange(highlightedBoxes_, {});
+  }
+  if (otherScene || staticDataDirty_ || plain) uploadStaticData();
   uploadBallPositions();
 
   QOpenGLFramebufferObjectFormat format;
@@ -608,7 +620,13 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
   trails_ = std::move(ownTrails);
   velocityArrows_ = std::move(ownVelocities);
   handleArrows_ = std::move(ownHandles);
-  if (otherScene) staticDataDirty_ = true;
+  if (plain) {
+    highlightedBalls_ = std::move(ownHighlights[0]);
+    highlightedPlanes_ = std::move(ownHighlights[1]);
+    highlightedCylinders_ = std::move(ownHighlights[2]);
+    highlightedBoxes_ = std::move(ownHighlights[3]);
+  }
+  if (otherScene || plain) staticDataDirty_ = true;
   positionsDirty_ = true;
   doneCurrent();
   return image;

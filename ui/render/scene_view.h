@@ -53,6 +53,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     std::vector<Arrow> velocityArrows;
     std::vector<Arrow> handleArrows;
     Camera camera;  // its aspect ratio is the picture's own
+    // The selection in its highlight colour, as the view shows it; off for a picture of the
+    // scene alone (a video).
+    bool highlights = true;
   };
   // Sides of a rendered picture, in pixels.
   static constexpr int kMinPictureSide = 16;
