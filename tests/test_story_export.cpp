@@ -65,10 +65,14 @@ class TestStoryExport : public carom::testing::EditorFixture {
     for (int ball : balls) selection.push_back({ObjectKind::Ball, ball});
     document().setSelection(selection);
   }
-  // Runs until the story passes `time`, then pauses and waits for the paused state to be shown.
-  void runUntil(double time) {
+  // Runs until the story passes `time` and ball 0 has at least `samples` samples (one comes with
+  // each frame shown, so a slow machine, as under a sanitizer, needs longer), then pauses and
+  // waits for the paused state to be shown.
+  void runUntil(double time, std::size_t samples = 0) {
     window_->setRunning(true);
-    QTRY_VERIFY_WITH_TIMEOUT(dock().story().lastTime().value_or(0.0) > time, 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(dock().story().lastTime().value_or(0.0) > time &&
+                                 dock().story().samples(0).size() >= samples,
+                             30000);
     window_->setRunning(false);
     QTRY_VERIFY([&] {
       const auto latest = window_->simulation().latest();
@@ -83,7 +87,7 @@ void TestStoryExport::storyOfASelectedBallGrowsWithTheRun() {
   dock().show();
   dock().raise();
   dock().setQuantity(BallStoryDock::Quantity::Height);
-  runUntil(1.0);
+  runUntil(1.0, 21);
   QTRY_COMPARE(dock().seriesCount(), 1);
   QTRY_VERIFY(dock().seriesPoints(0).size() > 20);
   QTRY_COMPARE(dock().seriesPoints(0).last().x(), *dock().story().lastTime());  // caught up
