@@ -4,11 +4,15 @@
 // edit of the scene and replays identically.
 
 #include "sim/simulation.h"
+#include "tests/dialog_answerer.h"
 #include "tests/editor_fixture.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
+#include "ui/timeline_bar.h"
 
+#include <QInputDialog>
 #include <QLabel>
+#include <QSettings>
 #include <QSlider>
 #include <QUndoStack>
 
@@ -201,6 +205,47 @@ class TimelineTest : public EditorFixture {
     drag(at(start), at(start + Vec3(1.0, 0, 0)),
          [&] { return document().scene().balls[0].position.x() > start.x() + 0.5; });
     QCOMPARE(document().undoStack()->count(), undoSteps + 1);
+  }
+
+  // Simulation > Timeline Memory and Throw Speed Limit ask over the window and keep the answer;
+  // Cancel keeps the value before.
+  void simulationMenuSettingsAreAskedAndKept() {
+    QCOMPARE(ui::TimelineBar::memoryBudget(), std::size_t(256) << 20);
+    const auto answer = [](int mebibytes) {
+      return ModalAnswerer<QInputDialog>([mebibytes](QInputDialog* dialog) {
+        QCOMPARE(dialog->intMinimum(), ui::TimelineBar::kMinMemoryMebibytes);
+        dialog->setIntValue(mebibytes);
+        mebibytes > 0 ? dialog->accept() : dialog->reject();
+      });
+    };
+    QAction* memory = window_->findChild<QAction*>("timelineMemory");
+    QVERIFY(memory);
+    {
+      auto answerer = answer(64);
+      memory->trigger();
+      QTRY_VERIFY(answerer.answered());
+    }
+    QCOMPARE(ui::TimelineBar::memoryBudget(), std::size_t(64) << 20);
+    {
+      auto answerer = answer(0);  // cancelled
+      memory->trigger();
+      QTRY_VERIFY(answerer.answered());
+    }
+    QCOMPARE(ui::TimelineBar::memoryBudget(), std::size_t(64) << 20);
+    // A stored value out of range, as from an older or hand-edited file, is not used.
+    QSettings().setValue("simulation/timelineMemoryMiB", 3);
+    QCOMPARE(ui::TimelineBar::memoryBudget(), std::size_t(256) << 20);
+
+    QAction* throwLimit = window_->findChild<QAction*>("throwLimit");
+    QVERIFY(throwLimit);
+    ModalAnswerer<QInputDialog> answerer([](QInputDialog* dialog) {
+      QCOMPARE(dialog->doubleValue(), 50.0);
+      dialog->setDoubleValue(7.5);
+      dialog->accept();
+    });
+    throwLimit->trigger();
+    QTRY_VERIFY(answerer.answered());
+    QCOMPARE(QSettings().value("simulation/throwLimit").toDouble(), 7.5);
   }
 
  private:

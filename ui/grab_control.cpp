@@ -4,6 +4,7 @@
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
 
+#include <QInputDialog>
 #include <QLocale>
 #include <QSettings>
 
@@ -39,6 +40,14 @@ void GrabControl::setThrowLimit(double speed) {
   throwLimit_ = speed;
   QSettings().setValue(kThrowLimitKey, speed);
   simulation_->setThrowLimit(speed);
+}
+
+void GrabControl::askThrowLimit(QWidget* parent) {
+  bool ok = false;
+  const double limit = QInputDialog::getDouble(parent, tr("Throw Speed Limit"),
+                                               tr("Fastest throw of a grabbed ball (m/s):"),
+                                               throwLimit_, kMinThrowLimit, kMaxThrowLimit, 6, &ok);
+  if (ok) setThrowLimit(limit);
 }
 
 void GrabControl::showSnapshot(const SimulationSnapshot& snapshot) {

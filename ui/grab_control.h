@@ -6,6 +6,8 @@
 #include <QObject>
 #include <QString>
 
+class QWidget;
+
 #include <optional>
 
 namespace carom::editor {
@@ -25,6 +27,8 @@ class GrabControl : public QObject {
   // Simulated m/s; a throw faster than this is cut to it.
   double throwLimit() const { return throwLimit_; }
   void setThrowLimit(double speed);
+  // Simulation > Throw Speed Limit: asks for the limit over `parent`.
+  void askThrowLimit(QWidget* parent);
   static constexpr double kMinThrowLimit = 1e-6;
   static constexpr double kMaxThrowLimit = 1e9;
 

@@ -4,7 +4,6 @@
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
-#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
@@ -16,7 +15,6 @@
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
 
-#include "sim/run_recording.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 #include "ui/editor/scene_document.h"
@@ -29,8 +27,8 @@
 #include "ui/status_readout.h"
 #include "ui/timeline_bar.h"
 #include "ui/video_export.h"
+#include "ui/watch_alert.h"
 #include "ui/watch_menu.h"
-#include "ui/watch_text.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -41,12 +39,9 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QMimeData>
-#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -58,23 +53,6 @@
 namespace carom::ui {
 
 using render::SceneView;
-
-namespace {
-
-constexpr char kTimelineMemoryKey[] = "simulation/timelineMemoryMiB";
-
-}  // namespace
-
-std::size_t MainWindow::recordingBudget() const {
-  bool ok = false;
-  const int stored = QSettings()
-                         .value(kTimelineMemoryKey, int(RunRecording::kDefaultBudgetBytes >> 20))
-                         .toInt(&ok);
-  const int mebibytes = ok && stored >= kMinTimelineMebibytes && stored <= kMaxTimelineMebibytes
-                            ? stored
-                            : int(RunRecording::kDefaultBudgetBytes >> 20);
-  return std::size_t(mebibytes) << 20;
-}
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -94,6 +72,8 @@ MainWindow::MainWindow(QWidget* parent)
     playAction_->setChecked(false);
     simulation_->showFrame(frame);
   });
+  connect(timeline_, &TimelineBar::memoryBudgetChanged, simulation_.get(),
+          &SimulationController::setRecordingBudget);
   sync_ = new SimulationSync(document_, simulation_.get(), this);
   connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
     view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
@@ -127,6 +107,10 @@ MainWindow::MainWindow(QWidget* parent)
   connect(tools_, &editor::EditorTools::refused, this, &MainWindow::showMessage);
   grab_ = new GrabControl(tools_, simulation_.get(), this);
   connect(grab_, &GrabControl::message, this, &MainWindow::showMessage);
+  watchAlert_ = new WatchAlert(document_, view_, simulation_.get(), this);
+  // The worker has paused; the control follows.
+  connect(watchAlert_, &WatchAlert::stopped, this, [this] { playAction_->setChecked(false); });
+  connect(watchAlert_, &WatchAlert::stopped, this, &MainWindow::watchStopped);
   outlineDock_ = new editor::OutlineDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, outlineDock_);
   connect(outlineDock_->model(), &editor::OutlineModel::refused, this, &MainWindow::showMessage);
@@ -161,7 +145,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildToolActions();
   buildToolBar();
   simulation_->setSpeed(speed_->value());
-  simulation_->setRecordingBudget(recordingBudget());
+  simulation_->setRecordingBudget(TimelineBar::memoryBudget());
   buildMenus();
   connect(document_, &editor::SceneDocument::sceneChanged, this,
           [this](const editor::SceneChange& change) {
@@ -197,7 +181,7 @@ QString MainWindow::statusText() const {
 }
 
 QMessageBox* MainWindow::watchDialog() const {
-  return watchDialog_;
+  return watchAlert_->dialog();
 }
 
 int MainWindow::framesRendered() const {
@@ -374,23 +358,11 @@ void MainWindow::buildMenus() {
   simulationMenu_->addSeparator();
   simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
   simulationMenu_->addSeparator();
-  throwLimitAction_ = simulationMenu_->addAction(QString(), this, [this] {
-    bool ok = false;
-    const double limit = QInputDialog::getDouble(
-        this, tr("Throw Speed Limit"), tr("Fastest throw of a grabbed ball (m/s):"),
-        grab_->throwLimit(), GrabControl::kMinThrowLimit, GrabControl::kMaxThrowLimit, 6, &ok);
-    if (ok) grab_->setThrowLimit(limit);
-  });
+  throwLimitAction_ =
+      simulationMenu_->addAction(QString(), this, [this] { grab_->askThrowLimit(this); });
   throwLimitAction_->setObjectName("throwLimit");
-  timelineMemoryAction_ = simulationMenu_->addAction(QString(), this, [this] {
-    bool ok = false;
-    const int mebibytes = QInputDialog::getInt(
-        this, tr("Timeline Memory"), tr("Memory for the recorded run (MiB):"),
-        int(recordingBudget() >> 20), kMinTimelineMebibytes, kMaxTimelineMebibytes, 16, &ok);
-    if (!ok) return;
-    QSettings().setValue(kTimelineMemoryKey, mebibytes);
-    simulation_->setRecordingBudget(recordingBudget());
-  });
+  timelineMemoryAction_ =
+      simulationMenu_->addAction(QString(), timeline_, &TimelineBar::askMemoryBudget);
   timelineMemoryAction_->setObjectName("timelineMemory");
 
   examplesMenu_ = menuBar()->addMenu(QString());
@@ -703,52 +675,7 @@ void MainWindow::showSnapshot() {
   timeline_->showSnapshot(*snapshot);
   grab_->showSnapshot(*snapshot);
   status_->showSnapshot(snapshot);
-  if (snapshot->watchEvents != watchEventsShown_) {
-    watchEventsShown_ = snapshot->watchEvents;
-    if (snapshot->watchEvent) showWatchEvent(*snapshot);
-  }
-}
-
-void MainWindow::showWatchEvent(const SimulationSnapshot& snapshot) {
-  const WatchEvent& event = *snapshot.watchEvent;
-  playAction_->setChecked(false);  // the worker has paused; the control follows
-  const Scene& scene = document_->scene();
-  const QString text = watchEventText(event, scene);
-  // Stays until another message replaces it: the dialog may be closed before it is read.
-  statusBar()->showMessage(tr("Stopped by the watch: %1").arg(text));
-  if (event.ball >= 0 && event.ball < int(scene.balls.size())) {
-    document_->setSelection({{editor::ObjectKind::Ball, event.ball}});
-    // Following a ball, the view now follows this one (the selection's); otherwise it frames it.
-    const bool known =
-        event.ball < int(snapshot.positions.size()) && snapshot.positions[event.ball].allFinite();
-    if (known && !followAction_->isChecked()) {
-      const Vec3 reach = Vec3::Constant(kWatchFrameRadii * scene.balls[event.ball].radius);
-      const Vec3& centre = snapshot.positions[event.ball];
-      view_->camera().frame({centre - reach, centre + reach});
-      view_->update();
-    }
-  }
-  // Shown without waiting: snapshots keep coming while it is up. A newer event replaces it.
-  if (watchDialog_) watchDialog_->close();
-  auto* box =
-      new QMessageBox(QMessageBox::Warning, tr("Simulation Stopped"), text, QMessageBox::Ok, this);
-  box->setObjectName("watchDialog");
-  box->setInformativeText(
-      tr("The run is paused. The last step that passed the watch ended at %1 s. The checks "
-         "and their tolerances are in Simulation > Watch.")
-          .arg(editor::formatShortNumber(event.lastGoodTime)));
-  box->setAttribute(Qt::WA_DeleteOnClose);
-  box->setWindowModality(Qt::WindowModal);
-  // The timeline holds the frame before the event: the last one that passed.
-  if (snapshot.frameCount > 0) {
-    QPushButton* before = box->addButton(tr("Show the Moment Before"), QMessageBox::ActionRole);
-    before->setObjectName("showMomentBefore");
-    const std::uint64_t frame = snapshot.frameCount - 1;
-    connect(before, &QPushButton::clicked, this, [this, frame] { simulation_->showFrame(frame); });
-  }
-  watchDialog_ = box;
-  box->show();
-  emit watchStopped(event);
+  watchAlert_->showSnapshot(*snapshot, followAction_->isChecked());
 }
 
 // ---- Files ---------------------------------------------------------------------------------

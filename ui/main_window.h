@@ -7,7 +7,6 @@
 #include "ui/editor/object_ref.h"
 
 #include <QMainWindow>
-#include <QPointer>
 #include <QString>
 
 #include <functional>
@@ -40,6 +39,7 @@ class NumberBox;
 class StatusReadout;
 class TimelineBar;
 class GrabControl;
+class WatchAlert;
 class WatchMenu;
 class SoundThread;
 struct SimulationSnapshot;
@@ -133,8 +133,6 @@ class MainWindow : public QMainWindow {
   void buildMenus();
   void buildHelpMenu();
   void showSnapshot();
-  // Pauses, says what happened in the status bar and a dialog, selects the ball and frames it.
-  void showWatchEvent(const SimulationSnapshot& snapshot);
   void changeTimeStep(double factor);
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
@@ -217,15 +215,8 @@ class MainWindow : public QMainWindow {
   GrabControl* grab_ = nullptr;
   QAction* throwLimitAction_ = nullptr;
   QAction* timelineMemoryAction_ = nullptr;
-  // The timeline's memory budget (Simulation > Timeline Memory), from the settings.
-  std::size_t recordingBudget() const;
-  static constexpr int kMinTimelineMebibytes = 16;
-  static constexpr int kMaxTimelineMebibytes = 65536;
   WatchMenu* watchMenu_ = nullptr;
-  std::uint64_t watchEventsShown_ = 0;  // the worker's count of events as of the last shown
-  QPointer<QMessageBox> watchDialog_;
-  // The view frames a ball the watch stopped on with this many radii around it.
-  static constexpr double kWatchFrameRadii = 8.0;
+  WatchAlert* watchAlert_ = nullptr;
 };
 
 }  // namespace carom::ui

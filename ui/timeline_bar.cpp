@@ -1,16 +1,25 @@
 #include "ui/timeline_bar.h"
 
+#include "sim/run_recording.h"
 #include "ui/simulation_snapshot.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
+#include <QSettings>
 #include <QSlider>
 
 #include <limits>
 
 namespace carom::ui {
+namespace {
+
+constexpr char kMemoryKey[] = "simulation/timelineMemoryMiB";
+constexpr int kDefaultMebibytes = int(RunRecording::kDefaultBudgetBytes >> 20);
+
+}  // namespace
 
 TimelineBar::TimelineBar(QWidget* parent)
     : QWidget(parent), slider_(new QSlider(Qt::Horizontal)), label_(new QLabel) {
@@ -45,6 +54,25 @@ void TimelineBar::showSnapshot(const SimulationSnapshot& snapshot) {
   // While the user holds the slider, it stays where the hand is.
   if (!slider_->isSliderDown()) slider_->setValue(int(frame_ / framesPerStep_));
   retranslate();
+}
+
+std::size_t TimelineBar::memoryBudget() {
+  bool ok = false;
+  const int stored = QSettings().value(kMemoryKey, kDefaultMebibytes).toInt(&ok);
+  const int mebibytes = ok && stored >= kMinMemoryMebibytes && stored <= kMaxMemoryMebibytes
+                            ? stored
+                            : kDefaultMebibytes;
+  return std::size_t(mebibytes) << 20;
+}
+
+void TimelineBar::askMemoryBudget() {
+  bool ok = false;
+  const int mebibytes = QInputDialog::getInt(
+      window(), tr("Timeline Memory"), tr("Memory for the recorded run (MiB):"),
+      int(memoryBudget() >> 20), kMinMemoryMebibytes, kMaxMemoryMebibytes, 16, &ok);
+  if (!ok) return;
+  QSettings().setValue(kMemoryKey, mebibytes);
+  emit memoryBudgetChanged(memoryBudget());
 }
 
 void TimelineBar::changeEvent(QEvent* event) {

@@ -1,10 +1,12 @@
 #pragma once
 // The timeline under the view: a slider over every frame the run has recorded
 // (sim/run_recording.h) and a line saying which moment is shown and what the recording holds.
-// Dragging it, or its keys, asks for an earlier frame; the run pauses there.
+// Dragging it, or its keys, asks for an earlier frame; the run pauses there. It keeps the
+// recording's memory budget (a setting, Simulation > Timeline Memory).
 
 #include <QWidget>
 
+#include <cstddef>
 #include <cstdint>
 
 class QLabel;
@@ -21,8 +23,16 @@ class TimelineBar : public QWidget {
 
   void showSnapshot(const SimulationSnapshot& snapshot);
 
+  // The recording's memory budget in bytes, as stored (the default when unset or out of range).
+  static std::size_t memoryBudget();
+  static constexpr int kMinMemoryMebibytes = 16;
+  static constexpr int kMaxMemoryMebibytes = 65536;
+  // Simulation > Timeline Memory: asks for the budget over the window, stores it and says so.
+  void askMemoryBudget();
+
  signals:
   void frameRequested(std::uint64_t frame);
+  void memoryBudgetChanged(std::size_t bytes);
 
  protected:
   void changeEvent(QEvent* event) override;

@@ -6,14 +6,10 @@
 #include "ui/render/multisample_target.h"
 
 #include <QElapsedTimer>
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
 #include <QSize>
 #include <QSurfaceFormat>
-#include <QWheelEvent>
 
 #include <algorithm>
 #include <array>
@@ -106,11 +102,9 @@ constexpr double kExplosionSizePerRadius = 2.0;
 constexpr double kDefaultBallRadius = 0.5;  // when the record names no ball the scene has
 constexpr int kExplosionFrameMilliseconds = 16;
 
-// ---- Interaction --------------------------------------------------------------------------------
+// ---- Drawing ------------------------------------------------------------------------------------
 
 constexpr GLint kSamples = 4;  // multisampling, when antialiasing is on
-constexpr double kOrbitRadiansPerPixel = 0.008;
-constexpr double kWheelStepAngle = 120.0;  // eighths of a degree in one wheel notch
 
 const Vec3 kLightDirection = Vec3(0.35, 1.0, 0.55).normalized();
 
@@ -249,78 +243,6 @@ void SceneView::followBall() {
   if (followedBall_ >= 0 && followedBall_ < static_cast<int>(ballPositions_.size())) {
     camera_.follow(ballPositions_[followedBall_]);
   }
-}
-
-void SceneView::userMovedCamera() {
-  autoFrame_ = false;
-  update();
-}
-
-// ---- Input --------------------------------------------------------------------------------------
-
-void SceneView::resizeEvent(QResizeEvent* event) {
-  camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
-  if (autoFrame_ && scene_) camera_.home(scene_->bounds);
-  QOpenGLWidget::resizeEvent(event);
-}
-
-void SceneView::mousePressEvent(QMouseEvent* event) {
-  lastMousePosition_ = event->position().toPoint();
-  event->accept();
-}
-
-void SceneView::mouseMoveEvent(QMouseEvent* event) {
-  const QPoint position = event->position().toPoint();
-  const QPoint delta = position - lastMousePosition_;
-  lastMousePosition_ = position;
-  if (event->buttons() & Qt::LeftButton) {
-    // Dragging turns the scene with the cursor, so the camera goes the other way.
-    camera_.orbit(-delta.x() * kOrbitRadiansPerPixel, delta.y() * kOrbitRadiansPerPixel);
-    userMovedCamera();
-  } else if (event->buttons() & Qt::MiddleButton) {
-    setFollowedBall(-1);  // following would snap the target straight back
-    const double viewHeight = std::max(1, height());
-    camera_.pan(delta.x() / viewHeight, delta.y() / viewHeight);
-    userMovedCamera();
-  }
-  event->accept();
-}
-
-void SceneView::mouseReleaseEvent(QMouseEvent* event) {
-  event->accept();
-}
-
-void SceneView::wheelEvent(QWheelEvent* event) {
-  const double steps = event->angleDelta().y() / kWheelStepAngle;
-  if (steps != 0.0) {
-    camera_.zoom(steps);
-    userMovedCamera();
-  }
-  event->accept();
-}
-
-void SceneView::keyPressEvent(QKeyEvent* event) {
-  switch (event->key()) {
-    case Qt::Key_Left:
-      camera_.rotateByKeys(1, 0);
-      break;
-    case Qt::Key_Right:
-      camera_.rotateByKeys(-1, 0);
-      break;
-    case Qt::Key_Up:
-      camera_.rotateByKeys(0, 1);
-      break;
-    case Qt::Key_Down:
-      camera_.rotateByKeys(0, -1);
-      break;
-    case Qt::Key_Home:
-      frameScene();
-      return;
-    default:
-      QOpenGLWidget::keyPressEvent(event);
-      return;
-  }
-  userMovedCamera();
 }
 
 // ---- GL -----------------------------------------------------------------------------------------
@@ -557,79 +479,6 @@ void SceneView::setTrails(std::vector<Trail> trails) {
 void SceneView::setVelocityArrows(std::vector<Arrow> arrows) {
   velocityArrows_ = std::move(arrows);
   update();
-}
-
-SceneView::Picture SceneView::picture() const {
-  Camera camera = camera_;
-  camera.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
-  return {
-      scene_, ballPositions_, explosions_.live(), trails_, velocityArrows_, handleArrows_, camera,
-      true};
-}
-
-QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
-  const auto inRange = [](int side) { return side >= kMinPictureSide && side <= kMaxPictureSide; };
-  if (!inRange(size.width()) || !inRange(size.height()) || !glReady_) return {};
-  makeCurrent();
-  // The picture's content stands in for the view's while it is drawn, through the same code
-  // that draws the view; the view's own is put back after.
-  const bool otherScene = picture.scene != scene_;
-  std::shared_ptr<const RenderScene> ownScene = std::exchange(scene_, picture.scene);
-  std::vector<Vec3> ownPositions = std::exchange(ballPositions_, picture.ballPositions);
-  std::vector<Trail> ownTrails = std::exchange(trails_, picture.trails);
-  std::vector<Arrow> ownVelocities = std::exchange(velocityArrows_, picture.velocityArrows);
-  std::vector<Arrow> ownHandles = std::exchange(handleArrows_, picture.handleArrows);
-  // The highlight is in the static data: without it, that is uploaded again before and after.
-  const bool plain =
-      !picture.highlights && (!highlightedBalls_.empty() || !highlightedPlanes_.empty() ||
-                              !highlightedCylinders_.empty() || !highlightedBoxes_.empty());
-  std::vector<int> ownHighlights[4];
-  if (plain) {
-    ownHighlights[0] = std::exchange(highlightedBalls_, {});
-    ownHighlights[1] = std::exchange(highlightedPlanes_, {});
-    ownHighlights[2] = std::exchange(highlightedCylinders_, {});
-    ownHighlights[3] = std::exchange(highlightedBoxes_, {});
-  }
-  if (otherScene || staticDataDirty_ || plain) uploadStaticData();
-  uploadBallPositions();
-
-  QOpenGLFramebufferObjectFormat format;
-  format.setAttachment(QOpenGLFramebufferObject::Depth);
-  format.setInternalTextureFormat(GL_RGBA8);
-  if (antialiasing() && multisample_->samples() > 1) format.setSamples(multisample_->samples());
-  QImage image;
-  {
-    QOpenGLFramebufferObject target(size, format);
-    if (target.isValid() && target.bind()) {
-      glViewport(0, 0, size.width(), size.height());
-      clearFrame();
-      Camera camera = picture.camera;
-      camera.setAspectRatio(static_cast<double>(size.width()) / size.height());
-      drawPicture(frameCamera(camera), size.height(), picture.explosions);
-      glBindVertexArray(0);
-      glUseProgram(0);
-      glDisable(GL_CULL_FACE);
-      glDisable(GL_DEPTH_TEST);
-      // A multisampled target is resolved into a plain one by toImage.
-      image = target.toImage().convertToFormat(QImage::Format_RGB32);
-      target.release();
-    }
-  }
-  scene_ = std::move(ownScene);
-  ballPositions_ = std::move(ownPositions);
-  trails_ = std::move(ownTrails);
-  velocityArrows_ = std::move(ownVelocities);
-  handleArrows_ = std::move(ownHandles);
-  if (plain) {
-    highlightedBalls_ = std::move(ownHighlights[0]);
-    highlightedPlanes_ = std::move(ownHighlights[1]);
-    highlightedCylinders_ = std::move(ownHighlights[2]);
-    highlightedBoxes_ = std::move(ownHighlights[3]);
-  }
-  if (otherScene || plain) staticDataDirty_ = true;
-  positionsDirty_ = true;
-  doneCurrent();
-  return image;
 }
 
 Eigen::AlignedBox3d SceneView::clipBox() const {
