@@ -20,7 +20,7 @@ tests=(test_handover test_main_window test_editor test_sound)
 # at the window's teardown, with the GUI thread holding a lock of libxcb that it released long
 # before: TSan has lost track of that thread's state. The same tests are clean when no child is
 # started, and the ASan run and the plain suite run the MP4 cases.
-video_cases=(framesAreTheRecordedOnesAtOrBefore pngFramesOfTheRecordedRun
+video_cases=(framesAreTheRecordedOnesAtOrBefore pngFramesOfTheRecordedRun explosionsAreTheRunsCollisions
              cancelLeavesThePngsWritten badInputsAreRefused menuPausesAsksAndExports
              mp4IsDisabledWithoutFfmpeg)
 # ASan and TSan cannot share a program, hence a build of its own (-O1 -g1, as for ASan).

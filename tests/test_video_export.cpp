@@ -1,6 +1,7 @@
 // File > Export Video in the window (Xvfb, Mesa's OpenGL): the frames replayed from the recorded
 // run as PNGs and as an MP4 (checked with ffprobe), Cancel, refusals, and the menu's dialogs.
 
+#include "sim/simulation.h"
 #include "tests/editor_fixture.h"
 #include "ui/language.h"
 #include "ui/simulation_controller.h"
@@ -43,6 +44,7 @@ class TestVideoExport : public carom::testing::EditorFixture {
 
   void framesAreTheRecordedOnesAtOrBefore();
   void pngFramesOfTheRecordedRun();
+  void explosionsAreTheRunsCollisions();
   void mp4HasTheFramesAndDuration();
   void cancelStopsAndRemovesTheMp4();
   void cancelLeavesThePngsWritten();
@@ -89,6 +91,30 @@ class TestVideoExport : public carom::testing::EditorFixture {
     [&] { QTRY_VERIFY_WITH_TIMEOUT(finished.count() == 1, 120000); }();
     if (finished.isEmpty()) return {false, "never finished"};
     return {finished.at(0).at(0).toBool(), finished.at(0).at(1).toString()};
+  }
+  // Every frame of the stretch, made by the worker alone.
+  std::vector<carom::ui::VideoFrame> replayFrames(double from, double to, int fps) {
+    const int count = carom::ui::videoFrameCount(from, to, fps);
+    auto queue = std::make_shared<carom::ui::VideoFrameQueue>(count);
+    window_->simulation().exportVideo(queue, from, to, fps);
+    std::vector<carom::ui::VideoFrame> frames;
+    // The caller counts the frames that came.
+    (void)QTest::qWaitFor(
+        [&] {
+          for (carom::ui::VideoFrame& frame : queue->take()) frames.push_back(std::move(frame));
+          return int(frames.size()) >= count;
+        },
+        30000);
+    return frames;
+  }
+  // Exports the stretch as PNGs into `folder`; empty, or what went wrong.
+  QString exportPngs(const QString& folder) {
+    VideoExport& exporter = *window_->videoExport();
+    QSignalSpy finished(&exporter, &VideoExport::finished);
+    const QString refused = exporter.start(settings(VideoSettings::Format::Png, folder));
+    if (!refused.isEmpty()) return refused;
+    const auto [ok, text] = waitForEnd(finished);
+    return ok ? QString() : text;
   }
   static QStringList frameFiles(const QString& folder) {
     return QDir(folder).entryList({"frame_*.png"}, QDir::Files, QDir::Name);
@@ -173,6 +199,57 @@ void TestVideoExport::pngFramesOfTheRecordedRun() {
   const QString again = exporter.start(settings(VideoSettings::Format::Png, frames));
   QVERIFY2(again.contains("already holds frames"), qPrintable(again));
   QVERIFY(!exporter.busy());
+}
+
+// The frames carry the replay's collisions, each once, and the video draws their explosions:
+// frames before the first collision are the same with View > Explosions off, frames while its
+// explosion lives are not.
+void TestVideoExport::explosionsAreTheRunsCollisions() {
+  runPast(1.0);
+  const std::vector<carom::ui::VideoFrame> frames = replayFrames(0.0, 1.0, 24);
+  QCOMPARE(frames.size(), std::size_t(25));
+  std::vector<carom::CollisionRecord> shown;
+  for (const carom::ui::VideoFrame& frame : frames)
+    for (const carom::CollisionRecord& collision : frame.collisions) {
+      QVERIFY(collision.time <= frame.recordedTime);
+      shown.push_back(collision);
+    }
+  carom::Simulation fresh(document().scene());
+  fresh.setCollisionLog(true);
+  while (fresh.time() < frames.back().recordedTime) fresh.step();
+  const std::vector<carom::CollisionRecord> expected = fresh.takeCollisions();
+  // Thrown up at 4 m/s, the ball lands once, after 2·4/9.81 s.
+  QVERIFY(!expected.empty());
+  QCOMPARE(shown.size(), expected.size());
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    QCOMPARE(shown[i].time, expected[i].time);
+    QCOMPARE(shown[i].ball, expected[i].ball);
+    QCOMPARE(shown[i].other, expected[i].other);
+    QCOMPARE(shown[i].point, expected[i].point);
+  }
+  const double landing = expected.front().time;
+  QVERIFY2(std::abs(landing - 2 * 4 / 9.81) < 0.01, qPrintable(QString::number(landing)));
+
+  QTemporaryDir folder;
+  const QString with = folder.filePath("with"), without = folder.filePath("without");
+  QCOMPARE(exportPngs(with), QString());
+  view().setExplosionsEnabled(false);
+  QCOMPARE(exportPngs(without), QString());
+  const QStringList files = frameFiles(with);
+  QCOMPARE(files.size(), 25);
+  QCOMPARE(frameFiles(without), files);
+  const double step = window_->simulation().latest()->world.timeStep;
+  int differing = 0;
+  for (int k = 0; k < files.size(); ++k) {
+    const double moment = k / 24.0;
+    const QImage a = QImage(QDir(with).filePath(files[k])).convertToFormat(QImage::Format_RGB32);
+    const QImage b = QImage(QDir(without).filePath(files[k])).convertToFormat(QImage::Format_RGB32);
+    const QString at = QString("frame %1 at %2 s").arg(k + 1).arg(moment);
+    if (moment < landing) QVERIFY2(a == b, qPrintable(at));
+    if (moment > landing + step) QVERIFY2(a != b, qPrintable(at));
+    differing += a != b;
+  }
+  QVERIFY(differing > 0);
 }
 
 void TestVideoExport::mp4HasTheFramesAndDuration() {

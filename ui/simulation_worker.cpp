@@ -215,7 +215,8 @@ void SimulationWorker::exportVideo(std::shared_ptr<VideoFrameQueue> frames, doub
   // as they are.
   job->frame = recording_->keyframeAtTime(from);
   job->replay = recording_->reproduce(job->frame);
-  job->replay->setCollisionLog(false);
+  job->replay->setCollisionLog(true);
+  job->replay->takeCollisions();
   job->lastFrame = recording_->frameCount();
   job->from = from;
   job->fps = fps;
@@ -255,14 +256,22 @@ void SimulationWorker::makeVideoFrames() {
       for (const BallState& ball : replay.state()) job.held.push_back(ball.position);
       job.heldTime = replay.time();
       job.haveHeld = true;
+      // The collisions of the step that ended here are seen from this state on.
+      job.heldCollisions.insert(job.heldCollisions.end(), job.stepCollisions.begin(),
+                                job.stepCollisions.end());
+      if (job.heldCollisions.size() > kMaxPendingCollisions)
+        job.heldCollisions.erase(job.heldCollisions.begin(),
+                                 job.heldCollisions.end() - kMaxPendingCollisions);
       if (job.frame < job.lastFrame) {
         recording_->replay(replay, job.frame, job.frame + 1);
         ++job.frame;
+        job.stepCollisions = replay.takeCollisions();
         continue;
       }
     }
     // The replay is past the moment, or at the last recorded frame: what is held is shown.
-    queue.push({job.next, moment, job.heldTime, job.held});
+    queue.push({job.next, moment, job.heldTime, job.held, std::move(job.heldCollisions)});
+    job.heldCollisions.clear();
     ++job.next;
   }
 }

@@ -125,6 +125,8 @@ class SimulationWorker : public QObject {
     std::vector<Vec3> held;
     double heldTime = 0.0;
     bool haveHeld = false;
+    std::vector<CollisionRecord> stepCollisions;  // of the step that reached `replay`'s state
+    std::vector<CollisionRecord> heldCollisions;  // not yet handed to a video frame
   };
   std::unique_ptr<VideoJob> video_;
 };

@@ -314,13 +314,15 @@ QString VideoExport::begin(const VideoSettings& settings, bool interactive) {
   pending_.clear();
   nextPending_ = 0;
   // The view's camera and scene as they are now, without what belongs to the editor (handles,
-  // the selection's highlight) or to the moment shown.
+  // the selection's highlight) or to the moment shown; the video's explosions are its own.
   picture_ = view_->picture();
   picture_.explosions.clear();
   picture_.trails.clear();
   picture_.velocityArrows.clear();
   picture_.handleArrows.clear();
   picture_.highlights = false;
+  explosions_ = render::ExplosionPool(view_->explosionLimit());
+  showExplosions_ = view_->explosionsEnabled();
 
   if (settings.format == VideoSettings::Format::Mp4) {
     encoder_ = new QProcess(this);
@@ -409,6 +411,16 @@ void VideoExport::pump() {
 
 QString VideoExport::writeFrame(const VideoFrame& frame) {
   picture_.ballPositions = frame.positions;
+  if (showExplosions_) {
+    // Born at their collisions' simulated moments (or the frame before, for those of a step that
+    // began before it), they fade over ExplosionPool::kLifetime of simulated time.
+    for (const CollisionRecord& collision : frame.collisions)
+      explosions_.add(collision.point,
+                      render::SceneView::explosionSize(picture_.scene.get(), collision),
+                      collision.time);
+    explosions_.update(frame.time);
+    picture_.explosions = explosions_.live();
+  }
   const QImage image = view_->renderPicture(picture_, settings_.size);
   if (image.isNull())
     return tr("The graphics driver could not draw a %1×%2 picture.")

@@ -94,8 +94,9 @@ class VideoExport : public QObject {
   // starts. False when cancelled or refused (a dialog says why).
   bool exportVideo();
   // Pauses the run and starts exporting the stretch as `settings` say, from the view's current
-  // camera and scene (no editor handles, trails, arrows or explosions): empty when started,
-  // otherwise the reason, and nothing was written. finished() follows.
+  // camera and scene (no editor handles, trails or arrows; the run's explosions, when the view
+  // shows them): empty when started, otherwise the reason, and nothing was written. finished()
+  // follows.
   QString start(const VideoSettings& settings);
   bool busy() const { return state_ != State::Idle; }
   // Stops at once: a half-written MP4 is removed, PNGs written are left and counted.
@@ -138,6 +139,10 @@ class VideoExport : public QObject {
   bool interactive_ = false;  // started from the menu: failures get a dialog
   VideoSettings settings_;
   render::SceneView::Picture picture_;
+  // The video's own explosions, on its simulated clock, as the view's settings were at the
+  // start (View > Explosions and the limit).
+  render::ExplosionPool explosions_;
+  bool showExplosions_ = true;
   std::shared_ptr<VideoFrameQueue> queue_;
   std::vector<VideoFrame> pending_;  // taken from the queue, not yet written
   std::size_t nextPending_ = 0;

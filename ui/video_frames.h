@@ -4,6 +4,7 @@
 // renders and writes them. First in, first out, and bounded: the worker makes no more than
 // the room left, so a long stretch never sits in memory whole. Std only, like the snapshots.
 
+#include "sim/run_stats.h"
 #include "sim/scene.h"
 
 #include <algorithm>
@@ -31,6 +32,9 @@ struct VideoFrame {
   double time = 0.0;          // the moment it shows
   double recordedTime = 0.0;  // the recorded frame it shows: the latest at or before `time`
   std::vector<Vec3> positions;
+  // The collisions of the recorded steps first shown by this frame (for frame 0, those from the
+  // keyframe the replay began at), oldest first: the video's explosions.
+  std::vector<CollisionRecord> collisions;
 };
 
 class VideoFrameQueue {

@@ -203,20 +203,23 @@ double SceneView::clockSeconds() const {
   return static_cast<double>(clock_.nsecsElapsed()) * 1e-9;
 }
 
+double SceneView::explosionSize(const RenderScene* scene, const carom::CollisionRecord& collision) {
+  const auto radius = [scene](int ball) {
+    if (scene && ball >= 0 && ball < static_cast<int>(scene->ballRadii.size()))
+      return scene->ballRadii[ball];
+    return kDefaultBallRadius;
+  };
+  double size = radius(collision.ball);
+  if (collision.kind == carom::ContactKind::BallBall)
+    size = std::max(size, radius(collision.other));
+  return kExplosionSizePerRadius * size;
+}
+
 void SceneView::addExplosions(const std::vector<carom::CollisionRecord>& collisions) {
   if (!explosionsEnabled_ || collisions.empty()) return;
   const double now = clockSeconds();
-  const auto radius = [this](int ball) {
-    if (scene_ && ball >= 0 && ball < static_cast<int>(scene_->ballRadii.size()))
-      return scene_->ballRadii[ball];
-    return kDefaultBallRadius;
-  };
-  for (const carom::CollisionRecord& collision : collisions) {
-    double size = radius(collision.ball);
-    if (collision.kind == carom::ContactKind::BallBall)
-      size = std::max(size, radius(collision.other));
-    explosions_.add(collision.point, kExplosionSizePerRadius * size, now);
-  }
+  for (const carom::CollisionRecord& collision : collisions)
+    explosions_.add(collision.point, explosionSize(scene_.get(), collision), now);
   update();
 }
 

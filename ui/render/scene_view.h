@@ -120,6 +120,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // A yellow spark at each collision's contact point, sized by the ball involved, fading out
   // over ExplosionPool::kLifetime of real time (also while the simulation is paused).
   void addExplosions(const std::vector<carom::CollisionRecord>& collisions);
+  // The size given to a collision's explosion in `scene`: the larger ball's radius, scaled.
+  static double explosionSize(const RenderScene* scene, const carom::CollisionRecord& collision);
   // Alive at the last frame or addition.
   int liveExplosions() const { return explosions_.count(); }
   // Explosions that did not fit in the pool since the view was made.
