@@ -7,18 +7,61 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <limits>
 
 namespace carom {
 namespace {
 
-// Runs `sim` to `duration` in slices, so that a cancel is noticed soon. Every run of the study,
-// the reference included, goes through here: the same slices give the exact method the same
-// landing times, hence bit for bit the same paths.
-void advanceTo(Simulation& sim, double duration, const std::atomic<bool>* cancel) {
-  const double slice = std::max(sim.world().timeStep, duration / 50.0);
-  while (sim.time() < duration && !(cancel && cancel->load())) {
-    sim.advance(std::min(slice, duration - sim.time()));
+// Runs `sim` through the sample times in slices, so that a cancel is noticed soon, calling
+// `atSample(k)` at each. Every run of the study, the reference included, goes through here: the
+// same slice ends give the exact method the same landing times, hence bit for bit the same paths.
+template <typename F>
+void advanceThrough(Simulation& sim, const std::vector<double>& sampleTimes,
+                    const std::atomic<bool>* cancel, F&& atSample) {
+  if (sampleTimes.empty()) return;
+  const double slice = std::max(sim.world().timeStep, sampleTimes.back() / 50.0);
+  for (std::size_t k = 0; k < sampleTimes.size(); ++k) {
+    // Slice ends are multiples of `slice` from 0, never sums, so they fall the same in every run.
+    double sliceEnd = slice * std::floor(sim.time() / slice);
+    while (sim.time() < sampleTimes[k]) {
+      if (cancel && cancel->load()) return;
+      sliceEnd += slice;
+      sim.advanceTo(std::min(sliceEnd, sampleTimes[k]));
+    }
+    atSample(k);
   }
+}
+
+double rmsDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  if (a.size() != b.size() || a.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]).squaredNorm();
+  return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+std::vector<double> speeds(const std::vector<Vec3>& velocities) {
+  std::vector<double> result(velocities.size());
+  for (std::size_t i = 0; i < velocities.size(); ++i) result[i] = velocities[i].norm();
+  return result;
+}
+
+double coordinateDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  double largest = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> x(a.size()), y(b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) x[i] = a[i][axis];
+    for (std::size_t i = 0; i < b.size(); ++i) y[i] = b[i][axis];
+    largest = std::max(largest, distributionDistance(std::move(x), std::move(y)));
+  }
+  return largest;
+}
+
+Scene withSettings(const Scene& scene, const StudyCase& settings) {
+  Scene run = scene;
+  run.world.method = settings.method;
+  run.world.integrator = settings.integrator;
+  run.world.timeStep = settings.timeStep;
+  return run;
 }
 
 }  // namespace
@@ -43,40 +86,83 @@ std::vector<StudyCase> studyCases(const World& world, const std::vector<double>&
   return cases;
 }
 
+std::optional<std::size_t> finestCase(const std::vector<StudyCase>& cases) {
+  std::optional<std::size_t> finest;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const StudyCase& c = cases[i];
+    if (c.method != Method::Swept || c.integrator != Integrator::VelocityVerlet) continue;
+    if (!finest || c.timeStep < cases[*finest].timeStep) finest = i;
+  }
+  return finest;
+}
+
+std::vector<double> studySampleTimes(double duration, std::size_t ballCount) {
+  const std::size_t bytesPerSample = std::max<std::size_t>(1, ballCount) * sizeof(Vec3);
+  const std::size_t count =
+      std::clamp<std::size_t>(kStudySampleBudgetBytes / bytesPerSample, 1, kStudySamples);
+  if (count == 1 || !(duration > 0.0)) return {duration};
+  std::vector<double> times(count);
+  const double first = duration * kFirstSampleFraction;
+  for (std::size_t k = 0; k < count; ++k)
+    times[k] = first * std::pow(duration / first, static_cast<double>(k) / double(count - 1));
+  times.back() = duration;  // exactly, not by rounding of the power
+  return times;
+}
+
+StudyReference exactReference(const Scene& scene, double duration,
+                              const std::atomic<bool>* cancel) {
+  StudyReference reference;
+  reference.sampleTimes = studySampleTimes(duration, scene.balls.size());
+  Simulation sim(
+      withSettings(scene, {Method::Exact, scene.world.integrator, scene.world.timeStep}));
+  advanceThrough(sim, reference.sampleTimes, cancel,
+                 [&](std::size_t) { reference.positions.push_back(sim.positions()); });
+  reference.finalVelocities = sim.velocities();
+  return reference;
+}
+
 StudyResult runStudyCase(const Scene& scene, const StudyCase& settings, double duration,
-                         const std::vector<Vec3>& reference, const std::atomic<bool>* cancel) {
-  Scene run = scene;
-  run.world.method = settings.method;
-  run.world.integrator = settings.integrator;
-  run.world.timeStep = settings.timeStep;
-  StudyResult result{settings};
+                         const StudyReference& reference, const std::atomic<bool>* cancel) {
+  StudyResult result;
+  result.settings = settings;
   // This thread's CPU time, no longer wall time, since runs share the cores (see StudyResult).
   const double start = threadCpuSeconds();
-  Simulation sim(run);
+  Simulation sim(withSettings(scene, settings));
   const double initial = sim.totalEnergy();
-  advanceTo(sim, duration, cancel);
+  const bool sampled = !reference.sampleTimes.empty() && reference.sampleTimes.back() == duration;
+  const std::vector<double> times = sampled ? reference.sampleTimes : std::vector<double>{duration};
+  advanceThrough(sim, times, cancel, [&](std::size_t k) {
+    if (sampled && k < reference.positions.size())
+      result.deviation.push_back(rmsDistance(sim.positions(), reference.positions[k]));
+  });
   result.computeSeconds = threadCpuSeconds() - start;
   result.energyDrift = std::abs(sim.totalEnergy() - initial) / std::max(std::abs(initial), 1e-300);
   const std::vector<Vec3> positions = sim.positions();
   const OverlapReport overlaps = measureOverlaps(sim.bodies(), positions);
   result.maxPenetration = std::max(overlaps.maxPenetration, sim.stats().maxPenetration);
   result.escaped = overlaps.escaped;
-  if (reference.size() == positions.size() && !positions.empty()) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < positions.size(); ++i)
-      sum += (positions[i] - reference[i]).squaredNorm();
-    result.positionError = std::sqrt(sum / positions.size());
+  result.positionError = positionErrorAtHorizon(result, reference);
+  if (!reference.positions.empty() && reference.positions.size() == reference.sampleTimes.size()) {
+    result.speedDistribution =
+        distributionDistance(speeds(sim.velocities()), speeds(reference.finalVelocities));
+    result.positionDistribution = coordinateDistance(positions, reference.positions.back());
   }
   return result;
 }
 
-std::vector<Vec3> exactFinalPositions(const Scene& scene, double duration,
-                                      const std::atomic<bool>* cancel) {
-  Scene run = scene;
-  run.world.method = Method::Exact;
-  Simulation sim(run);
-  advanceTo(sim, duration, cancel);
-  return sim.positions();
+void setAgreementHorizon(StudyReference& reference, const StudyResult& finest, double meanRadius) {
+  reference.horizonSample.reset();
+  const double radius = kAgreementRadiusFraction * meanRadius;
+  for (std::size_t k = 0; k < finest.deviation.size(); ++k) {
+    if (!(finest.deviation[k] <= radius)) break;
+    reference.horizonSample = k;
+  }
+}
+
+double positionErrorAtHorizon(const StudyResult& result, const StudyReference& reference) {
+  if (!reference.horizonSample || *reference.horizonSample >= result.deviation.size())
+    return std::numeric_limits<double>::quiet_NaN();
+  return result.deviation[*reference.horizonSample];
 }
 
 }  // namespace carom

@@ -3,6 +3,8 @@
 #include "sim/broad_phase.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace carom {
 
@@ -58,6 +60,29 @@ double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
   for (int i = 0; i < static_cast<int>(positions.size()); ++i)
     sum += ballPotentialEnergy(bodies.mass[i], gravity, positions[i]);
   return sum;
+}
+
+double distributionDistance(std::vector<double> a, std::vector<double> b) {
+  if (a.empty() || b.empty()) return a.empty() && b.empty() ? 0.0 : 1.0;
+  // A run gone wrong may hold NaN, which sorting cannot order: it counts as the largest value.
+  for (std::vector<double>* sample : {&a, &b}) {
+    for (double& value : *sample)
+      if (std::isnan(value)) value = std::numeric_limits<double>::infinity();
+    std::sort(sample->begin(), sample->end());
+  }
+  // Walk both in order; at each value, step past every copy of it in both before comparing, so
+  // ties between the samples add no gap.
+  const double na = static_cast<double>(a.size()), nb = static_cast<double>(b.size());
+  std::size_t i = 0, j = 0;
+  double largest = 0.0;
+  while (i < a.size() && j < b.size()) {
+    const double value = std::min(a[i], b[j]);
+    while (i < a.size() && a[i] == value) ++i;
+    while (j < b.size() && b[j] == value) ++j;
+    largest =
+        std::max(largest, std::abs(static_cast<double>(i) / na - static_cast<double>(j) / nb));
+  }
+  return largest;
 }
 
 }  // namespace carom

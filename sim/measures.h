@@ -22,4 +22,8 @@ double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
 double ballKineticEnergy(double mass, const Vec3& velocity);
 double ballPotentialEnergy(double mass, const Vec3& gravity, const Vec3& position);
 
+// The Kolmogorov-Smirnov distance of two samples: the largest gap between their empirical
+// distribution functions, 0 (the same distribution) to 1 (no overlap). Takes copies to sort.
+double distributionDistance(std::vector<double> a, std::vector<double> b);
+
 }  // namespace carom

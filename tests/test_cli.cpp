@@ -604,8 +604,18 @@ class TestCli : public QObject {
         runCli({"study", magicRoom(), "--duration", "0.5", "--threads", QString::number(threads)});
     VERIFY_EXIT(run, 0);
     QList<QByteArray> lines = nonEmptyLines(run.out);
-    QVERIFY2(lines.size() == 1 + 31 + 5, qPrintable(run.describe()));
-    QVERIFY2(lines.takeFirst().startsWith("method"), qPrintable(run.describe()));
+    QVERIFY2(lines.size() == 3 + 31 + 5, qPrintable(run.describe()));
+    QVERIFY2(lines.takeFirst().simplified() == "simulated s 0.5", qPrintable(run.describe()));
+    // The finest setting follows the magic room's few balls for some part of the half second.
+    const QList<QByteArray> horizon = lines.takeFirst().simplified().split(' ');
+    QVERIFY2(horizon.size() > 3 && horizon[0] == "horizon" && horizon[2].toDouble() > 0.0 &&
+                 horizon[2].toDouble() <= 0.5,
+             qPrintable(run.describe()));
+    const QByteArray header = lines.takeFirst();
+    QVERIFY2(header.startsWith("method"), qPrintable(run.describe()));
+    for (const char* column : {"position error", "energy drift", "penetration m", "escaped",
+                               "speeds KS", "positions KS"})
+      QVERIFY2(header.contains(column), qPrintable(run.describe()));
     QVERIFY2(lines[0].startsWith("exact"), qPrintable(run.describe()));
     QSet<QByteArray> runs;
     for (int i = 0; i < 31; ++i) runs << lines[i].simplified().split(' ').mid(0, 3).join(' ');
@@ -614,6 +624,67 @@ class TestCli : public QObject {
     for (const char* figure : {"wall s", "reference s", "runs s", "speed-up"})
       QVERIFY2(run.out.contains(figure), qPrintable(run.describe()));
     QVERIFY2(run.err.startsWith("study:"), qPrintable(run.describe()));
+  }
+
+  void autoChoosesAndReports() {
+    const CliRun run = runCli(
+        {"run", sceneFile("gas-box.json"), "--duration", "20", "--method", "auto", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject report = QJsonDocument::fromJson(run.out).object();
+    const QJsonObject choice = report["auto"].toObject();
+    const QJsonArray candidates = choice["candidates"].toArray();
+    QCOMPARE(candidates.size(), 13);
+    QVERIFY(choice["met"].toBool());
+    const QJsonObject chosen = candidates[choice["chosen"].toInt()].toObject();
+    // The run is the chosen setting's, and the chosen one meets the default tolerance.
+    QCOMPARE(report["method"].toString(), chosen["method"].toString());
+    QVERIFY(chosen["meets"].toBool());
+    QVERIFY(chosen["energyErrorPerSecond"].toDouble() <=
+            choice["tolerance"].toObject()["energyPerSecond"].toDouble());
+    QVERIFY(chosen["verdict"].toString().contains("cheapest"));
+    for (const QJsonValue c : candidates) {
+      QVERIFY(!c.toObject()["verdict"].toString().isEmpty());
+      // Nothing that meets the tolerance is cheaper than the chosen one.
+      if (c.toObject()["meets"].toBool())
+        QVERIFY(c.toObject()["costPerSecond"].toDouble() >= chosen["costPerSecond"].toDouble());
+    }
+    QVERIFY(choice["pilotShare"].toDouble() >= 0.0);
+    QVERIFY(!choice["reason"].toString().isEmpty());
+  }
+
+  void autoTextSaysWhatItChose() {
+    const CliRun run = runCli(
+        {"run", magicRoom(), "--duration", "5", "--method", "auto", "--tolerance", "0.01,0.1"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(run.out.contains("auto: tolerance: energy error 0.01 per simulated second, "
+                              "penetration 0.1 of the radius"),
+             qPrintable(run.describe()));
+    QVERIFY2(run.out.contains("auto: chose "), qPrintable(run.describe()));
+    QVERIFY2(run.out.contains("of the run's"), qPrintable(run.describe()));
+  }
+
+  void autoWithNoSettingMeetingTheTolerance() {
+    // Below round-off: nothing meets it (the magic room's balls fall and bounce from the start,
+    // so every setting's energy moves by round-off at least). Nothing runs unless the closest is
+    // asked for.
+    const QStringList arguments{"run",      magicRoom(), "--duration",  "10",
+                                "--method", "auto",      "--tolerance", "1e-30,1e-30"};
+    const CliRun refused = runCli(arguments);
+    VERIFY_EXIT(refused, 4);
+    QVERIFY2(refused.err.contains("no setting meets the tolerance") &&
+                 refused.err.contains("--accept-closest"),
+             qPrintable(refused.describe()));
+    QVERIFY2(refused.out.contains("auto: no setting meets the tolerance"),
+             qPrintable(refused.describe()));
+    QVERIFY2(!refused.out.contains("collisions:"), qPrintable(refused.describe()));  // no run
+    const CliRun closest = runCli(arguments + QStringList{"--accept-closest", "--json"});
+    VERIFY_EXIT(closest, 0);
+    const QJsonObject report = QJsonDocument::fromJson(closest.out).object();
+    const QJsonObject choice = report["auto"].toObject();
+    QVERIFY(!choice["met"].toBool());
+    const QJsonObject ran = choice["candidates"].toArray()[choice["chosen"].toInt()].toObject();
+    QCOMPARE(report["method"].toString(), ran["method"].toString());
+    QVERIFY(report["simulatedTime"].toDouble() == 10.0);
   }
 
   // --- bad input: exit code 2, nothing on stdout, a short message naming the problem ---
@@ -692,6 +763,22 @@ class TestCli : public QObject {
     QTest::newRow("watch option without --stop-on-divergence")
         << QStringList{"run", scene, "--watch-off", "escape"}
         << QStringList{"--stop-on-divergence"};
+    QTest::newRow("--tolerance 0")
+        << QStringList{"run", scene, "--method", "auto", "--tolerance", "0"}
+        << QStringList{"tolerance.energy", "above zero"};
+    QTest::newRow("--tolerance 1e-3,-1")
+        << QStringList{"run", scene, "--method", "auto", "--tolerance", "1e-3,-1"}
+        << QStringList{"tolerance.penetration", "above zero"};
+    QTest::newRow("--tolerance 1e-3,x")
+        << QStringList{"run", scene, "--method", "auto", "--tolerance", "1e-3,x"}
+        << QStringList{"--tolerance", "'1e-3,x'"};
+    QTest::newRow("--tolerance without auto")
+        << QStringList{"run", scene, "--tolerance", "1e-3"} << QStringList{"--method auto"};
+    QTest::newRow("--accept-closest without auto")
+        << QStringList{"run", scene, "--accept-closest"} << QStringList{"--method auto"};
+    QTest::newRow("auto with an integrator")
+        << QStringList{"run", scene, "--method", "auto", "--integrator", "velocity-verlet"}
+        << QStringList{"--integrator"};
     QTest::newRow("--trajectory into missing directory")
         << QStringList{"run", scene, "--json", "--trajectory", noDir}
         << QStringList{"trajectory", noDir};

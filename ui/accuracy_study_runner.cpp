@@ -26,7 +26,9 @@ struct AccuracyStudyRunner::Study {
   carom::Scene scene;
   std::vector<StudyCase> cases;
   double duration = 0.0;
-  std::vector<Vec3> reference;  // written by the reference task before it queues the cases
+  // Written by the reference task before it queues the cases.
+  StudyReference reference;
+  std::optional<StudyResult> finest;
   std::atomic<bool> cancel{false};
 };
 
@@ -66,14 +68,30 @@ void AccuracyStudyRunner::start(const carom::Scene& scene, const std::vector<Stu
   pool_.start([this, study] {
     takeOver(&poolHandOver);
     const double start = threadCpuSeconds();
-    study->reference = exactFinalPositions(study->scene, study->duration, &study->cancel);
+    study->reference = exactReference(study->scene, study->duration, &study->cancel);
     const double seconds = threadCpuSeconds() - start;
-    const bool queueCases = !study->cancel;
+    // The finest case sets the horizon the others' position errors are taken at, so it runs
+    // before them; its own result is reported like theirs.
+    const std::optional<std::size_t> finest = finestCase(study->cases);
+    if (finest && !study->cancel) {
+      StudyResult result = runStudyCase(study->scene, study->cases[*finest], study->duration,
+                                        study->reference, &study->cancel);
+      double radii = 0.0;
+      for (const Ball& ball : study->scene.balls) radii += ball.radius;
+      const double meanRadius =
+          study->scene.balls.empty() ? 0.0 : radii / double(study->scene.balls.size());
+      setAgreementHorizon(study->reference, result, meanRadius);
+      result.positionError = positionErrorAtHorizon(result, study->reference);
+      if (!study->cancel) study->finest = result;
+    }
+    std::vector<std::size_t> queued;
+    for (std::size_t i = 0; i < study->cases.size() && !study->cancel; ++i)
+      if (i != finest) queued.push_back(i);
     // Posted before the cases are queued, so it arrives before any of their results. The calls
     // cross to the runner's thread under CallQueue's lock, which ThreadSanitizer sees.
-    calls_->post([this, study, seconds, queueCases] { referenceDone(study, seconds, queueCases); });
-    if (!queueCases) return;
-    for (std::size_t i = 0; i < study->cases.size(); ++i) {
+    calls_->post(
+        [this, study, seconds, count = queued.size()] { referenceDone(study, seconds, count); });
+    for (std::size_t i : queued) {
       handOver(&poolHandOver);
       pool_.start([this, study, i] {
         takeOver(&poolHandOver);
@@ -97,15 +115,22 @@ void AccuracyStudyRunner::cancel() {
 }
 
 void AccuracyStudyRunner::referenceDone(const std::shared_ptr<Study>& study, double computeSeconds,
-                                        bool casesQueued) {
+                                        std::size_t casesQueued) {
   if (study != study_) return;
   referenceDone_ = true;
   summary_.referenceSeconds = computeSeconds;
-  casesLeft_ = casesQueued ? study->cases.size() : 0;
+  summary_.horizon = study->reference.horizon();
+  casesLeft_ = casesQueued;
   if (!summary_.cancelled) {
     const QPointer<AccuracyStudyRunner> alive(this);
-    emit referenceReady();
+    emit referenceReady(summary_.horizon);
     if (!alive) return;  // a receiver deleted the runner
+    if (study->finest) {
+      ++summary_.runs;
+      summary_.computeSeconds += study->finest->computeSeconds;
+      emit resultReady(*study->finest);
+      if (!alive) return;
+    }
   }
   finishIfDone();
 }

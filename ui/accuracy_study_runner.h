@@ -1,6 +1,7 @@
 #pragma once
-// Runs the Speed vs accuracy study off the GUI thread: first the exact reference, then every
-// case at once on a thread pool of its own, each case's result signalled on the runner's thread
+// Runs the Speed vs accuracy study off the GUI thread: first the exact reference and the finest
+// case, which set the agreement horizon (accuracy_study.h), then every other case at once on a
+// thread pool of its own, each case's result signalled on the runner's thread
 // as soon as it is done (so in the order they finish, not the order of the cases).
 
 #include "sim/accuracy_study.h"
@@ -24,7 +25,9 @@ struct StudySummary {
   bool cancelled = false;
   double wallSeconds = 0.0;       // start() to finished(), the reference included
   double referenceSeconds = 0.0;  // computing time of the exact reference
-  double computeSeconds = 0.0;    // the runs' computeSeconds, summed
+  // Up to when the finest case agrees with exact; none when it parts at once.
+  std::optional<double> horizon;
+  double computeSeconds = 0.0;  // the runs' computeSeconds, summed
   // How many times faster than computing the reference and the runs one after another; the
   // reference is counted because the wall time includes it.
   double speedUp() const {
@@ -51,14 +54,15 @@ class AccuracyStudyRunner : public QObject {
   bool isRunning() const { return study_ != nullptr; }
 
  signals:
-  void referenceReady();
+  void referenceReady(std::optional<double> horizon);
   void resultReady(carom::StudyResult result);
   void finished(carom::ui::StudySummary summary);
 
  private:
   struct Study;
   // The queued calls of the pool's tasks, on the runner's thread.
-  void referenceDone(const std::shared_ptr<Study>& study, double computeSeconds, bool casesQueued);
+  void referenceDone(const std::shared_ptr<Study>& study, double computeSeconds,
+                     std::size_t casesQueued);
   void caseDone(const std::shared_ptr<Study>& study, const std::optional<StudyResult>& result);
   void finishIfDone();
 

@@ -35,12 +35,17 @@ QString caseName(const StudyCase& c) {
 AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
     : QDialog(parent), scene_(scene), runner_(std::make_unique<AccuracyStudyRunner>()) {
   connect(runner_.get(), &AccuracyStudyRunner::referenceReady, this,
-          [this] { progress_->setValue(progress_->value() + 1); });
+          [this](std::optional<double> horizon) {
+            horizon_ = horizon;
+            horizonKnown_ = true;
+            progress_->setValue(progress_->value() + 1);
+            showDuration();
+          });
   connect(runner_.get(), &AccuracyStudyRunner::resultReady, this, &AccuracyWindow::addResult);
   connect(runner_.get(), &AccuracyStudyRunner::finished, this, &AccuracyWindow::finish);
   metricLabel_ = new QLabel;
   metric_ = new QComboBox;
-  metric_->addItems(QStringList(4));  // named by retranslate()
+  metric_->addItems(QStringList(6));  // named by retranslate()
   connect(metric_, &QComboBox::currentIndexChanged, this, &AccuracyWindow::replot);
 
   chart_ = new QChart;
@@ -67,8 +72,11 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   chartView->setRenderHint(QPainter::Antialiasing);
   chartView->setMinimumSize(520, 360);
 
-  table_ = new QTableWidget(0, 6);
-  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_ = new QTableWidget(0, 8);
+  // Every column as wide as its header and cells (the run's name too), the last taking what is
+  // left; a narrow window scrolls rather than cut a header or a name short.
+  table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setStretchLastSection(true);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
   table_->setSelectionMode(QAbstractItemView::SingleSelection);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -113,17 +121,25 @@ void AccuracyWindow::changeEvent(QEvent* event) {
 void AccuracyWindow::retranslate() {
   setWindowTitle(tr("Speed vs accuracy"));
   metricLabel_->setText(tr("Error:"));
-  const QStringList metrics{tr("Position error against exact (m)"), tr("Relative energy drift"),
-                            tr("Deepest penetration (m)"), tr("Escaped balls")};
+  const QStringList metrics{tr("Position error against exact at the horizon (m)"),
+                            tr("Relative energy drift"),
+                            tr("Deepest penetration (m)"),
+                            tr("Escaped balls"),
+                            tr("Speed distribution against exact (KS distance)"),
+                            tr("Position distribution against exact (KS distance)")};
   for (int i = 0; i < metrics.size(); ++i) metric_->setItemText(i, metrics[i]);
   timeAxis_->setTitleText(tr("Computing time (s)"));
-  table_->setHorizontalHeaderLabels({tr("Run"), tr("Computing time (s)"), tr("Position error"),
-                                     tr("Energy drift"), tr("Penetration"), tr("Escaped")});
+  table_->setHorizontalHeaderLabels(
+      {tr("Run"), tr("Computing time (s)"), tr("Position error at horizon (m)"), tr("Energy drift"),
+       tr("Penetration (m)"), tr("Escaped"), tr("Speeds (KS)"), tr("Positions (KS)")});
   cancelButton_->setText(tr("Cancel"));
   applyButton_->setText(tr("Apply Selected Settings"));
   note_->setText(
       tr("Each point is one run of the current scene; lower and further left is better. Choose "
-         "a run to use its settings."));
+         "a run to use its settings. Paths part from exact ones with time, whatever the method: "
+         "position error is taken at the horizon up to which the finest setting agrees with "
+         "exact, and whole runs are judged by energy, penetration, escapes and distributions."));
+  showDuration();
   showSummary();
   replot();  // the error axis is named after the metric
 }
@@ -141,6 +157,9 @@ void AccuracyWindow::start() {
   progress_->setRange(0, static_cast<int>(cases_.size()) + 1);
   progress_->setValue(0);
   summary_.reset();
+  horizon_.reset();
+  horizonKnown_ = false;
+  showDuration();
   showSummary();
   cancelButton_->setEnabled(true);
   runner_->start(scene_, cases_, duration_);
@@ -168,10 +187,14 @@ void AccuracyWindow::addResult(const StudyResult& result) {
   table_->insertRow(row);
   const QStringList cells{caseName(result.settings),
                           QString::number(result.computeSeconds, 'g', 3),
-                          QString::number(result.positionError, 'g', 3),
+                          std::isnan(result.positionError)
+                              ? QStringLiteral("\u2014")  // no horizon: nothing to measure
+                              : QString::number(result.positionError, 'g', 3),
                           QString::number(result.energyDrift, 'g', 3),
                           QString::number(result.maxPenetration, 'g', 3),
-                          QString::number(result.escaped)};
+                          QString::number(result.escaped),
+                          QString::number(result.speedDistribution, 'g', 3),
+                          QString::number(result.positionDistribution, 'g', 3)};
   for (int column = 0; column < cells.size(); ++column)
     table_->setItem(row, column, new QTableWidgetItem(cells[column]));
   progress_->setValue(progress_->value() + 1);
@@ -222,6 +245,10 @@ double AccuracyWindow::errorOf(const StudyResult& result) const {
       return result.maxPenetration;
     case 3:
       return result.escaped;
+    case 4:
+      return result.speedDistribution;
+    case 5:
+      return result.positionDistribution;
     default:
       return result.positionError;
   }
@@ -232,7 +259,7 @@ void AccuracyWindow::replot() {
   for (std::size_t m = 0; m < series_.size(); ++m) {
     QList<QPointF> points;
     for (const StudyResult& r : results_) {
-      if (r.settings.method != Method(m)) continue;
+      if (r.settings.method != Method(m) || std::isnan(errorOf(r))) continue;
       const double x = std::max(r.computeSeconds, 1e-7);
       const double y = std::max(errorOf(r), kErrorFloor);
       points.append({x, y});
@@ -250,6 +277,20 @@ void AccuracyWindow::replot() {
     // About six labelled ticks whatever the span, so the labels stay readable.
     const double decades = std::log10(highError * 10 / (lowError / 10));
     errorAxis_->setBase(std::pow(10.0, std::max(1.0, std::ceil(decades / 6.0))));
+  }
+}
+
+void AccuracyWindow::showDuration() {
+  const QLocale locale;
+  const QString duration = tr("Each run: %1 s simulated").arg(locale.toString(duration_, 'g', 3));
+  if (!horizonKnown_) {
+    chart_->setTitle(duration);
+  } else if (horizon_) {
+    chart_->setTitle(tr("%1; the finest setting agrees with exact up to %2 s")
+                         .arg(duration, locale.toString(*horizon_, 'g', 3)));
+  } else {
+    chart_->setTitle(tr("%1; even the finest setting parts from exact at once: no position error")
+                         .arg(duration));
   }
 }
 

@@ -30,7 +30,10 @@ class AccuracyWindow : public QDialog {
   ~AccuracyWindow() override;
 
   // Simulated time each run covers (default 5 s); set before start().
-  void setDuration(double seconds) { duration_ = seconds; }
+  void setDuration(double seconds) {
+    duration_ = seconds;
+    showDuration();
+  }
   void start();
   void cancel();
   bool isRunning() const { return runner_->isRunning(); }
@@ -49,6 +52,8 @@ class AccuracyWindow : public QDialog {
   void addResult(const StudyResult& result);
   void finish(const StudySummary& summary);
   void showSummary();
+  // The simulated duration, and the agreement horizon once known, in the chart's title.
+  void showDuration();
   void replot();
   void selectNearest(carom::Method method, const QPointF& point);
   void applySelected();
@@ -60,6 +65,8 @@ class AccuracyWindow : public QDialog {
   std::vector<StudyResult> results_;
   std::unique_ptr<AccuracyStudyRunner> runner_;
   std::optional<StudySummary> summary_;  // of the last study, once finished
+  std::optional<double> horizon_;
+  bool horizonKnown_ = false;
   QLabel* metricLabel_;
   QComboBox* metric_;
   QChart* chart_;

@@ -2,6 +2,7 @@
 
 #include "app/cli/bench.h"
 #include "app/cli/cli_arguments.h"
+#include "app/cli/method_report.h"
 #include "app/cli/run_report.h"
 #include "app/cli/study.h"
 #include "app/cli/timeline_bench.h"
@@ -10,6 +11,7 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QJsonDocument>
 
 #include <exception>
 
@@ -59,6 +61,36 @@ std::optional<Scene> prepareScene(const RunOptions& options, QTextStream& err) {
   return scene;
 }
 
+// --method auto: the pilot, then the run of its choice, or the pilot's report alone and
+// kNoSettingMeets when nothing meets the tolerance and the closest was not asked for.
+int runAuto(const Scene& scene, const RunOptions& options, const QElapsedTimer& started,
+            QTextStream& out, QTextStream& err) {
+  err << "carom-cli: auto: piloting " << autoCandidates(scene.world).size() << " settings...\n";
+  err.flush();
+  const MethodChoice choice = chooseMethod(scene, options.duration, options.tolerance);
+  if (choice.candidates.empty()) return kInternalError;
+  if (!choice.chosen && !options.acceptClosest) {
+    if (options.json)
+      out << QJsonDocument(QJsonObject{{"auto", choiceJson(choice, options.tolerance)}})
+                 .toJson(QJsonDocument::Compact)
+          << "\n";
+    else
+      printChoice(out, choice, options.tolerance);
+    const PilotMeasure& closest = choice.pick();
+    err << "carom-cli: no setting meets the tolerance (energy error "
+        << options.tolerance.energyPerSecond << " per simulated second, penetration "
+        << options.tolerance.penetrationFraction << " of the radius); the closest is "
+        << settingsText(closest.settings) << ", " << QString::fromStdString(closest.verdict)
+        << "; give --accept-closest to run it, or a looser --tolerance\n";
+    return kNoSettingMeets;
+  }
+  Scene chosen = scene;
+  chosen.world.method = choice.pick().settings.method;
+  chosen.world.integrator = choice.pick().settings.integrator;
+  chosen.world.timeStep = choice.pick().settings.timeStep;
+  return runScene(chosen, options, started, out, err, &choice);
+}
+
 int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
   switch (command.kind) {
     case Command::Help:
@@ -77,6 +109,7 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
       started.start();
       const std::optional<Scene> scene = prepareScene(command.run, err);
       if (!scene) return kBadInput;
+      if (command.run.autoMethod) return runAuto(*scene, command.run, started, out, err);
       return runScene(*scene, command.run, started, out, err);
     }
     case Command::Bench:

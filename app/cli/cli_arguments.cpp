@@ -108,6 +108,7 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
   RunOptions& run = command.run;
   bool haveScene = false;
   bool watchGiven = false;
+  bool toleranceGiven = false;
   for (int i = 0; i < args.size(); ++i) {
     const QString& arg = args[i];
     QString watchError;
@@ -117,7 +118,7 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
     }
     const bool takesValue =
         !validateOnly && (arg == "--duration" || arg == "--method" || arg == "--integrator" ||
-                          arg == "--dt" || arg == "--trajectory");
+                          arg == "--dt" || arg == "--trajectory" || arg == "--tolerance");
     if (takesValue) {
       if (i + 1 >= args.size()) return failure(QString("%1 needs a value").arg(arg));
       const QString value = args[++i];
@@ -130,7 +131,28 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
         if (!d) return failure(QString("--dt must be a number of seconds (got '%1')").arg(value));
         run.timeStep = *d;  // range checked by scene validation with the rest of the world
       } else if (arg == "--method") {
-        run.method = value;
+        run.autoMethod = value == "auto";
+        if (run.autoMethod)
+          run.method.reset();
+        else
+          run.method = value;
+      } else if (arg == "--tolerance") {
+        // ENERGY or ENERGY,PENETRATION.
+        const QStringList parts = value.split(',');
+        const auto energy = parseNumber(parts.value(0), -1e300, 1e300);
+        const auto penetration =
+            parts.size() == 2 ? parseNumber(parts[1], -1e300, 1e300) : std::optional<double>();
+        if (parts.size() > 2 || !energy || (parts.size() == 2 && !penetration))
+          return failure(QString("--tolerance must be ENERGY or ENERGY,PENETRATION: the relative "
+                                 "energy error per simulated second and the deepest penetration "
+                                 "as a fraction of the radius (got '%1')")
+                             .arg(value));
+        run.tolerance.energyPerSecond = *energy;
+        if (penetration) run.tolerance.penetrationFraction = *penetration;
+        const std::vector<ValidationError> errors = validateTolerance(run.tolerance);
+        if (!errors.empty())
+          return failure(QString("--tolerance: %1").arg(QString::fromStdString(errors[0].text())));
+        toleranceGiven = true;
       } else if (arg == "--integrator") {
         run.integrator = value;
       } else {
@@ -140,6 +162,8 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
       run.json = true;
     } else if (!validateOnly && arg == "--stop-on-divergence") {
       run.stopOnDivergence = true;
+    } else if (!validateOnly && arg == "--accept-closest") {
+      run.acceptClosest = true;
     } else if (const auto problem = takeScene(arg, run.scenePath, haveScene)) {
       return failure(*problem);
     }
@@ -147,6 +171,10 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
   if (!haveScene) return failure("no scene file given");
   if (watchGiven && !run.stopOnDivergence)
     return failure("the --watch-... options set the watch of --stop-on-divergence: give it too");
+  if ((toleranceGiven || run.acceptClosest) && !run.autoMethod)
+    return failure("--tolerance and --accept-closest are for --method auto: give it too");
+  if (run.autoMethod && run.integrator)
+    return failure("--method auto chooses the integrator: leave --integrator out");
   return {command, {}};
 }
 
@@ -210,9 +238,10 @@ ParseResult parseArguments(const QStringList& arguments) {
 QString usageText() {
   return QStringLiteral(
       "Usage:\n"
-      "  carom-cli run SCENE [--duration S] [--method exact|swept|discrete]\n"
+      "  carom-cli run SCENE [--duration S] [--method exact|swept|discrete|auto]\n"
       "                      [--integrator explicit-euler|symplectic-euler|velocity-verlet]\n"
       "                      [--dt S] [--trajectory FILE.csv] [--json]\n"
+      "                      [--tolerance E[,P]] [--accept-closest]\n"
       "                      [--stop-on-divergence [--watch-off CHECK,...]\n"
       "                       [--watch-energy-rise F] [--watch-escape F]\n"
       "                       [--watch-penetration F]]\n"
@@ -223,6 +252,14 @@ QString usageText() {
       "      solid (escape), an overlap deeper than F (default 0.5) of the smaller radius\n"
       "      (penetration). It prints the report so far and the event (kind, ball, time)\n"
       "      and exits with 3. --watch-off turns the checks named off.\n"
+      "      --method auto pilots the scene for at most 5% of the run's expected computing\n"
+      "      time under exact, and swept and discrete (symplectic Euler, velocity Verlet) at\n"
+      "      1/4, 1 and 4 times the time step (--dt or the scene's), then runs the cheapest\n"
+      "      that meets --tolerance: E the relative energy error per simulated second\n"
+      "      (default 1e-3), P the deepest penetration as a fraction of the smallest radius\n"
+      "      (default 0.05). The report lists every candidate and why it was or was not\n"
+      "      chosen. When none meets it, the run exits with 4 unless --accept-closest asks\n"
+      "      for the closest.\n"
       "  carom-cli validate SCENE\n"
       "  carom-cli bench [--quick] [--timeline]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"
@@ -234,7 +271,8 @@ QString usageText() {
       "A run shows progress on standard error (a bar on a terminal, a line every 10 s\n"
       "otherwise); Ctrl+C stops it and prints the report so far, marked as interrupted.\n"
       "Exit codes: 0 success, 2 bad input, 1 internal failure, 3 stopped by the watch\n"
-      "(--stop-on-divergence), 130 interrupted by Ctrl+C.\n");
+      "(--stop-on-divergence), 4 no setting meets the tolerance (--method auto), 130\n"
+      "interrupted by Ctrl+C.\n");
 }
 
 }  // namespace carom::cli

@@ -1,6 +1,7 @@
 #pragma once
 // The command line of carom-cli, parsed into plain values; nothing runs here.
 
+#include "sim/method_choice.h"
 #include "sim/run_watch.h"
 
 #include <QString>
@@ -13,7 +14,12 @@ namespace carom::cli {
 struct RunOptions {
   QString scenePath;
   double duration = 10.0;
-  std::optional<QString> method;
+  std::optional<QString> method;  // any name but "auto"
+  // --method auto: a pilot chooses method, integrator and step for `tolerance`; with
+  // --accept-closest the closest setting runs when none meets it.
+  bool autoMethod = false;
+  AccuracyTolerance tolerance;
+  bool acceptClosest = false;
   std::optional<QString> integrator;
   std::optional<double> timeStep;
   std::optional<QString> trajectoryPath;

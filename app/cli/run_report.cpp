@@ -1,5 +1,7 @@
 #include "app/cli/run_report.h"
 
+#include "app/cli/method_report.h"
+
 #include "app/cli/cli.h"
 #include "sim/measures.h"
 #include "sim/run_watch.h"
@@ -287,7 +289,7 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
 }  // namespace
 
 int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer& started,
-             QTextStream& out, QTextStream& err) {
+             QTextStream& out, QTextStream& err, const MethodChoice* choice) {
   // `swept` and `discrete` take a step, and a trajectory writes a row, every time step. `exact`
   // without a trajectory takes none: its run is cut at ticks no shorter than the time step and
   // no more than kMaxSteps of them.
@@ -411,10 +413,26 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
   result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
   result.wallSeconds = started.nsecsElapsed() * 1e-9;
 
-  if (options.json)
-    out << QJsonDocument(reportJson(sim, result)).toJson(QJsonDocument::Compact) << "\n";
-  else
+  if (options.json) {
+    QJsonObject report = reportJson(sim, result);
+    if (choice) {
+      QJsonObject json = choiceJson(*choice, options.tolerance);
+      json["pilotShare"] = result.runSeconds > 0.0 ? choice->pilotSeconds / result.runSeconds : 0.0;
+      report["auto"] = json;
+    }
+    out << QJsonDocument(report).toJson(QJsonDocument::Compact) << "\n";
+  } else {
+    if (choice) {
+      printChoice(out, *choice, options.tolerance);
+      out << QString("auto: the pilot took %1 s, %2% of the run's %3 s of computing\n")
+                 .arg(choice->pilotSeconds, 0, 'g', 3)
+                 .arg(result.runSeconds > 0.0 ? 100.0 * choice->pilotSeconds / result.runSeconds
+                                              : 0.0,
+                      0, 'f', 1)
+                 .arg(result.runSeconds, 0, 'g', 3);
+    }
     printText(out, sim, result);
+  }
   if (result.divergence) {
     err << "carom-cli: stopped by the watch at " << sim.time() << " of " << options.duration
         << " s: " << QString::fromStdString(result.divergence->text)

@@ -7,6 +7,7 @@
 #include <QEventLoop>
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 #include <vector>
 
@@ -45,15 +46,28 @@ int runStudy(const Scene& scene, const StudyOptions& options, QTextStream& out, 
   std::stable_sort(results.begin(), results.end(), [&](const StudyResult& a, const StudyResult& b) {
     return caseIndex(a) < caseIndex(b);
   });
-  out << "method    integrator        dt s        computing s  position error  energy drift\n";
+  out << "simulated s  " << options.duration << "\n";
+  if (summary.horizon)
+    out << "horizon s    " << *summary.horizon
+        << "  (the finest setting agrees with exact up to here; position error is taken here)\n";
+  else
+    out << "horizon s    none  (even the finest setting parts from exact at once)\n";
+  out << "method    integrator        dt s        computing s  position error  energy drift"
+         "  penetration m  escaped  speeds KS  positions KS\n";
   for (const StudyResult& r : results) {
-    out << QString("%1 %2 %3  %4  %5  %6\n")
+    out << QString("%1 %2 %3  %4  %5  %6  %7  %8  %9  %10\n")
                .arg(text(methodName(r.settings.method)), -8)
                .arg(text(integratorName(r.settings.integrator)), -17)
                .arg(r.settings.timeStep, -10, 'g', 4)
                .arg(r.computeSeconds, 11, 'f', 3)
-               .arg(r.positionError, 14, 'e', 3)
-               .arg(r.energyDrift, 12, 'e', 3);
+               .arg(std::isnan(r.positionError) ? QString("-")
+                                                : QString::number(r.positionError, 'e', 3),
+                    14)
+               .arg(r.energyDrift, 12, 'e', 3)
+               .arg(r.maxPenetration, 13, 'e', 3)
+               .arg(r.escaped, 7)
+               .arg(r.speedDistribution, 9, 'f', 4)
+               .arg(r.positionDistribution, 12, 'f', 4);
   }
   out << QString("threads      %1\n").arg(summary.threads)
       << QString("wall s       %1\n").arg(summary.wallSeconds, 0, 'f', 3)

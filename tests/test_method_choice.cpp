@@ -1,0 +1,84 @@
+// Choosing the method for the accuracy asked for: exact wins where balls fly far between
+// collisions, discrete where a dense crowd collides all the time and the tolerance is loose, and
+// nothing wins a tolerance below round-off. Which candidate costs least is measured, not assumed:
+// each scene is made so that the winner is cheaper by a wide margin.
+
+#include "sim/method_choice.h"
+#include "sim/scene_builders.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using carom::AccuracyTolerance;
+using carom::Method;
+using carom::MethodChoice;
+
+class TestMethodChoice : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void toleranceIsChecked() {
+    QVERIFY(carom::validateTolerance({}).empty());
+    QCOMPARE(carom::validateTolerance({0.0, 0.05}).size(), std::size_t(1));
+    QCOMPARE(carom::validateTolerance({1e-3, -1.0}).front().path,
+             std::string("tolerance.penetration"));
+    QCOMPARE(carom::validateTolerance({std::nan(""), INFINITY}).size(), std::size_t(2));
+  }
+
+  void candidatesStayWithinValidation() {
+    carom::World world;
+    world.timeStep = 1.0 / 60.0;
+    QCOMPARE(carom::autoCandidates(world).size(), std::size_t(13));
+    QCOMPARE(carom::autoCandidates(world).front().method, Method::Exact);
+  }
+
+  void exactWinsLongFlights() {
+    // A few balls far apart in a large box: flights of seconds between collisions, which exact
+    // jumps in one event each while a stepping method takes every step, here of 1/240 s.
+    carom::Scene scene = carom::makeGasInBox(8, 1e-4, carom::Vec3::Zero(), 5);
+    scene.world.timeStep = 1.0 / 240.0;
+    const MethodChoice choice = carom::chooseMethod(scene, 1000.0, {});
+    QVERIFY(choice.chosen);
+    QCOMPARE(choice.pick().settings.method, Method::Exact);
+    QVERIFY(choice.pick().meets);
+    QCOMPARE(choice.candidates.size(), std::size_t(13));
+    for (const carom::PilotMeasure& m : choice.candidates) QVERIFY(!m.verdict.empty());
+    QVERIFY(choice.pilotSeconds <=
+            2.0 * carom::kPilotShare * choice.expectedRunSeconds() + carom::kPilotFloorSeconds);
+  }
+
+  void discreteWinsADenseCrowdAtALooseTolerance() {
+    // 500 balls packed at half the volume under gravity, restitution 0.5: they collapse into a
+    // pile whose collisions exact meets one by one, ever faster; a discrete step costs a pass
+    // over the balls and overlaps a fraction of a radius, which the loose tolerance allows.
+    carom::Scene scene = carom::makeGasInBox(500, 0.5, carom::Vec3(0, -9.81, 0), 9);
+    scene.world.restitution = 0.5;
+    scene.world.timeStep = 0.02;
+    const AccuracyTolerance loose{1.0, 0.5};
+    const MethodChoice choice = carom::chooseMethod(scene, 300.0, loose);
+    QVERIFY(choice.chosen);
+    QCOMPARE(choice.pick().settings.method, Method::Discrete);
+    QVERIFY(choice.pick().energyErrorPerSecond <= loose.energyPerSecond);
+    QVERIFY(choice.pick().penetrationFraction <= loose.penetrationFraction);
+    QVERIFY(choice.pick().penetrationFraction > 0.0);  // it does overlap, within the tolerance
+    QVERIFY(choice.candidates.front().costPerSecond > 2.0 * choice.pick().costPerSecond);
+    // The budget is checked between slices, so a slice may overrun it, never by the whole pilot.
+    QVERIFY(choice.pilotSeconds <=
+            2.0 * carom::kPilotShare * choice.expectedRunSeconds() + carom::kPilotFloorSeconds);
+  }
+
+  void noSettingMeetsATolerancePastRoundOff() {
+    const carom::Scene scene = carom::makeGasInBox(64, 0.2, carom::Vec3::Zero(), 3);
+    const AccuracyTolerance impossible{1e-30, 1e-30};
+    const MethodChoice choice = carom::chooseMethod(scene, 50.0, impossible);
+    QVERIFY(!choice.chosen);
+    QVERIFY(choice.closest < choice.candidates.size());
+    QVERIFY(!choice.pick().meets);
+    QVERIFY(choice.reason.find("no setting meets") != std::string::npos);
+    for (const carom::PilotMeasure& m : choice.candidates) QVERIFY(!m.meets);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestMethodChoice)
+#include "test_method_choice.moc"
