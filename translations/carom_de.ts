@@ -570,78 +570,113 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <location filename="../ui/accuracy_window.cpp" line="122"/>
         <source>Speed vs accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Position error against exact (m)</source>
-        <translation>Positionsfehler gegenüber exact (m)</translation>
+        <location filename="../ui/accuracy_window.cpp" line="124"/>
+        <source>Position error against exact at the horizon (m)</source>
+        <translation>Positionsfehler gegenüber exact am Horizont (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <location filename="../ui/accuracy_window.cpp" line="125"/>
         <source>Relative energy drift</source>
         <translation>Relative Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <location filename="../ui/accuracy_window.cpp" line="126"/>
         <source>Deepest penetration (m)</source>
         <translation>Maximale Eindringtiefe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <location filename="../ui/accuracy_window.cpp" line="127"/>
         <source>Escaped balls</source>
         <translation>Entwichene Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="119"/>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <location filename="../ui/accuracy_window.cpp" line="128"/>
+        <source>Speed distribution against exact (KS distance)</source>
+        <translation>Geschwindigkeitsverteilung gegenüber exact (KS-Abstand)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="129"/>
+        <source>Position distribution against exact (KS distance)</source>
+        <translation>Positionsverteilung gegenüber exact (KS-Abstand)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="131"/>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Computing time (s)</source>
         <translation>Rechenzeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Run</source>
         <translation>Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
-        <source>Position error</source>
-        <translation>Positionsfehler</translation>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <source>Position error at horizon (m)</source>
+        <translation>Positionsfehler am Horizont (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <location filename="../ui/accuracy_window.cpp" line="138"/>
+        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings. Paths part from exact ones with time, whatever the method: position error is taken at the horizon up to which the finest setting agrees with exact, and whole runs are judged by energy, penetration, escapes and distributions.</source>
+        <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen. Bahnen entfernen sich mit der Zeit von den exakten, bei jeder Methode: Der Positionsfehler wird am Horizont gemessen, bis zu dem die feinste Einstellung mit exact übereinstimmt, und ganze Läufe werden nach Energie, Eindringen, Ausbrüchen und Verteilungen beurteilt.</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="285"/>
+        <source>Each run: %1 s simulated</source>
+        <translation>Jeder Lauf: %1 s simuliert</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="289"/>
+        <source>%1; the finest setting agrees with exact up to %2 s</source>
+        <translation>%1; die feinste Einstellung stimmt bis %2 s mit exact überein</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="292"/>
+        <source>%1; even the finest setting parts from exact at once: no position error</source>
+        <translation>%1; selbst die feinste Einstellung weicht sofort von exact ab: kein Positionsfehler</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Energy drift</source>
         <translation>Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
-        <source>Penetration</source>
-        <translation>Eindringtiefe</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
         <source>Escaped</source>
         <translation>Entwichen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Penetration (m)</source>
+        <translation>Eindringtiefe (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Speeds (KS)</source>
+        <translation>Geschwindigkeiten (KS)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Positions (KS)</source>
+        <translation>Positionen (KS)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="135"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <location filename="../ui/accuracy_window.cpp" line="136"/>
         <source>Apply Selected Settings</source>
         <translation>Ausgewählte Einstellungen übernehmen</translation>
     </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="125"/>
-        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
-        <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen.</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="195"/>
+        <location filename="../ui/accuracy_window.cpp" line="218"/>
         <source>%Ln runs</source>
         <translation>
             <numerusform>%Ln Lauf</numerusform>
@@ -649,12 +684,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="201"/>
+        <location filename="../ui/accuracy_window.cpp" line="224"/>
         <source>Cancelled after %1 in %2 s.</source>
         <translation>Abgebrochen nach %1 in %2 s.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="204"/>
+        <location filename="../ui/accuracy_window.cpp" line="227"/>
         <source>%Ln threads</source>
         <translation>
             <numerusform>%Ln Thread</numerusform>
@@ -662,17 +697,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="210"/>
+        <location filename="../ui/accuracy_window.cpp" line="233"/>
         <source>%1 in %2 s on %3, no faster than one after another</source>
         <translation>%1 in %2 s mit %3, nicht schneller als nacheinander</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="213"/>
+        <location filename="../ui/accuracy_window.cpp" line="236"/>
         <source>%1 in %2 s on %3, %4× faster than one after another</source>
         <translation>%1 in %2 s mit %3, %4× schneller als nacheinander</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
+        <location filename="../ui/accuracy_window.cpp" line="123"/>
         <source>Error:</source>
         <translation>Fehler:</translation>
     </message>
@@ -1939,7 +1974,7 @@
     </message>
     <message>
         <location filename="../ui/video_export.cpp" line="257"/>
-        <location filename="../ui/video_export.cpp" line="355"/>
+        <location filename="../ui/video_export.cpp" line="357"/>
         <source>Export Video</source>
         <translation>Video exportieren</translation>
     </message>
@@ -1955,7 +1990,7 @@
     </message>
     <message>
         <location filename="../ui/video_export.cpp" line="272"/>
-        <location filename="../ui/video_export.cpp" line="471"/>
+        <location filename="../ui/video_export.cpp" line="483"/>
         <source>Cannot Export Video</source>
         <translation>Video kann nicht exportiert werden</translation>
     </message>
@@ -2000,12 +2035,12 @@
         <translation>%1 konnte nicht geschrieben werden: es ist ein Ordner.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="343"/>
+        <location filename="../ui/video_export.cpp" line="345"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>ffmpeg konnte nicht gestartet werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="354"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>%n Videobild wird exportiert…</numerusform>
@@ -2013,12 +2048,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="354"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="380"/>
+        <location filename="../ui/video_export.cpp" line="382"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Der Lauf wurde während des Exports zurückgesetzt oder von einem früheren Bild aus fortgesetzt; der Export endete nach %n Bild.</numerusform>
@@ -2026,27 +2061,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="400"/>
+        <location filename="../ui/video_export.cpp" line="402"/>
         <source>Finishing the video…</source>
         <translation>Das Video wird fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="414"/>
+        <location filename="../ui/video_export.cpp" line="426"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="423"/>
+        <location filename="../ui/video_export.cpp" line="435"/>
         <source>Could not write %1: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="447"/>
+        <location filename="../ui/video_export.cpp" line="459"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>ffmpeg ist fehlgeschlagen (Exit-Code %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="451"/>
+        <location filename="../ui/video_export.cpp" line="463"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>%n Videobild mit %1×%2 bei %3 fps nach %4 exportiert</numerusform>
@@ -2054,7 +2089,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="465"/>
+        <location filename="../ui/video_export.cpp" line="477"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n zuvor geschriebenes Bild bleibt in %1.</numerusform>
@@ -2062,12 +2097,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="483"/>
+        <location filename="../ui/video_export.cpp" line="495"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Videoexport abgebrochen; das unfertige Video wurde entfernt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="484"/>
+        <location filename="../ui/video_export.cpp" line="496"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Videoexport nach %n Bild abgebrochen; es bleibt in %1.</numerusform>

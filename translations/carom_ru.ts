@@ -572,78 +572,113 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="114"/>
+        <location filename="../ui/accuracy_window.cpp" line="122"/>
         <source>Speed vs accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
-        <source>Position error against exact (m)</source>
-        <translation>Ошибка положения относительно exact (m)</translation>
+        <location filename="../ui/accuracy_window.cpp" line="124"/>
+        <source>Position error against exact at the horizon (m)</source>
+        <translation>Ошибка положения относительно exact на горизонте (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="116"/>
+        <location filename="../ui/accuracy_window.cpp" line="125"/>
         <source>Relative energy drift</source>
         <translation>Относительный дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <location filename="../ui/accuracy_window.cpp" line="126"/>
         <source>Deepest penetration (m)</source>
         <translation>Максимальная глубина проникновения (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="117"/>
+        <location filename="../ui/accuracy_window.cpp" line="127"/>
         <source>Escaped balls</source>
         <translation>Вылетевшие шары</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="119"/>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <location filename="../ui/accuracy_window.cpp" line="128"/>
+        <source>Speed distribution against exact (KS distance)</source>
+        <translation>Распределение скоростей относительно exact (расстояние КС)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="129"/>
+        <source>Position distribution against exact (KS distance)</source>
+        <translation>Распределение положений относительно exact (расстояние КС)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="131"/>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Computing time (s)</source>
         <translation>Время вычислений (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Run</source>
         <translation>Прогон</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="120"/>
-        <source>Position error</source>
-        <translation>Ошибка положения</translation>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <source>Position error at horizon (m)</source>
+        <translation>Ошибка положения на горизонте (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <location filename="../ui/accuracy_window.cpp" line="138"/>
+        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings. Paths part from exact ones with time, whatever the method: position error is taken at the horizon up to which the finest setting agrees with exact, and whole runs are judged by energy, penetration, escapes and distributions.</source>
+        <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки. Траектории со временем расходятся с точными при любом методе: ошибка положения берётся на горизонте, до которого самая точная настройка совпадает с exact, а прогоны целиком оцениваются по энергии, проникновению, вылетам и распределениям.</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="285"/>
+        <source>Each run: %1 s simulated</source>
+        <translation>Каждый прогон: %1 s моделирования</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="289"/>
+        <source>%1; the finest setting agrees with exact up to %2 s</source>
+        <translation>%1; самая точная настройка совпадает с exact до %2 s</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="292"/>
+        <source>%1; even the finest setting parts from exact at once: no position error</source>
+        <translation>%1; даже самая точная настройка сразу расходится с exact: ошибки положения нет</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="133"/>
         <source>Energy drift</source>
         <translation>Дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
-        <source>Penetration</source>
-        <translation>Проникновение</translation>
-    </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="121"/>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
         <source>Escaped</source>
         <translation>Вылетело</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Penetration (m)</source>
+        <translation>Проникновение (m)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Speeds (KS)</source>
+        <translation>Скорости (КС)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <source>Positions (KS)</source>
+        <translation>Положения (КС)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="135"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <location filename="../ui/accuracy_window.cpp" line="136"/>
         <source>Apply Selected Settings</source>
         <translation>Применить выбранные настройки</translation>
     </message>
-    <message>
-        <location filename="../ui/accuracy_window.cpp" line="125"/>
-        <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings.</source>
-        <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки.</translation>
-    </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="195"/>
+        <location filename="../ui/accuracy_window.cpp" line="218"/>
         <source>%Ln runs</source>
         <translation>
             <numerusform>%Ln прогон</numerusform>
@@ -652,12 +687,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="201"/>
+        <location filename="../ui/accuracy_window.cpp" line="224"/>
         <source>Cancelled after %1 in %2 s.</source>
         <translation>Прервано после %1 за %2 с.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="204"/>
+        <location filename="../ui/accuracy_window.cpp" line="227"/>
         <source>%Ln threads</source>
         <translation>
             <numerusform>%Ln поток</numerusform>
@@ -666,17 +701,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="210"/>
+        <location filename="../ui/accuracy_window.cpp" line="233"/>
         <source>%1 in %2 s on %3, no faster than one after another</source>
         <translation>%1 за %2 с на %3, не быстрее, чем по очереди</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="213"/>
+        <location filename="../ui/accuracy_window.cpp" line="236"/>
         <source>%1 in %2 s on %3, %4× faster than one after another</source>
         <translation>%1 за %2 с на %3, в %4 раза быстрее, чем по очереди</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="115"/>
+        <location filename="../ui/accuracy_window.cpp" line="123"/>
         <source>Error:</source>
         <translation>Ошибка:</translation>
     </message>
@@ -1945,7 +1980,7 @@
     </message>
     <message>
         <location filename="../ui/video_export.cpp" line="257"/>
-        <location filename="../ui/video_export.cpp" line="355"/>
+        <location filename="../ui/video_export.cpp" line="357"/>
         <source>Export Video</source>
         <translation>Экспорт видео</translation>
     </message>
@@ -1961,7 +1996,7 @@
     </message>
     <message>
         <location filename="../ui/video_export.cpp" line="272"/>
-        <location filename="../ui/video_export.cpp" line="471"/>
+        <location filename="../ui/video_export.cpp" line="483"/>
         <source>Cannot Export Video</source>
         <translation>Не удалось экспортировать видео</translation>
     </message>
@@ -2006,12 +2041,12 @@
         <translation>Не удалось записать %1: это папка.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="343"/>
+        <location filename="../ui/video_export.cpp" line="345"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>Не удалось запустить ffmpeg: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="354"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>Экспорт %n кадра видео…</numerusform>
@@ -2020,12 +2055,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="352"/>
+        <location filename="../ui/video_export.cpp" line="354"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="380"/>
+        <location filename="../ui/video_export.cpp" line="382"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадра.</numerusform>
@@ -2034,27 +2069,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="400"/>
+        <location filename="../ui/video_export.cpp" line="402"/>
         <source>Finishing the video…</source>
         <translation>Завершение видео…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="414"/>
+        <location filename="../ui/video_export.cpp" line="426"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="423"/>
+        <location filename="../ui/video_export.cpp" line="435"/>
         <source>Could not write %1: %2</source>
         <translation>Не удалось записать %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="447"/>
+        <location filename="../ui/video_export.cpp" line="459"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>Ошибка ffmpeg (код выхода %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="451"/>
+        <location filename="../ui/video_export.cpp" line="463"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>Экспортирован %n кадр видео %1×%2 при %3 fps в %4</numerusform>
@@ -2063,7 +2098,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="465"/>
+        <location filename="../ui/video_export.cpp" line="477"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n уже записанный кадр оставлен в %1.</numerusform>
@@ -2072,12 +2107,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="483"/>
+        <location filename="../ui/video_export.cpp" line="495"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Экспорт видео отменён; незаконченное видео удалено.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="484"/>
+        <location filename="../ui/video_export.cpp" line="496"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Экспорт видео отменён после %n кадра; он оставлен в %1.</numerusform>
