@@ -1,6 +1,7 @@
 #include "sim/accuracy_study.h"
 
 #include "sim/measures.h"
+#include "sim/run_watch.h"
 #include "sim/simulation.h"
 
 #include <algorithm>
@@ -66,6 +67,25 @@ Scene withSettings(const Scene& scene, const StudyCase& settings) {
 
 }  // namespace
 
+EnergyYardstick EnergyYardstick::of(const Simulation& sim) {
+  EnergyYardstick yardstick;
+  yardstick.initial = sim.totalEnergy();
+  RunWatch watch;
+  watch.rebase(sim);
+  yardstick.scale = std::max(watch.energyScale(), std::numeric_limits<double>::min());
+  const Bodies& bodies = sim.bodies();
+  for (const std::vector<double>* values : {&bodies.planeRestitution, &bodies.cylinderRestitution,
+                                            &bodies.boxRestitution, &bodies.restitution})
+    for (double e : *values) yardstick.conserved = yardstick.conserved && e == 1.0;
+  return yardstick;
+}
+
+double EnergyYardstick::errorPerSecond(double energy, double time) const {
+  if (!std::isfinite(energy)) return std::numeric_limits<double>::infinity();
+  const double error = conserved ? std::abs(energy - initial) : std::max(0.0, energy - initial);
+  return time > 0.0 ? error / scale / time : 0.0;
+}
+
 double threadCpuSeconds() {
   // POSIX, here only; elsewhere wall time is the best there is.
 #if defined(CLOCK_THREAD_CPUTIME_ID)
@@ -129,6 +149,7 @@ StudyResult runStudyCase(const Scene& scene, const StudyCase& settings, double d
   const double start = threadCpuSeconds();
   Simulation sim(withSettings(scene, settings));
   const double initial = sim.totalEnergy();
+  const EnergyYardstick yardstick = EnergyYardstick::of(sim);
   const bool sampled = !reference.sampleTimes.empty() && reference.sampleTimes.back() == duration;
   const std::vector<double> times = sampled ? reference.sampleTimes : std::vector<double>{duration};
   advanceThrough(sim, times, cancel, [&](std::size_t k) {
@@ -141,6 +162,10 @@ StudyResult runStudyCase(const Scene& scene, const StudyCase& settings, double d
   const OverlapReport overlaps = measureOverlaps(sim.bodies(), positions);
   result.maxPenetration = std::max(overlaps.maxPenetration, sim.stats().maxPenetration);
   result.escaped = overlaps.escaped;
+  result.energyErrorPerSecond = yardstick.errorPerSecond(sim.totalEnergy(), sim.time());
+  double smallestRadius = std::numeric_limits<double>::infinity();
+  for (const Ball& ball : scene.balls) smallestRadius = std::min(smallestRadius, ball.radius);
+  result.penetrationFraction = result.maxPenetration / smallestRadius;
   result.positionError = positionErrorAtHorizon(result, reference);
   if (!reference.positions.empty() && reference.positions.size() == reference.sampleTimes.size()) {
     result.speedDistribution =

@@ -18,6 +18,20 @@
 
 namespace carom {
 
+class Simulation;
+
+// Energy error as `auto` and the study's tolerance judge it: relative to the run watch's energy
+// scale (the energy the balls can trade between motion and height, whatever the potential's
+// zero), per simulated second; any change where every restitution is 1, any gain otherwise (how
+// much collisions should lose is not known short of running exact).
+struct EnergyYardstick {
+  double initial = 0.0;
+  double scale = 0.0;
+  bool conserved = true;
+  static EnergyYardstick of(const Simulation& sim);  // at its start
+  double errorPerSecond(double energy, double time) const;
+};
+
 struct StudyCase {
   Method method = Method::Exact;
   Integrator integrator = Integrator::SymplecticEuler;
@@ -29,14 +43,16 @@ struct StudyResult {
   // CPU time the run's thread spent on it (threadCpuSeconds()), not wall time: with runs in
   // parallel, or other programs busy, the wall time would count the waits for a core too.
   double computeSeconds = 0.0;
-  double energyDrift = 0.0;  // |E_end - E_start| / |E_start|
+  double energyDrift = 0.0;           // |E_end - E_start| / |E_start|
+  double energyErrorPerSecond = 0.0;  // over the whole run, by EnergyYardstick
   // RMS distance from the exact run's positions at each of the reference's sample times.
   std::vector<double> deviation;
   // The deviation at the agreement horizon; NaN when the scene has none (even the finest
   // setting parts from `exact` before the first sample).
   double positionError = 0.0;
-  double maxPenetration = 0.0;  // deepest overlap seen at contacts or at the end
-  int escaped = 0;              // balls behind a plane or inside a cylinder at the end
+  double maxPenetration = 0.0;       // deepest overlap seen at contacts or at the end
+  double penetrationFraction = 0.0;  // maxPenetration over the smallest radius
+  int escaped = 0;                   // balls behind a plane or inside a cylinder at the end
   // Kolmogorov-Smirnov distances (0 to 1) of the final speeds, and of the final coordinates
   // (the largest of the three axes), from the exact run's.
   double speedDistribution = 0.0;

@@ -1,7 +1,6 @@
 #include "sim/method_choice.h"
 
 #include "sim/measures.h"
-#include "sim/run_watch.h"
 #include "sim/simulation.h"
 
 #include <algorithm>
@@ -18,14 +17,6 @@ std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", value);
   return text;
-}
-
-bool energyConserved(const Bodies& bodies) {
-  for (const std::vector<double>* values : {&bodies.planeRestitution, &bodies.cylinderRestitution,
-                                            &bodies.boxRestitution, &bodies.restitution})
-    for (double e : *values)
-      if (e != 1.0) return false;
-  return true;
 }
 
 // How far past the tolerance a candidate is, as the larger ratio of measure to tolerance;
@@ -54,6 +45,12 @@ std::vector<ValidationError> validateTolerance(const AccuracyTolerance& toleranc
   check("tolerance.energy", tolerance.energyPerSecond);
   check("tolerance.penetration", tolerance.penetrationFraction);
   return errors;
+}
+
+bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
+                    const AccuracyTolerance& tolerance) {
+  return escaped == 0 && energyErrorPerSecond <= tolerance.energyPerSecond &&
+         penetrationFraction <= tolerance.penetrationFraction;
 }
 
 double MethodChoice::expectedRunSeconds() const {
@@ -96,12 +93,7 @@ MethodChoice chooseMethod(const Scene& scene, double duration, const AccuracyTol
     pilot->measure.setupSeconds = pilot->measure.computeSeconds = threadCpuSeconds() - start;
     pilots.push_back(std::move(pilot));
   }
-  const Simulation& exact = pilots.front()->sim;
-  RunWatch scaleWatch;
-  scaleWatch.rebase(exact);
-  const double scale = std::max(scaleWatch.energyScale(), std::numeric_limits<double>::min());
-  const double initialEnergy = exact.totalEnergy();
-  const bool conserved = energyConserved(exact.bodies());
+  const EnergyYardstick yardstick = EnergyYardstick::of(pilots.front()->sim);
 
   // Round ends fall on whole steps of every candidate (multiples of the coarsest step), so that
   // each takes whole steps only, as in its run.
@@ -188,11 +180,7 @@ MethodChoice chooseMethod(const Scene& scene, double duration, const AccuracyTol
       m.escaped = overlaps.escaped;
       m.penetrationFraction =
           std::max(overlaps.maxPenetration, pilot->sim.stats().maxPenetration) / smallestRadius;
-      // Where collisions lose energy, how much they should lose is not known short of running
-      // exact to the end: only energy gained is surely error there.
-      const double energyError =
-          conserved ? std::abs(energy - initialEnergy) : std::max(0.0, energy - initialEnergy);
-      m.energyErrorPerSecond = energyError / scale / t;
+      m.energyErrorPerSecond = yardstick.errorPerSecond(energy, t);
       if (!m.finite) m.energyErrorPerSecond = std::numeric_limits<double>::infinity();
       m.meets = m.finite && m.escaped == 0 && m.energyErrorPerSecond <= tolerance.energyPerSecond &&
                 m.penetrationFraction <= tolerance.penetrationFraction;

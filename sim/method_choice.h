@@ -15,10 +15,7 @@
 namespace carom {
 
 struct AccuracyTolerance {
-  // Relative energy error per simulated second: any change from the initial energy when every
-  // restitution is 1 (energy is conserved), any gain otherwise (how much collisions should lose
-  // is not known short of running exact); relative to the run watch's energy scale (the energy the
-  // balls can trade between motion and height, independent of where the potential's zero is).
+  // Relative energy error per simulated second, by EnergyYardstick (accuracy_study.h).
   double energyPerSecond = 1e-3;
   // The deepest penetration, as a fraction of the smallest ball's radius.
   double penetrationFraction = 0.05;
@@ -26,6 +23,9 @@ struct AccuracyTolerance {
 
 // Paths such as "tolerance.energy"; empty when both are finite and above zero.
 std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance);
+// Energy error (EnergyYardstick) and penetration within the tolerance, and no ball lost.
+bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
+                    const AccuracyTolerance& tolerance);
 
 // The pilot's computing time is at most this share of the run's expected time, or
 // kPilotFloorSeconds if that is longer: a run of a few milliseconds leaves its pilot no time to

@@ -168,8 +168,22 @@ class TestMainWindow : public QObject {
         worstDiscrete = std::max(worstDiscrete, r.positionError);
     }
     QVERIFY(worstDiscrete > 1e-3);  // coarse discrete steps drift away from the exact paths
-    if (qEnvironmentVariableIsSet("CAROM_SCREENSHOT_DIR"))  // for looking at it, not a check
+    // The cheapest run within auto's tolerance is marked: it meets it, and none cheaper does.
+    const std::optional<std::size_t> cheapest = study->cheapestWithinTolerance();
+    QVERIFY(cheapest);
+    const carom::AccuracyTolerance tolerance;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const carom::StudyResult& r = results[i];
+      const bool meets = carom::meetsTolerance(r.energyErrorPerSecond, r.penetrationFraction,
+                                               r.escaped, tolerance);
+      if (i == *cheapest) QVERIFY(meets);
+      if (meets) QVERIFY(r.computeSeconds >= results[*cheapest].computeSeconds);
+    }
+    if (qEnvironmentVariableIsSet("CAROM_SCREENSHOT_DIR")) {  // for looking at it, not a check
+      // Auto's energy measure, with the tolerance drawn and the cheapest run within it ringed.
+      study->findChild<QComboBox*>()->setCurrentIndex(6);
       study->grab().save(qEnvironmentVariable("CAROM_SCREENSHOT_DIR") + "/accuracy.png");
+    }
     // Choose a swept run and apply it: the sandbox takes its settings.
     auto* table = study->findChild<QTableWidget*>();
     QVERIFY(table);
@@ -188,6 +202,47 @@ class TestMainWindow : public QObject {
     QVERIFY(waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
       return s.world.method == carom::Method::Swept &&
              s.world.integrator == carom::Integrator::VelocityVerlet;
+    }));
+  }
+
+  void autoMethodChoosesForTheAccuracy() {
+    // The method box's last entry is auto: its accuracy field appears, a pilot runs off the GUI
+    // thread, and the world takes the cheapest setting that meets the accuracy, as one undo
+    // step, the status line naming it.
+    auto* method = window_->findChild<QComboBox*>("worldMethod");
+    auto* accuracy = window_->findChild<QDoubleSpinBox*>("accuracy");
+    QVERIFY(method && accuracy);
+    QVERIFY(!accuracy->isVisible());
+    QVERIFY(method->itemText(method->count() - 1).startsWith("auto"));
+    method->setCurrentIndex(method->count() - 1);
+    QTRY_VERIFY(accuracy->isVisible());
+    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
+    const QString status = window_->statusMessage();
+    const auto chosen = waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
+      return status.startsWith(
+          QString("Auto chose %1")
+              .arg(QString::fromUtf8(carom::methodName(s.world.method).data())));
+    });
+    QVERIFY2(chosen, qPrintable(status));
+    // The box still says auto, and what auto chose.
+    QCOMPARE(method->currentIndex(), method->count() - 1);
+    QCOMPARE(method->currentText(),
+             QString("auto (%1)")
+                 .arg(QString::fromUtf8(carom::methodName(chosen->world.method).data())));
+    // An accuracy below round-off: nothing meets it, and the settings stay.
+    const carom::World before = chosen->world;
+    accuracy->setValue(1e-20);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().contains("no setting meets"), 30000);
+    QVERIFY(waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
+      return s.world.method == before.method && s.world.timeStep == before.timeStep;
+    }));
+    accuracy->setValue(1e-3);
+    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
+    // Back to a method of one's own: the field goes, and that method is the world's.
+    method->setCurrentIndex(0);
+    QTRY_VERIFY(!accuracy->isVisible());
+    QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) {
+      return s.world.method == carom::Method::Exact;
     }));
   }
 

@@ -570,113 +570,128 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <location filename="../ui/accuracy_window.cpp" line="135"/>
         <source>Speed vs accuracy</source>
         <translation>Geschwindigkeit und Genauigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="124"/>
+        <location filename="../ui/accuracy_window.cpp" line="137"/>
         <source>Position error against exact at the horizon (m)</source>
         <translation>Positionsfehler gegenüber exact am Horizont (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="125"/>
+        <location filename="../ui/accuracy_window.cpp" line="138"/>
         <source>Relative energy drift</source>
         <translation>Relative Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="126"/>
+        <location filename="../ui/accuracy_window.cpp" line="139"/>
         <source>Deepest penetration (m)</source>
         <translation>Maximale Eindringtiefe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="127"/>
+        <location filename="../ui/accuracy_window.cpp" line="140"/>
         <source>Escaped balls</source>
         <translation>Entwichene Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="128"/>
+        <location filename="../ui/accuracy_window.cpp" line="141"/>
         <source>Speed distribution against exact (KS distance)</source>
         <translation>Geschwindigkeitsverteilung gegenüber exact (KS-Abstand)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="129"/>
+        <location filename="../ui/accuracy_window.cpp" line="142"/>
         <source>Position distribution against exact (KS distance)</source>
         <translation>Positionsverteilung gegenüber exact (KS-Abstand)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="131"/>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="143"/>
+        <source>Energy error per simulated second (auto&apos;s measure)</source>
+        <translation>Energiefehler je simulierter Sekunde (Maß von auto)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="145"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Computing time (s)</source>
         <translation>Rechenzeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="146"/>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="147"/>
+        <source>Cheapest within the tolerance</source>
+        <translation>Günstigster innerhalb der Toleranz</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Run</source>
         <translation>Lauf</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Position error at horizon (m)</source>
         <translation>Positionsfehler am Horizont (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="138"/>
+        <location filename="../ui/accuracy_window.cpp" line="154"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings. Paths part from exact ones with time, whatever the method: position error is taken at the horizon up to which the finest setting agrees with exact, and whole runs are judged by energy, penetration, escapes and distributions.</source>
         <translation>Jeder Punkt ist ein Lauf der aktuellen Szene; weiter unten und weiter links ist besser. Wählen Sie einen Lauf, um seine Einstellungen zu übernehmen. Bahnen entfernen sich mit der Zeit von den exakten, bei jeder Methode: Der Positionsfehler wird am Horizont gemessen, bis zu dem die feinste Einstellung mit exact übereinstimmt, und ganze Läufe werden nach Energie, Eindringen, Ausbrüchen und Verteilungen beurteilt.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="285"/>
+        <location filename="../ui/accuracy_window.cpp" line="342"/>
         <source>Each run: %1 s simulated</source>
         <translation>Jeder Lauf: %1 s simuliert</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="289"/>
+        <location filename="../ui/accuracy_window.cpp" line="346"/>
         <source>%1; the finest setting agrees with exact up to %2 s</source>
         <translation>%1; die feinste Einstellung stimmt bis %2 s mit exact überein</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="292"/>
+        <location filename="../ui/accuracy_window.cpp" line="349"/>
         <source>%1; even the finest setting parts from exact at once: no position error</source>
         <translation>%1; selbst die feinste Einstellung weicht sofort von exact ab: kein Positionsfehler</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Energy drift</source>
         <translation>Energiedrift</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Escaped</source>
         <translation>Entwichen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Penetration (m)</source>
         <translation>Eindringtiefe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Speeds (KS)</source>
         <translation>Geschwindigkeiten (KS)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Positions (KS)</source>
         <translation>Positionen (KS)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="135"/>
+        <location filename="../ui/accuracy_window.cpp" line="151"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="136"/>
+        <location filename="../ui/accuracy_window.cpp" line="152"/>
         <source>Apply Selected Settings</source>
         <translation>Ausgewählte Einstellungen übernehmen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="218"/>
+        <location filename="../ui/accuracy_window.cpp" line="234"/>
         <source>%Ln runs</source>
         <translation>
             <numerusform>%Ln Lauf</numerusform>
@@ -684,12 +699,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="224"/>
+        <location filename="../ui/accuracy_window.cpp" line="240"/>
         <source>Cancelled after %1 in %2 s.</source>
         <translation>Abgebrochen nach %1 in %2 s.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="227"/>
+        <location filename="../ui/accuracy_window.cpp" line="243"/>
         <source>%Ln threads</source>
         <translation>
             <numerusform>%Ln Thread</numerusform>
@@ -697,19 +712,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="233"/>
+        <location filename="../ui/accuracy_window.cpp" line="249"/>
         <source>%1 in %2 s on %3, no faster than one after another</source>
         <translation>%1 in %2 s mit %3, nicht schneller als nacheinander</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="236"/>
+        <location filename="../ui/accuracy_window.cpp" line="252"/>
         <source>%1 in %2 s on %3, %4× faster than one after another</source>
         <translation>%1 in %2 s mit %3, %4× schneller als nacheinander</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <location filename="../ui/accuracy_window.cpp" line="136"/>
         <source>Error:</source>
         <translation>Fehler:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AutoMethod</name>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="23"/>
+        <source>%1 (%2, step %3 s)</source>
+        <translation>%1 (%2, Schritt %3 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="89"/>
+        <source>Auto: no setting meets an energy error of %1 per second; the closest is %2. The settings are kept.</source>
+        <translation>Auto: Keine Einstellung erreicht einen Energiefehler von %1 je Sekunde; am nächsten kommt %2. Die Einstellungen bleiben.</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="98"/>
+        <source>Choose Method Automatically</source>
+        <translation>Methode automatisch wählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="103"/>
+        <source>Auto chose %1: the cheapest setting with an energy error under %2 per second (%3 s of computing per simulated second; pilot %4 s)</source>
+        <translation>Auto wählte %1: die günstigste Einstellung mit einem Energiefehler unter %2 je Sekunde (%3 s Rechenzeit je simulierter Sekunde; Vorlauf %4 s)</translation>
     </message>
 </context>
 <context>
@@ -1341,400 +1379,416 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="565"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="525"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="530"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="533"/>
         <source>Gravity %1</source>
         <translation>Schwerkraft %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Schwerkraft %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>Change Gravity</source>
         <translation>Schwerkraft ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>Step</source>
         <translation>Schritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="304"/>
         <source>Change Time Step</source>
         <translation>Zeitschritt ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
-        <source>Exact (event-driven), swept, or discrete steps</source>
-        <translation>exact (ereignisgesteuert), swept oder discrete (feste Schritte)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="310"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>Change Method</source>
         <translation>Methode ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="547"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Integrator der Methoden swept und discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="317"/>
+        <location filename="../ui/main_window.cpp" line="343"/>
         <source>Change Integrator</source>
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="516"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window.cpp" line="690"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="314"/>
+        <source>Auto: piloting the scene under 13 settings…</source>
+        <translation>Auto: Vorlauf der Szene mit 13 Einstellungen …</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>Export &amp;Video…</source>
         <translation>&amp;Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="529"/>
         <source>World</source>
         <translation>Welt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="536"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
+        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
+        <translation>Exakt (ereignisgesteuert), überstrichene oder diskrete Schritte; auto: die günstigste, die die Genauigkeit erreicht, per kurzem Vorlauf ermittelt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="543"/>
+        <source>Accuracy</source>
+        <translation>Genauigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="545"/>
+        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
+        <translation>Toleranz von auto: der relative Energiefehler je simulierter Sekunde (und ein Eindringen von höchstens 5 % des Radius)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="569"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="570"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="538"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="539"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="739"/>
+        <location filename="../ui/main_window.cpp" line="778"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="522"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="827"/>
+        <location filename="../ui/main_window.cpp" line="866"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="554"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="566"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>

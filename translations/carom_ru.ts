@@ -572,113 +572,128 @@
 <context>
     <name>carom::ui::AccuracyWindow</name>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="122"/>
+        <location filename="../ui/accuracy_window.cpp" line="135"/>
         <source>Speed vs accuracy</source>
         <translation>Скорость и точность</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="124"/>
+        <location filename="../ui/accuracy_window.cpp" line="137"/>
         <source>Position error against exact at the horizon (m)</source>
         <translation>Ошибка положения относительно exact на горизонте (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="125"/>
+        <location filename="../ui/accuracy_window.cpp" line="138"/>
         <source>Relative energy drift</source>
         <translation>Относительный дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="126"/>
+        <location filename="../ui/accuracy_window.cpp" line="139"/>
         <source>Deepest penetration (m)</source>
         <translation>Максимальная глубина проникновения (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="127"/>
+        <location filename="../ui/accuracy_window.cpp" line="140"/>
         <source>Escaped balls</source>
         <translation>Вылетевшие шары</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="128"/>
+        <location filename="../ui/accuracy_window.cpp" line="141"/>
         <source>Speed distribution against exact (KS distance)</source>
         <translation>Распределение скоростей относительно exact (расстояние КС)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="129"/>
+        <location filename="../ui/accuracy_window.cpp" line="142"/>
         <source>Position distribution against exact (KS distance)</source>
         <translation>Распределение положений относительно exact (расстояние КС)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="131"/>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="143"/>
+        <source>Energy error per simulated second (auto&apos;s measure)</source>
+        <translation>Ошибка энергии за секунду моделирования (мера auto)</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="145"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Computing time (s)</source>
         <translation>Время вычислений (s)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="146"/>
+        <source>Tolerance</source>
+        <translation>Допуск</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="147"/>
+        <source>Cheapest within the tolerance</source>
+        <translation>Самый дешёвый в пределах допуска</translation>
+    </message>
+    <message>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Run</source>
         <translation>Прогон</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Position error at horizon (m)</source>
         <translation>Ошибка положения на горизонте (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="138"/>
+        <location filename="../ui/accuracy_window.cpp" line="154"/>
         <source>Each point is one run of the current scene; lower and further left is better. Choose a run to use its settings. Paths part from exact ones with time, whatever the method: position error is taken at the horizon up to which the finest setting agrees with exact, and whole runs are judged by energy, penetration, escapes and distributions.</source>
         <translation>Каждая точка — один прогон текущей сцены; чем ниже и левее, тем лучше. Выберите прогон, чтобы применить его настройки. Траектории со временем расходятся с точными при любом методе: ошибка положения берётся на горизонте, до которого самая точная настройка совпадает с exact, а прогоны целиком оцениваются по энергии, проникновению, вылетам и распределениям.</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="285"/>
+        <location filename="../ui/accuracy_window.cpp" line="342"/>
         <source>Each run: %1 s simulated</source>
         <translation>Каждый прогон: %1 s моделирования</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="289"/>
+        <location filename="../ui/accuracy_window.cpp" line="346"/>
         <source>%1; the finest setting agrees with exact up to %2 s</source>
         <translation>%1; самая точная настройка совпадает с exact до %2 s</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="292"/>
+        <location filename="../ui/accuracy_window.cpp" line="349"/>
         <source>%1; even the finest setting parts from exact at once: no position error</source>
         <translation>%1; даже самая точная настройка сразу расходится с exact: ошибки положения нет</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="133"/>
+        <location filename="../ui/accuracy_window.cpp" line="149"/>
         <source>Energy drift</source>
         <translation>Дрейф энергии</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Escaped</source>
         <translation>Вылетело</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Penetration (m)</source>
         <translation>Проникновение (m)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Speeds (KS)</source>
         <translation>Скорости (КС)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="134"/>
+        <location filename="../ui/accuracy_window.cpp" line="150"/>
         <source>Positions (KS)</source>
         <translation>Положения (КС)</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="135"/>
+        <location filename="../ui/accuracy_window.cpp" line="151"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="136"/>
+        <location filename="../ui/accuracy_window.cpp" line="152"/>
         <source>Apply Selected Settings</source>
         <translation>Применить выбранные настройки</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="218"/>
+        <location filename="../ui/accuracy_window.cpp" line="234"/>
         <source>%Ln runs</source>
         <translation>
             <numerusform>%Ln прогон</numerusform>
@@ -687,12 +702,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="224"/>
+        <location filename="../ui/accuracy_window.cpp" line="240"/>
         <source>Cancelled after %1 in %2 s.</source>
         <translation>Прервано после %1 за %2 с.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/accuracy_window.cpp" line="227"/>
+        <location filename="../ui/accuracy_window.cpp" line="243"/>
         <source>%Ln threads</source>
         <translation>
             <numerusform>%Ln поток</numerusform>
@@ -701,19 +716,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="233"/>
+        <location filename="../ui/accuracy_window.cpp" line="249"/>
         <source>%1 in %2 s on %3, no faster than one after another</source>
         <translation>%1 за %2 с на %3, не быстрее, чем по очереди</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="236"/>
+        <location filename="../ui/accuracy_window.cpp" line="252"/>
         <source>%1 in %2 s on %3, %4× faster than one after another</source>
         <translation>%1 за %2 с на %3, в %4 раза быстрее, чем по очереди</translation>
     </message>
     <message>
-        <location filename="../ui/accuracy_window.cpp" line="123"/>
+        <location filename="../ui/accuracy_window.cpp" line="136"/>
         <source>Error:</source>
         <translation>Ошибка:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::AutoMethod</name>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="23"/>
+        <source>%1 (%2, step %3 s)</source>
+        <translation>%1 (%2, шаг %3 s)</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="89"/>
+        <source>Auto: no setting meets an energy error of %1 per second; the closest is %2. The settings are kept.</source>
+        <translation>Auto: ни одна настройка не даёт ошибку энергии %1 в секунду; ближе всех %2. Настройки оставлены.</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="98"/>
+        <source>Choose Method Automatically</source>
+        <translation>Выбрать метод автоматически</translation>
+    </message>
+    <message>
+        <location filename="../ui/auto_method.cpp" line="103"/>
+        <source>Auto chose %1: the cheapest setting with an energy error under %2 per second (%3 s of computing per simulated second; pilot %4 s)</source>
+        <translation>Auto выбрал %1: самая дешёвая настройка с ошибкой энергии меньше %2 в секунду (%3 s вычислений на секунду моделирования; пробный прогон %4 s)</translation>
     </message>
 </context>
 <context>
@@ -1345,400 +1383,416 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="532"/>
+        <location filename="../ui/main_window.cpp" line="565"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="509"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="197"/>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="198"/>
+        <location filename="../ui/main_window.cpp" line="508"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="510"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="511"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="512"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="513"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="561"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="560"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
+        <location filename="../ui/main_window.cpp" line="563"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="531"/>
+        <location filename="../ui/main_window.cpp" line="564"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="514"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="515"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="525"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="527"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="502"/>
+        <location filename="../ui/main_window.cpp" line="528"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="530"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="533"/>
         <source>Gravity %1</source>
         <translation>Гравитация %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="534"/>
         <source>Gravity %1 (m/s²)</source>
         <translation>Гравитация %1 (m/s²)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="292"/>
+        <location filename="../ui/main_window.cpp" line="293"/>
         <source>Change Gravity</source>
         <translation>Изменить гравитацию</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="536"/>
         <source>Step</source>
         <translation>Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="537"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="538"/>
         <source>Time step in seconds (+ and - keys)</source>
         <translation>Шаг по времени в секундах (клавиши + и -)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="303"/>
+        <location filename="../ui/main_window.cpp" line="304"/>
         <source>Change Time Step</source>
         <translation>Изменить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
-        <source>Exact (event-driven), swept, or discrete steps</source>
-        <translation>exact (по событиям), swept или discrete (фиксированные шаги)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="310"/>
+        <location filename="../ui/main_window.cpp" line="322"/>
         <source>Change Method</source>
         <translation>Изменить метод</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="547"/>
         <source>Integrator of the swept and discrete methods</source>
         <translation>Интегратор для методов swept и discrete</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="317"/>
+        <location filename="../ui/main_window.cpp" line="343"/>
         <source>Change Integrator</source>
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="507"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="516"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="625"/>
+        <location filename="../ui/main_window.cpp" line="663"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="651"/>
+        <location filename="../ui/main_window.cpp" line="690"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="476"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="314"/>
+        <source>Auto: piloting the scene under 13 settings…</source>
+        <translation>Auto: пробный прогон сцены с 13 настройками…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <source>Export &amp;Image…</source>
         <translation>Экспорт &amp;изображения…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="479"/>
         <source>Export &amp;Video…</source>
         <translation>Экспорт ви&amp;део…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="517"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="518"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="529"/>
         <source>World</source>
         <translation>Мир</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="536"/>
+        <location filename="../ui/main_window.cpp" line="540"/>
+        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
+        <translation>Точный (по событиям), заметающие или дискретные шаги; auto: самый дешёвый из дающих нужную точность, по короткому пробному прогону</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="542"/>
+        <location filename="../ui/main_window.cpp" line="543"/>
+        <source>Accuracy</source>
+        <translation>Точность</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="545"/>
+        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
+        <translation>Допуск auto: относительная ошибка энергии за секунду моделирования (и проникновение не более 5% радиуса)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="569"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
+        <location filename="../ui/main_window.cpp" line="570"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="538"/>
+        <location filename="../ui/main_window.cpp" line="571"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="539"/>
+        <location filename="../ui/main_window.cpp" line="572"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="739"/>
+        <location filename="../ui/main_window.cpp" line="778"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="519"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="520"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="522"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="827"/>
+        <location filename="../ui/main_window.cpp" line="866"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="521"/>
+        <location filename="../ui/main_window.cpp" line="554"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
+        <location filename="../ui/main_window.cpp" line="559"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
+        <location filename="../ui/main_window.cpp" line="566"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>

@@ -6,6 +6,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineSeries>
 #include <QLocale>
 #include <QLogValueAxis>
 #include <QProgressBar>
@@ -45,7 +46,7 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   connect(runner_.get(), &AccuracyStudyRunner::finished, this, &AccuracyWindow::finish);
   metricLabel_ = new QLabel;
   metric_ = new QComboBox;
-  metric_->addItems(QStringList(6));  // named by retranslate()
+  metric_->addItems(QStringList(7));  // named by retranslate()
   connect(metric_, &QComboBox::currentIndexChanged, this, &AccuracyWindow::replot);
 
   chart_ = new QChart;
@@ -68,6 +69,18 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
             [this, method](const QPointF& point) { selectNearest(method, point); });
     series_.push_back(series);
   }
+  toleranceLine_ = new QLineSeries;
+  toleranceLine_->setPen(QPen(Qt::darkRed, 1.5, Qt::DashLine));
+  chart_->addSeries(toleranceLine_);
+  toleranceLine_->attachAxis(timeAxis_);
+  toleranceLine_->attachAxis(errorAxis_);
+  cheapestMarker_ = new QScatterSeries;
+  cheapestMarker_->setMarkerSize(20);
+  cheapestMarker_->setBrush(Qt::NoBrush);
+  cheapestMarker_->setPen(QPen(Qt::darkRed, 2.0));
+  chart_->addSeries(cheapestMarker_);
+  cheapestMarker_->attachAxis(timeAxis_);
+  cheapestMarker_->attachAxis(errorAxis_);
   auto* chartView = new QChartView(chart_);
   chartView->setRenderHint(QPainter::Antialiasing);
   chartView->setMinimumSize(520, 360);
@@ -126,9 +139,12 @@ void AccuracyWindow::retranslate() {
                             tr("Deepest penetration (m)"),
                             tr("Escaped balls"),
                             tr("Speed distribution against exact (KS distance)"),
-                            tr("Position distribution against exact (KS distance)")};
+                            tr("Position distribution against exact (KS distance)"),
+                            tr("Energy error per simulated second (auto's measure)")};
   for (int i = 0; i < metrics.size(); ++i) metric_->setItemText(i, metrics[i]);
   timeAxis_->setTitleText(tr("Computing time (s)"));
+  toleranceLine_->setName(tr("Tolerance"));
+  cheapestMarker_->setName(tr("Cheapest within the tolerance"));
   table_->setHorizontalHeaderLabels(
       {tr("Run"), tr("Computing time (s)"), tr("Position error at horizon (m)"), tr("Energy drift"),
        tr("Penetration (m)"), tr("Escaped"), tr("Speeds (KS)"), tr("Positions (KS)")});
@@ -249,6 +265,8 @@ double AccuracyWindow::errorOf(const StudyResult& result) const {
       return result.speedDistribution;
     case 5:
       return result.positionDistribution;
+    case 6:
+      return result.energyErrorPerSecond;
     default:
       return result.positionError;
   }
@@ -270,6 +288,28 @@ void AccuracyWindow::replot() {
     }
     series_[m]->replace(points);
   }
+  // The tolerance where it bounds the metric shown: auto's energy measure, and penetration (as
+  // a depth, the fraction of the smallest radius).
+  std::optional<double> bound;
+  if (metric_->currentIndex() == 6) bound = tolerance_.energyPerSecond;
+  if (metric_->currentIndex() == 2 && !scene_.balls.empty()) {
+    double smallest = scene_.balls.front().radius;
+    for (const Ball& ball : scene_.balls) smallest = std::min(smallest, ball.radius);
+    bound = tolerance_.penetrationFraction * smallest;
+  }
+  QList<QPointF> line;
+  if (bound && highTime > 0) {
+    line = {{lowTime / 2, *bound}, {highTime * 2, *bound}};
+    lowError = std::min(lowError, *bound);
+    highError = std::max(highError, *bound);
+  }
+  toleranceLine_->replace(line);
+  QList<QPointF> cheapest;
+  if (const std::optional<std::size_t> best = cheapestWithinTolerance();
+      best && !std::isnan(errorOf(results_[*best])))
+    cheapest.append({std::max(results_[*best].computeSeconds, 1e-7),
+                     std::max(errorOf(results_[*best]), kErrorFloor)});
+  cheapestMarker_->replace(cheapest);
   errorAxis_->setTitleText(metric_->currentText());
   if (highTime > 0) {
     timeAxis_->setRange(lowTime / 2, highTime * 2);
@@ -278,6 +318,23 @@ void AccuracyWindow::replot() {
     const double decades = std::log10(highError * 10 / (lowError / 10));
     errorAxis_->setBase(std::pow(10.0, std::max(1.0, std::ceil(decades / 6.0))));
   }
+}
+
+void AccuracyWindow::setTolerance(const AccuracyTolerance& tolerance) {
+  if (!validateTolerance(tolerance).empty()) return;
+  tolerance_ = tolerance;
+  replot();
+}
+
+std::optional<std::size_t> AccuracyWindow::cheapestWithinTolerance() const {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < results_.size(); ++i) {
+    const StudyResult& r = results_[i];
+    if (!meetsTolerance(r.energyErrorPerSecond, r.penetrationFraction, r.escaped, tolerance_))
+      continue;
+    if (!best || r.computeSeconds < results_[*best].computeSeconds) best = i;
+  }
+  return best;
 }
 
 void AccuracyWindow::showDuration() {

@@ -4,6 +4,7 @@
 // computing time. Choosing a run applies its settings to the sandbox.
 
 #include "sim/accuracy_study.h"
+#include "sim/method_choice.h"
 #include "ui/accuracy_study_runner.h"
 
 #include <QDialog>
@@ -13,6 +14,7 @@
 #include <vector>
 
 class QChart;
+class QLineSeries;
 class QLogValueAxis;
 class QScatterSeries;
 class QComboBox;
@@ -34,6 +36,10 @@ class AccuracyWindow : public QDialog {
     duration_ = seconds;
     showDuration();
   }
+  // The accuracy the plots draw, and the cheapest run that meets it; auto's default unless set.
+  void setTolerance(const AccuracyTolerance& tolerance);
+  // The cheapest finished run that meets the tolerance, an index into results().
+  std::optional<std::size_t> cheapestWithinTolerance() const;
   void start();
   void cancel();
   bool isRunning() const { return runner_->isRunning(); }
@@ -73,6 +79,9 @@ class AccuracyWindow : public QDialog {
   QLogValueAxis* timeAxis_;
   QLogValueAxis* errorAxis_;
   std::vector<QScatterSeries*> series_;  // one per method, in Method order
+  AccuracyTolerance tolerance_;
+  QLineSeries* toleranceLine_;      // on the metrics the tolerance bounds
+  QScatterSeries* cheapestMarker_;  // ringing the cheapest run within the tolerance
   QTableWidget* table_;
   QProgressBar* progress_;
   QPushButton* cancelButton_;

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/accuracy_window.h"
+#include "ui/auto_method.h"
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
@@ -305,11 +306,36 @@ void MainWindow::buildToolBar() {
   worldBar_->addWidget(timeStep_);
 
   method_ = new QComboBox;
+  method_->setObjectName("worldMethod");
   for (std::string_view name : methodNames()) method_->addItem(QString::fromUtf8(name));
+  method_->addItem(QStringLiteral("auto"));  // a key like the methods' names, not translated
+  autoMethod_ = new AutoMethod(document_, this);
+  connect(autoMethod_, &AutoMethod::choosingStarted, this,
+          [this] { showMessage(tr("Auto: piloting the scene under 13 settings…")); });
+  connect(autoMethod_, &AutoMethod::finished, this, &MainWindow::showMessage);
   connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
+    const bool automatic = index == int(methodNames().size());
+    accuracyLabelAction_->setVisible(automatic);
+    accuracyBoxAction_->setVisible(automatic);
+    autoMethod_->setActive(automatic);
+    if (!automatic)
+      editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
   });
   worldBar_->addWidget(method_);
+  accuracyLabel_ = new QLabel;
+  accuracyLabelAction_ = worldBar_->addWidget(accuracyLabel_);
+  accuracy_ = new NumberBox(QString(), 1e-30, 10.0, 1e-3);
+  accuracy_->setObjectName("accuracy");
+  accuracy_->setValue(autoMethod_->tolerance().energyPerSecond);
+  connect(accuracy_, &NumberBox::refused, this, &MainWindow::showMessage);
+  connect(accuracy_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+    AccuracyTolerance tolerance = autoMethod_->tolerance();
+    tolerance.energyPerSecond = value;
+    autoMethod_->setTolerance(tolerance);
+  });
+  accuracyBoxAction_ = worldBar_->addWidget(accuracy_);
+  accuracyLabelAction_->setVisible(false);
+  accuracyBoxAction_->setVisible(false);
 
   integrator_ = new QComboBox;
   for (std::string_view name : integratorNames()) integrator_->addItem(QString::fromUtf8(name));
@@ -510,10 +536,17 @@ void MainWindow::retranslate() {
   timeStepLabel_->setText(tr("Step"));
   timeStep_->setName(tr("Time step"));
   timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
-  method_->setToolTip(tr("Exact (event-driven), swept, or discrete steps"));
+  method_->setToolTip(
+      tr("Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the "
+         "accuracy, found by a short pilot"));
+  accuracyLabel_->setText(tr("Accuracy"));
+  accuracy_->setName(tr("Accuracy"));
+  accuracy_->setToolTip(
+      tr("Auto's tolerance: the relative energy error per simulated second (and a penetration of "
+         "at most 5% of the radius)"));
   integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
   // The boxes show their values in the language's number format.
-  for (NumberBox* box : {speed_, gravity_[0], gravity_[1], gravity_[2], timeStep_}) {
+  for (NumberBox* box : {speed_, gravity_[0], gravity_[1], gravity_[2], timeStep_, accuracy_}) {
     const QSignalBlocker blocker(box);
     box->setValue(box->value());
   }
@@ -554,7 +587,12 @@ void MainWindow::showWorld() {
                                      QSignalBlocker(method_),     QSignalBlocker(integrator_)};
   for (int a = 0; a < 3; ++a) gravity_[a]->setValue(world.gravity[a]);
   timeStep_->setValue(world.timeStep);
-  method_->setCurrentIndex(int(world.method));
+  // Under auto the world holds what auto chose; the box says auto, and what that is.
+  const int automatic = int(methodNames().size());
+  const std::string_view name = methodName(world.method);
+  method_->setItemText(automatic,
+                       QString("auto (%1)").arg(QString::fromUtf8(name.data(), name.size())));
+  method_->setCurrentIndex(autoMethod_->active() ? automatic : int(world.method));
   integrator_->setCurrentIndex(int(world.integrator));
 }
 
@@ -640,6 +678,7 @@ AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
   auto* window = new AccuracyWindow(document_->scene(), this);
   window->setAttribute(Qt::WA_DeleteOnClose);
   window->setDuration(duration);
+  window->setTolerance(autoMethod_->tolerance());  // the accuracy auto aims at
   connect(window, &AccuracyWindow::settingsChosen, this, &MainWindow::applySettings);
   window->show();
   window->start();

@@ -29,6 +29,8 @@ class SceneRecovery;
 }  // namespace carom::editor
 namespace carom::ui {
 
+class AutoMethod;
+
 class AccuracyWindow;
 class BallStoryDock;
 class ImageExport;
@@ -208,7 +210,12 @@ class MainWindow : public QMainWindow {
   NumberBox* speed_ = nullptr;
   NumberBox* gravity_[3] = {};
   NumberBox* timeStep_ = nullptr;
-  QComboBox* method_ = nullptr;
+  QComboBox* method_ = nullptr;  // the methods, then "auto"
+  QLabel* accuracyLabel_ = nullptr;
+  NumberBox* accuracy_ = nullptr;  // auto's energy error per simulated second
+  QAction* accuracyLabelAction_ = nullptr;
+  QAction* accuracyBoxAction_ = nullptr;
+  AutoMethod* autoMethod_ = nullptr;
   QComboBox* integrator_ = nullptr;
   StatusReadout* status_ = nullptr;
   TimelineBar* timeline_ = nullptr;

@@ -1,0 +1,110 @@
+#include "ui/auto_method.h"
+
+#include "ui/call_queue.h"
+#include "ui/editor/scene_document.h"
+#include "ui/thread_handover.h"
+
+#include <QLocale>
+
+namespace carom::ui {
+namespace {
+
+// QThreadPool hands its task over under a lock ThreadSanitizer cannot see (see
+// accuracy_study_runner.cpp): the task takes over on this mark first.
+char pilotHandOver;
+
+QString text(std::string_view name) {
+  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+QString settingsText(const StudyCase& settings) {
+  const QString method = text(methodName(settings.method));
+  if (settings.method == Method::Exact) return method;
+  return AutoMethod::tr("%1 (%2, step %3 s)")
+      .arg(method, text(integratorName(settings.integrator)),
+           QLocale().toString(settings.timeStep, 'g', 4));
+}
+
+}  // namespace
+
+struct AutoMethod::Pilot {
+  Scene scene;
+  AccuracyTolerance tolerance;
+  MethodChoice choice;  // written by the task before it posts
+  std::atomic<bool> cancel{false};
+};
+
+AutoMethod::AutoMethod(editor::SceneDocument* document, QObject* parent)
+    : QObject(parent), document_(document), calls_(new CallQueue(this)) {
+  pool_.setMaxThreadCount(1);
+}
+
+AutoMethod::~AutoMethod() {
+  if (running_) running_->cancel = true;
+  pool_.waitForDone();
+}
+
+void AutoMethod::setActive(bool on) {
+  if (on == active_) return;
+  active_ = on;
+  if (on) {
+    pilot();
+  } else if (running_) {
+    running_->cancel = true;
+    running_.reset();
+  }
+}
+
+void AutoMethod::setTolerance(const AccuracyTolerance& tolerance) {
+  if (!validateTolerance(tolerance).empty()) return;
+  tolerance_ = tolerance;
+  if (active_) pilot();
+}
+
+void AutoMethod::pilot() {
+  if (running_) running_->cancel = true;  // its result would be stale
+  auto pilot = std::make_shared<Pilot>();
+  pilot->scene = document_->scene();
+  pilot->tolerance = tolerance_;
+  running_ = pilot;
+  emit choosingStarted();
+  handOver(&pilotHandOver);
+  pool_.start([this, pilot] {
+    takeOver(&pilotHandOver);
+    pilot->choice =
+        chooseMethod(pilot->scene, kPlannedRunSeconds, pilot->tolerance, &pilot->cancel);
+    calls_->post([this, pilot] { apply(pilot); });
+  });
+}
+
+void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
+  if (pilot != running_) return;  // cancelled or overtaken
+  running_.reset();
+  const MethodChoice& choice = pilot->choice;
+  if (choice.cancelled || choice.candidates.empty()) return;
+  const QLocale locale;
+  const QString tolerance = locale.toString(pilot->tolerance.energyPerSecond, 'g', 3);
+  const PilotMeasure& pick = choice.pick();
+  if (!choice.chosen) {
+    emit finished(tr("Auto: no setting meets an energy error of %1 per second; the closest is "
+                     "%2. The settings are kept.")
+                      .arg(tolerance, settingsText(pick.settings)));
+    return;
+  }
+  World world = document_->scene().world;
+  world.method = pick.settings.method;
+  world.integrator = pick.settings.integrator;
+  world.timeStep = pick.settings.timeStep;
+  const QString error = document_->editWorld(world, tr("Choose Method Automatically"));
+  if (!error.isEmpty()) {
+    emit finished(error);
+    return;
+  }
+  emit finished(tr("Auto chose %1: the cheapest setting with an energy error under %2 per "
+                   "second (%3 s of computing per simulated second; pilot %4 s)")
+                    .arg(settingsText(pick.settings), tolerance,
+                         locale.toString(pick.costPerSecond, 'g', 2),
+                         locale.toString(choice.pilotSeconds, 'g', 2)));
+}
+
+}  // namespace carom::ui
