@@ -266,18 +266,27 @@ void TestLanguage::toolbarFitsAtTheDefaultWidth() {
   QTRY_COMPARE(window_->width(), 1280);
   const QList<QToolBar*> bars = window_->findChildren<QToolBar*>();
   QCOMPARE(bars.size(), 3);
-  for (QToolBar* bar : bars) {
-    QVERIFY(bar->isVisible());
-    for (QAction* action : bar->actions()) {
-      if (action->isSeparator()) continue;
-      QWidget* widget = bar->widgetForAction(action);
-      QVERIFY(widget);
-      QVERIFY2(widget->isVisible() && bar->rect().contains(widget->geometry()),
-               qPrintable(bar->objectName() + ": " + action->text()));
+  // As the window opens, and with method auto and its accuracy field shown.
+  auto* method = window_->findChild<QComboBox*>("worldMethod");
+  QVERIFY(method);
+  for (const bool automatic : {false, true}) {
+    if (automatic) {
+      method->setCurrentIndex(method->count() - 1);
+      QTRY_VERIFY(window_->findChild<QWidget*>("accuracy")->isVisible());
     }
-    // Qt's "»" button, shown only when something does not fit.
-    for (QWidget* child : bar->findChildren<QWidget*>("qt_toolbar_ext_button"))
-      QVERIFY2(!child->isVisible(), qPrintable(bar->objectName()));
+    for (QToolBar* bar : bars) {
+      QVERIFY(bar->isVisible());
+      for (QAction* action : bar->actions()) {
+        if (action->isSeparator() || !action->isVisible()) continue;  // hidden on purpose
+        QWidget* widget = bar->widgetForAction(action);
+        QVERIFY(widget);
+        QTRY_VERIFY2(widget->isVisible() && bar->rect().contains(widget->geometry()),
+                     qPrintable(bar->objectName() + ": " + action->text()));
+      }
+      // Qt's "»" button, shown only when something does not fit.
+      for (QWidget* child : bar->findChildren<QWidget*>("qt_toolbar_ext_button"))
+        QVERIFY2(!child->isVisible(), qPrintable(bar->objectName()));
+    }
   }
   QVERIFY2(
       window_->view()->width() > 900 && window_->view()->height() > 450,
