@@ -143,7 +143,7 @@ class DiscreteStepper final : public Stepper {
     touched_.clear();
     pushedTwice_.clear();
     for (int i = 0; i < n; ++i) resolveStatics(i, time, stats, log);
-    bins_.build(positions_, 2.0 * bodies_.maxRadius);
+    bins_.build(positions_, bodies_.radius, 0.0);
     bins_.forEachCandidatePair([&](int i, int j) { resolvePair(i, j, time, stats, log); });
     // A push out of one overlap can make another (a column of balls on a floor: the pair above
     // pushes the bottom ball back into the floor, and a single pass a step let the column sink

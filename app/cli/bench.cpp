@@ -14,7 +14,7 @@ namespace {
 
 // The gases fill a box of six planes; the Galton board (makeGaltonBoard) pours its balls through
 // a funnel and pegs into bins, inelastic.
-enum class BenchScene { Gas, GravityGas, GaltonBoard };
+enum class BenchScene { Gas, GravityGas, GaltonBoard, MixedSizes };
 
 QString sceneName(BenchScene scene) {
   switch (scene) {
@@ -24,6 +24,8 @@ QString sceneName(BenchScene scene) {
       return "gravity-gas";
     case BenchScene::GaltonBoard:
       return "galton";
+    case BenchScene::MixedSizes:
+      return "mixed";
   }
   return {};
 }
@@ -58,6 +60,24 @@ Scene gravityGas(int balls) {
   return scene;
 }
 
+// Issue 15's cannonballs among marbles: a gas of 1 cm balls (as the plain gas, scaled) with four
+// balls of 10 m rolling in from above, in a box that holds them all. One grid sized by the large
+// balls put every small ball in one of a few cells.
+Scene mixedSizes(int balls) {
+  Scene scene = makeGasInBox(balls, kPackingFraction, Vec3::Zero(), 2007, 0.01);
+  scene.planes.clear();
+  addBoxWalls(scene, 60.0);
+  for (int k = 0; k < 4; ++k) {
+    Ball cannonball;
+    cannonball.radius = 10.0;
+    cannonball.mass = 1e6;
+    cannonball.position = Vec3(-45.0 + 30.0 * k, 40.0, 0.0);
+    cannonball.velocity = Vec3(0.0, -1.0, 0.0);
+    scene.balls.push_back(cannonball);
+  }
+  return scene;
+}
+
 Scene makeScene(const BenchCase& bench) {
   switch (bench.scene) {
     case BenchScene::Gas:
@@ -66,6 +86,8 @@ Scene makeScene(const BenchCase& bench) {
       return gravityGas(bench.balls);
     case BenchScene::GaltonBoard:
       return makeGaltonBoard(bench.balls, 2007);
+    case BenchScene::MixedSizes:
+      return mixedSizes(bench.balls);
   }
   return {};
 }
@@ -117,6 +139,9 @@ int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err) {
   const int stepBalls = quick ? 1000 : 10000;
   cases.push_back({Method::Swept, stepBalls, BenchScene::Gas, 0, quick ? 20 : 200, 0.0});
   cases.push_back({Method::Discrete, stepBalls, BenchScene::Gas, 0, quick ? 50 : 1000, 0.0});
+  // Mixed sizes under discrete: a grid per size class (sim/broad_phase.h).
+  cases.push_back(
+      {Method::Discrete, quick ? 2000 : 20000, BenchScene::MixedSizes, 0, quick ? 20 : 60, 0.0});
   cases.push_back(
       {Method::Exact, quick ? 200 : 1000, BenchScene::GravityGas, 0, 0, quick ? 1.0 : 10.0});
   // The Galton board against a gas of as many balls under gravity, and its cost per collision
