@@ -6,6 +6,8 @@
 
 #include <QLocale>
 
+#include <functional>
+
 namespace carom::ui {
 namespace {
 
@@ -68,13 +70,16 @@ void AutoMethod::pilot() {
   pilot->tolerance = tolerance_;
   running_ = pilot;
   emit choosingStarted();
-  handOver(&pilotHandOver);
-  pool_.start([this, pilot] {
+  // The task and its captures are made before the hand-over mark: the pool's thread outlives a
+  // task, and the next one it runs reads captures written after the mark it took over.
+  std::function<void()> task = [this, pilot] {
     takeOver(&pilotHandOver);
     pilot->choice =
         chooseMethod(pilot->scene, kPlannedRunSeconds, pilot->tolerance, &pilot->cancel);
     calls_->post([this, pilot] { apply(pilot); });
-  });
+  };
+  handOver(&pilotHandOver);
+  pool_.start(std::move(task));
 }
 
 void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
