@@ -85,6 +85,11 @@ void AutoMethod::pilot() {
 void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
   if (pilot != running_) return;  // cancelled or overtaken
   running_.reset();
+  // The scene changed while the pilot ran (another file, an edit): its choice was for another.
+  if (!(document_->scene() == pilot->scene)) {
+    this->pilot();
+    return;
+  }
   const MethodChoice& choice = pilot->choice;
   if (choice.cancelled || choice.candidates.empty()) return;
   const QLocale locale;
