@@ -45,8 +45,10 @@ class TestMethodChoice : public QObject {
     QVERIFY(choice.pick().meets);
     QCOMPARE(choice.candidates.size(), std::size_t(13));
     for (const carom::PilotMeasure& m : choice.candidates) QVERIFY(!m.verdict.empty());
-    QVERIFY(choice.pilotSeconds <=
-            2.0 * carom::kPilotShare * choice.expectedRunSeconds() + carom::kPilotFloorSeconds);
+    // This run costs milliseconds: the first round (8 steps of every setting) may well take
+    // more than its share (under a sanitizer it does), and then the reason says so.
+    const bool overShare = choice.pilotSeconds > carom::kPilotShare * choice.expectedRunSeconds();
+    QCOMPARE(choice.reason.find("too short for a pilot") != std::string::npos, overShare);
   }
 
   void discreteWinsADenseCrowdAtALooseTolerance() {
