@@ -80,10 +80,13 @@ EnergyYardstick EnergyYardstick::of(const Simulation& sim) {
   return yardstick;
 }
 
-double EnergyYardstick::errorPerSecond(double energy, double time) const {
+double EnergyYardstick::error(double energy) const {
   if (!std::isfinite(energy)) return std::numeric_limits<double>::infinity();
-  const double error = conserved ? std::abs(energy - initial) : std::max(0.0, energy - initial);
-  return time > 0.0 ? error / scale / time : 0.0;
+  return (conserved ? std::abs(energy - initial) : std::max(0.0, energy - initial)) / scale;
+}
+
+double EnergyYardstick::errorPerSecond(double energy, double time) const {
+  return time > 0.0 || !std::isfinite(energy) ? error(energy) / time : 0.0;
 }
 
 double threadCpuSeconds() {

@@ -29,6 +29,7 @@ struct EnergyYardstick {
   double scale = 0.0;
   bool conserved = true;
   static EnergyYardstick of(const Simulation& sim);  // at its start
+  double error(double energy) const;  // on the scale; infinite when energy is not finite
   double errorPerSecond(double energy, double time) const;
 };
 

@@ -664,9 +664,9 @@ class TestCli : public QObject {
   }
 
   void autoWithNoSettingMeetingTheTolerance() {
-    // Below round-off: nothing meets it (the magic room's balls fall and bounce from the start,
-    // so every setting's energy moves by round-off at least). Nothing runs unless the closest is
-    // asked for.
+    // Below round-off: nothing meets it (the largest energy error over the pilot is a round-off
+    // at least for every setting; test_method_choice checks this for pilots of many lengths).
+    // Nothing runs unless the closest is asked for.
     const QStringList arguments{"run",      magicRoom(), "--duration",  "10",
                                 "--method", "auto",      "--tolerance", "1e-30,1e-30"};
     const CliRun refused = runCli(arguments);
