@@ -6,6 +6,7 @@
 #include "sim/tolerances.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -128,22 +129,29 @@ void EventEngine::buildStaticLists() {
   statics_.clear();
   sharedStatics_ = false;
   const double reach = bodies_.maxRadius * (1.0 + 1e-9);
+  // The cells' faces along each axis, computed once: a million balls make some ten million
+  // cells, each tested against every unbounded shape.
+  std::array<std::vector<double>, 3> lowerFaces, upperFaces;
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < grid_.counts()[a]; ++i) {
+      lowerFaces[a].push_back(grid_.lowerFace(a, i));
+      upperFaces[a].push_back(grid_.upperFace(a, i));
+    }
   // What a cell's test needs of it.
   struct CellBox {
-    Vec3 lo, hi, centre;
-    double sphere;  // its bounding sphere grown by the reach
+    Vec3 lo, hi;
     bool border;
+    Vec3 centre() const { return 0.5 * (lo + hi); }
+    // Its bounding sphere's radius, grown by the reach.
+    double sphere(double reach) const { return 0.5 * (hi - lo).norm() + reach; }
   };
-  const auto cellBox = [&](int cell) {
-    const CellGrid::Coords c = grid_.coords(cell);
+  const auto cellBox = [&](const CellGrid::Coords& c) {
     CellBox box;
     box.border = grid_.isBorder(c);
     for (int a = 0; a < 3; ++a) {
-      box.lo[a] = grid_.lowerFace(a, c[a]);
-      box.hi[a] = grid_.upperFace(a, c[a]);
+      box.lo[a] = lowerFaces[a][c[a]];
+      box.hi[a] = upperFaces[a][c[a]];
     }
-    box.centre = 0.5 * (box.lo + box.hi);
-    box.sphere = 0.5 * (box.hi - box.lo).norm() + reach;
     return box;
   };
   const auto planeNear = [&](const PlaneShape& plane, const CellBox& box) {
@@ -161,55 +169,59 @@ void EventEngine::buildStaticLists() {
     const Vec3 low = shapeCentre - shapeReach - Vec3::Constant(reach);
     const Vec3 high = shapeCentre + shapeReach + Vec3::Constant(reach);
     if ((high.array() < box.lo.array()).any() || (low.array() > box.hi.array()).any()) return false;
-    return box.border || gapToCentre(box.centre) <= box.sphere;
+    return box.border || gapToCentre(box.centre()) <= box.sphere(reach);
   };
   // Round shapes are near when they come within the cell's bounding sphere; border cells reach
   // out to infinity and see every infinite cylinder.
   const auto cylinderNear = [&](const CylinderShape& cylinder, const CellBox& box) {
     const auto gap = [&](const Vec3& at) { return cylinder.contact(at, 0.0).gap; };
     return cylinder.capped() ? finiteNear(cylinder.point, cylinder.reach(), box, gap)
-                             : box.border || gap(box.centre) <= box.sphere;
+                             : box.border || gap(box.centre()) <= box.sphere(reach);
   };
   const auto boxNear = [&](const BoxShape& shape, const CellBox& box) {
     return finiteNear(shape.center, shape.reach(), box,
                       [&](const Vec3& at) { return shape.contact(at, 0.0).gap; });
   };
-  // Every cell whose test could pass: all of them for unbounded shapes; for a finite one only
-  // those its grown bounding box covers, give or take a cell for rounding, so that a board of
-  // millions of cells and hundreds of pegs is not every cell against every peg.
+  // Every cell whose test could pass, as f(cell, its box): all of them for unbounded shapes;
+  // for a finite one only those its grown bounding box covers, give or take a cell for
+  // rounding, so that a board of millions of cells and hundreds of pegs is not every cell
+  // against every peg.
   const auto forEachCandidate = [&](const Vec3* centre, const Vec3& shapeReach, auto&& f) {
-    if (!centre) {
-      for (int cell = 0; cell < cells; ++cell) f(cell);
-      return;
-    }
-    const Vec3 grown = shapeReach + Vec3::Constant(reach);
-    CellGrid::Coords from = grid_.coordsOf(*centre - grown), to = grid_.coordsOf(*centre + grown);
-    for (int a = 0; a < 3; ++a) {
-      from[a] = std::max(from[a] - 1, 0);
-      to[a] = std::min(to[a] + 1, grid_.counts()[a] - 1);
+    CellGrid::Coords from{0, 0, 0}, to = grid_.counts();
+    for (int a = 0; a < 3; ++a) --to[a];
+    if (centre) {
+      const Vec3 grown = shapeReach + Vec3::Constant(reach);
+      from = grid_.coordsOf(*centre - grown);
+      to = grid_.coordsOf(*centre + grown);
+      for (int a = 0; a < 3; ++a) {
+        from[a] = std::max(from[a] - 1, 0);
+        to[a] = std::min(to[a] + 1, grid_.counts()[a] - 1);
+      }
     }
     for (int z = from[2]; z <= to[2]; ++z)
       for (int y = from[1]; y <= to[1]; ++y)
-        for (int x = from[0]; x <= to[0]; ++x) f(grid_.index({x, y, z}));
+        for (int x = from[0]; x <= to[0]; ++x) f(grid_.index({x, y, z}), cellBox({x, y, z}));
   };
   // Visits every (cell, shape) pair that is near, shape by shape in the lists' order (planes,
   // cylinders, boxes), so each cell's list comes out in that order.
   const auto forEachNearPair = [&](auto&& f) {
     for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
-      forEachCandidate(nullptr, Vec3::Zero(), [&](int cell) {
-        if (planeNear(bodies_.planes[k], cellBox(cell))) f(cell, StaticRef{StaticKind::Plane, k});
+      forEachCandidate(nullptr, Vec3::Zero(), [&](int cell, const CellBox& box) {
+        if (planeNear(bodies_.planes[k], box)) f(cell, StaticRef{StaticKind::Plane, k});
       });
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
       const CylinderShape& cylinder = bodies_.cylinders[k];
       const Vec3* centre = cylinder.capped() ? &cylinder.point : nullptr;
-      forEachCandidate(centre, cylinder.capped() ? cylinder.reach() : Vec3::Zero(), [&](int cell) {
-        if (cylinderNear(cylinder, cellBox(cell))) f(cell, StaticRef{StaticKind::Cylinder, k});
-      });
+      forEachCandidate(centre, cylinder.capped() ? cylinder.reach() : Vec3::Zero(),
+                       [&](int cell, const CellBox& box) {
+                         if (cylinderNear(cylinder, box))
+                           f(cell, StaticRef{StaticKind::Cylinder, k});
+                       });
     }
     for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
       const BoxShape& shape = bodies_.boxes[k];
-      forEachCandidate(&shape.center, shape.reach(), [&](int cell) {
-        if (boxNear(shape, cellBox(cell))) f(cell, StaticRef{StaticKind::Box, k});
+      forEachCandidate(&shape.center, shape.reach(), [&](int cell, const CellBox& box) {
+        if (boxNear(shape, box)) f(cell, StaticRef{StaticKind::Box, k});
       });
     }
   };

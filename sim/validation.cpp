@@ -9,10 +9,11 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
+#include <string>
 #include <string_view>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
 namespace carom {
@@ -55,6 +56,7 @@ class ErrorList {
   explicit ErrorList(std::size_t maxErrors) : maxErrors_(maxErrors) {}
 
   bool full() const { return errors_.size() >= maxErrors_; }
+  std::size_t room() const { return full() ? 0 : maxErrors_ - errors_.size(); }
   void add(std::string path, std::string message) {
     if (!full()) errors_.push_back({std::move(path), std::move(message)});
   }
@@ -69,11 +71,15 @@ class ErrorList {
 // rules decide both whether an object can take part in overlap tests and what is reported.
 class FieldChecker {
  public:
-  explicit FieldChecker(ErrorList* errors) : errors_(errors) {}
+  // Fields of `object` (such as "world"), or of entry `index` of list `object` (such as
+  // "balls"); paths are spelled only for a message, since a scene may hold a million balls.
+  FieldChecker(ErrorList* errors, std::string_view object,
+               std::optional<std::size_t> index = std::nullopt)
+      : errors_(errors), object_(object), index_(index) {}
 
   bool ok() const { return ok_; }
 
-  void finiteBounded(const std::string& path, double value) {
+  void finiteBounded(std::string_view path, double value) {
     if (!std::isfinite(value)) return fail(path, "must be finite");
     if (std::abs(value) > tol::kMaxMagnitude)
       fail(path, "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
@@ -81,7 +87,7 @@ class FieldChecker {
   }
 
   // Returns whether the vector passed, so that a direction check can follow.
-  bool vector(const std::string& path, const Vec3& value) {
+  bool vector(std::string_view path, const Vec3& value) {
     for (int i = 0; i < 3; ++i) {
       if (!std::isfinite(value[i])) {
         fail(path, "must be finite");
@@ -98,12 +104,12 @@ class FieldChecker {
     return true;
   }
 
-  void direction(const std::string& path, const Vec3& value) {
+  void direction(std::string_view path, const Vec3& value) {
     if (vector(path, value) && value.norm() <= tol::kMinDirectionLength)
       fail(path, "must not be zero-length");
   }
 
-  void radius(const std::string& path, double value) {
+  void radius(std::string_view path, double value) {
     if (!std::isfinite(value)) return fail(path, "must be finite");
     if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
     if (value < tol::kMinRadius)
@@ -112,7 +118,7 @@ class FieldChecker {
     finiteBounded(path, value);
   }
 
-  void positiveBetween(const std::string& path, double value, double low, double high) {
+  void positiveBetween(std::string_view path, double value, double low, double high) {
     if (!std::isfinite(value)) return fail(path, "must be finite");
     if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
     if (value < low || value > high)
@@ -120,17 +126,17 @@ class FieldChecker {
                      formatNumber(value) + ")");
   }
 
-  void restitution(const std::string& path, const std::optional<double>& value) {
+  void restitution(std::string_view path, const std::optional<double>& value) {
     if (!value) return;
     if (!std::isfinite(*value)) return fail(path, "must be finite");
     if (*value < 0.0 || *value > 1.0)
       fail(path, "must be between 0 and 1 (got " + formatNumber(*value) + ")");
   }
 
-  void info(const std::string& prefix, const ObjectInfo& info) {
-    restitution(prefix + ".restitution", info.restitution);
+  void info(const ObjectInfo& info) {
+    restitution(".restitution", info.restitution);
     if (!isColor(info.color))
-      fail(prefix + ".color", "must be empty or \"#rrggbb\" (got \"" + info.color + "\")");
+      fail(".color", "must be empty or \"#rrggbb\" (got \"" + info.color + "\")");
   }
 
  private:
@@ -142,65 +148,68 @@ class FieldChecker {
     });
   }
 
-  void fail(const std::string& path, std::string message) {
+  // `field` is the path below the object, such as ".position".
+  void fail(std::string_view field, std::string message) {
     ok_ = false;
-    if (errors_) errors_->add(path, std::move(message));
+    if (!errors_) return;
+    std::string path(object_);
+    if (index_) path += "[" + std::to_string(*index_) + "]";
+    errors_->add(path + std::string(field), std::move(message));
   }
 
   ErrorList* errors_;
+  std::string_view object_;
+  std::optional<std::size_t> index_;
   bool ok_ = true;
 };
 
 bool checkPlane(const Plane& plane, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors);
-  const std::string prefix = indexed("planes", index);
-  check.vector(prefix + ".point", plane.point);
-  check.direction(prefix + ".normal", plane.normal);
-  check.info(prefix, plane);
+  FieldChecker check(errors, "planes", index);
+  check.vector(".point", plane.point);
+  check.direction(".normal", plane.normal);
+  check.info(plane);
   return check.ok();
 }
 
 bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors);
-  const std::string prefix = indexed("cylinders", index);
-  check.vector(prefix + ".point", cylinder.point);
-  check.direction(prefix + ".axis", cylinder.axis);
-  check.radius(prefix + ".radius", cylinder.radius);
-  if (cylinder.length) check.radius(prefix + ".length", *cylinder.length);
-  check.info(prefix, cylinder);
+  FieldChecker check(errors, "cylinders", index);
+  check.vector(".point", cylinder.point);
+  check.direction(".axis", cylinder.axis);
+  check.radius(".radius", cylinder.radius);
+  if (cylinder.length) check.radius(".length", *cylinder.length);
+  check.info(cylinder);
   return check.ok();
 }
 
 bool checkBox(const Box& box, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors);
-  const std::string prefix = indexed("boxes", index);
-  check.vector(prefix + ".center", box.center);
-  for (int k = 0; k < 3; ++k)
-    check.radius(prefix + ".halfExtents[" + std::to_string(k) + "]", box.halfExtents[k]);
+  FieldChecker check(errors, "boxes", index);
+  check.vector(".center", box.center);
+  constexpr std::string_view kHalfExtents[] = {".halfExtents[0]", ".halfExtents[1]",
+                                               ".halfExtents[2]"};
+  for (int k = 0; k < 3; ++k) check.radius(kHalfExtents[k], box.halfExtents[k]);
   if (box.rotation) {
-    check.direction(prefix + ".rotation.axis", box.rotation->axis);
-    check.finiteBounded(prefix + ".rotation.degrees", box.rotation->degrees);
+    check.direction(".rotation.axis", box.rotation->axis);
+    check.finiteBounded(".rotation.degrees", box.rotation->degrees);
   }
-  check.info(prefix, box);
+  check.info(box);
   return check.ok();
 }
 
 bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors);
-  const std::string prefix = indexed("balls", index);
-  check.vector(prefix + ".position", ball.position);
-  check.vector(prefix + ".velocity", ball.velocity);
-  check.radius(prefix + ".radius", ball.radius);
-  check.positiveBetween(prefix + ".mass", ball.mass, tol::kMinMass, tol::kMaxMass);
-  check.info(prefix, ball);
+  FieldChecker check(errors, "balls", index);
+  check.vector(".position", ball.position);
+  check.vector(".velocity", ball.velocity);
+  check.radius(".radius", ball.radius);
+  check.positiveBetween(".mass", ball.mass, tol::kMinMass, tol::kMaxMass);
+  check.info(ball);
   return check.ok();
 }
 
 void checkWorld(const World& world, ErrorList& errors) {
-  FieldChecker check(&errors);
-  check.vector("world.gravity", world.gravity);
-  check.positiveBetween("world.timeStep", world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
-  check.restitution("world.restitution", world.restitution);
+  FieldChecker check(&errors, "world");
+  check.vector(".gravity", world.gravity);
+  check.positiveBetween(".timeStep", world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
+  check.restitution(".restitution", world.restitution);
 }
 
 bool checkCount(std::string_view list, std::size_t count, std::size_t limit, ErrorList& errors) {
@@ -248,12 +257,15 @@ class BallOverlapFinder {
     std::size_t later;
     std::size_t earlier;
     double depth;
-    bool operator>(const Overlap& other) const {
-      return later != other.later ? later > other.later : earlier > other.earlier;
+    bool operator>(const Overlap& other) const { return other < *this; }
+    bool operator<(const Overlap& other) const {
+      return later != other.later ? later < other.later : earlier < other.earlier;
     }
   };
 
-  BallOverlapFinder(const std::vector<Ball>& balls, const std::vector<bool>& usable)
+  // Only the `maxReported` first overlaps (by later, then earlier ball) can be reported.
+  BallOverlapFinder(const std::vector<Ball>& balls, const std::vector<bool>& usable,
+                    std::size_t maxReported)
       : balls_(balls), levels_(balls.size(), 0) {
     // Cells are at least 2^-40 of the largest coordinate so that cell indices fit in 64 bits.
     double largest = 0.0;
@@ -280,11 +292,21 @@ class BallOverlapFinder {
         order_.push_back(entries[end].second);
         ++end;
       }
-      cells_.emplace(entries[begin].first, Range{begin, end});
+      cellKeys_.push_back(entries[begin].first);
+      cellRanges_.push_back({begin, end});
       if (usedLevels_.empty() || usedLevels_.back() != entries[begin].first.level)
         usedLevels_.push_back(entries[begin].first.level);
       begin = end;
     }
+    std::size_t slots = 16;
+    while (slots < 2 * cellKeys_.size()) slots *= 2;
+    slots_.assign(slots, 0);
+    for (std::size_t cell = 0; cell < cellKeys_.size(); ++cell) {
+      std::size_t slot = CellHash{}(cellKeys_[cell]) & (slots - 1);
+      while (slots_[slot] != 0) slot = (slot + 1) & (slots - 1);
+      slots_[slot] = static_cast<std::uint32_t>(cell + 1);
+    }
+    sweepOwnClasses(maxReported);
   }
 
   // All overlaps whose later ball is `index`, by earlier ball; call for every usable ball in
@@ -329,23 +351,75 @@ class BallOverlapFinder {
     return {level, index(position.x()), index(position.y()), index(position.z())};
   }
 
+  // The pairs within each class, found once for all balls: the cells are visited in their
+  // sorted order, and the cells of each of the nine rows of neighbours, (x + dx, y + dy,
+  // z - 1 .. z + 1), come in that order too, so nine cursors that only move forward find them
+  // without a look-up (and its cache miss) per cell. Only the first `maxReported` overlaps are
+  // kept.
+  void sweepOwnClasses(std::size_t maxReported) {
+    std::priority_queue<Overlap, std::vector<Overlap>, std::less<>> kept;  // largest on top
+    const auto keep = [&](const Overlap& overlap) {
+      if (kept.size() == maxReported && !(kept.top() > overlap)) return;
+      kept.push(overlap);
+      if (kept.size() > maxReported) kept.pop();
+    };
+    // Once as many are kept as can be reported, pairs whose later ball comes after the last
+    // kept one's are not tested: a thousand balls in one spot stop at the first few.
+    const auto latest = [&] {
+      return kept.size() == maxReported ? kept.top().later
+                                        : std::numeric_limits<std::size_t>::max();
+    };
+    const auto testCells = [&](std::size_t a, std::size_t b) {
+      // Cells list their balls in increasing order.
+      if (std::max(order_[cellRanges_[a].begin], order_[cellRanges_[b].begin]) > latest()) return;
+      for (std::size_t i = cellRanges_[a].begin; i < cellRanges_[a].end; ++i) {
+        const std::size_t x = order_[i];
+        if (x > latest()) break;
+        for (std::size_t j = cellRanges_[b].begin; j < cellRanges_[b].end; ++j) {
+          if (a == b && j >= i) break;
+          const std::size_t y = order_[j];
+          if (y > x && y > latest()) break;
+          if (const std::optional<double> depth = overlapDepth(x, y))
+            keep({std::max(x, y), std::min(x, y), *depth});
+        }
+      }
+    };
+    std::size_t cursors[9] = {};
+    for (std::size_t cell = 0; cell < cellKeys_.size() && maxReported > 0; ++cell) {
+      const CellKey& key = cellKeys_[cell];
+      int row = 0;
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy, ++row) {
+          const CellKey first{key.level, key.x + dx, key.y + dy, key.z - 1};
+          const CellKey last{key.level, key.x + dx, key.y + dy, key.z + 1};
+          std::size_t& cursor = cursors[row];
+          while (cursor < cellKeys_.size() && cellKeys_[cursor] < first) ++cursor;
+          // Each pair of cells once: from the later of the two.
+          for (std::size_t other = cursor;
+               other <= cell && other < cellKeys_.size() && !(last < cellKeys_[other]); ++other)
+            testCells(cell, other);
+        }
+      }
+    }
+    for (; !kept.empty(); kept.pop()) pending_.push(kept.top());
+  }
+
+  // The pairs with balls of larger classes, which the sweep leaves out.
   void find(std::size_t index) {
     const Ball& ball = balls_[index];
     const int ownLevel = levels_[index];
-    for (auto level = std::lower_bound(usedLevels_.begin(), usedLevels_.end(), ownLevel);
+    for (auto level = std::upper_bound(usedLevels_.begin(), usedLevels_.end(), ownLevel);
          level != usedLevels_.end(); ++level) {
       const CellKey centre = cellOf(ball.position, *level);
       for (std::int64_t dx = -1; dx <= 1; ++dx) {
         for (std::int64_t dy = -1; dy <= 1; ++dy) {
           for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            const auto cell = cells_.find({*level, centre.x + dx, centre.y + dy, centre.z + dz});
-            if (cell == cells_.end()) continue;
-            for (std::size_t k = cell->second.begin; k < cell->second.end; ++k) {
+            const Range* cell = findCell({*level, centre.x + dx, centre.y + dy, centre.z + dz});
+            if (!cell) continue;
+            for (std::size_t k = cell->begin; k < cell->end; ++k) {
               const std::size_t other = order_[k];
-              // Within one class both balls look at each other; only the later one reports.
-              // Cells list their balls in increasing order, so the rest are later still.
-              if (*level == ownLevel && other >= index) break;
-              test(index, other);
+              if (const std::optional<double> depth = overlapDepth(index, other))
+                pending_.push({std::max(index, other), std::min(index, other), *depth});
             }
           }
         }
@@ -353,16 +427,31 @@ class BallOverlapFinder {
     }
   }
 
-  void test(std::size_t a, std::size_t b) {
+  const Range* findCell(const CellKey& key) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t slot = CellHash{}(key)&mask;; slot = (slot + 1) & mask) {
+      const std::uint32_t cell = slots_[slot];
+      if (cell == 0) return nullptr;
+      if (cellKeys_[cell - 1] == key) return &cellRanges_[cell - 1];
+    }
+  }
+
+  std::optional<double> overlapDepth(std::size_t a, std::size_t b) const {
     const double radiusSum = balls_[a].radius + balls_[b].radius;
     const double depth = radiusSum - (balls_[a].position - balls_[b].position).norm();
-    if (overlaps(depth, radiusSum)) pending_.push({std::max(a, b), std::min(a, b), depth});
+    if (!overlaps(depth, radiusSum)) return std::nullopt;
+    return depth;
   }
 
   const std::vector<Ball>& balls_;
   std::vector<int> levels_;
   std::vector<std::size_t> order_;  // ball indices grouped by cell
-  std::unordered_map<CellKey, Range, CellHash> cells_;
+  // The occupied cells in a flat hash table of open addressing (slots_ holds a cell's index
+  // plus one, 0 when empty, at least half of them empty): a million cells as nodes of a map
+  // would take as many allocations, and a cache miss for each look-up.
+  std::vector<CellKey> cellKeys_;
+  std::vector<Range> cellRanges_;
+  std::vector<std::uint32_t> slots_;
   std::vector<int> usedLevels_;  // ascending
   std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
 };
@@ -411,7 +500,7 @@ void checkBalls(const Scene& scene, const StaticShapes& shapes, ErrorList& error
   const auto& balls = scene.balls;
   std::vector<bool> usable(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) usable[i] = checkBall(balls[i], i, nullptr);
-  BallOverlapFinder finder(balls, usable);
+  BallOverlapFinder finder(balls, usable, errors.room());
 
   for (std::size_t i = 0; i < balls.size() && !errors.full(); ++i) {
     if (!usable[i]) {

@@ -2,6 +2,7 @@
 // of numbers and of the bundled scenes, and saving that never damages an existing file.
 
 #include "sim/io/scene_file.h"
+#include "sim/io/scene_stream_reader.h"
 #include "sim/measures.h"
 #include "sim/simulation.h"
 #include "sim/tolerances.h"
@@ -602,6 +603,112 @@ class SceneFileTest : public QObject {
     const carom::io::SceneLoadResult versionOneAgain = parse(versionOneSaved);
     QVERIFY2(versionOneAgain.scene, qPrintable(versionOneAgain.error));
     QCOMPARE(difference(*versionOneAgain.scene, *versionOne.scene), QString());
+  }
+
+  // The streaming reader takes what the writer writes, and every field it can hold, without
+  // turning to the reader that names errors.
+  void ownFilesTakeTheStreamingReader() {
+    Scene scene;
+    scene.world.gravity = Vec3(0.5, -9.81, 1e-300);
+    scene.world.method = carom::Method::Swept;
+    scene.world.extra = R"({"wind":[1,0,0]})";
+    scene.extra = "{\"author\":\"me \\\"q\\\"\",\"units\":{\"length\":\"cm\"}}";
+    carom::Plane floor;
+    floor.name = "fl\u00f6\u00f6r \\ \t";
+    floor.restitution = 0.5;
+    floor.extra = R"({"friction":0.3})";
+    scene.planes.push_back(floor);
+    carom::Cylinder post;
+    post.point = Vec3(-3, 0, 0);
+    post.length = 2.0;
+    post.color = "#a0b0c0";
+    scene.cylinders.push_back(post);
+    Box box;
+    box.center = Vec3(4, 0, 0);
+    box.rotation = carom::Rotation{Vec3(0, 1, 1), -37.5};
+    scene.boxes.push_back(box);
+    std::mt19937_64 random(5);
+    std::uniform_real_distribution<double> any(-1e6, 1e6);
+    for (int i = 0; i < 1000; ++i) {
+      Ball ball;
+      ball.position = Vec3(2.5 * i, any(random), -0.0);
+      ball.velocity = Vec3(any(random) * 1e-300, any(random) * 1e300, 123456789.0);
+      ball.radius = 0.5;
+      ball.mass = i + 1;
+      if (i % 3 == 0) ball.name = "ball \u4e2d " + std::to_string(i);
+      if (i % 5 == 0) ball.restitution = 0.25;
+      if (i % 7 == 0) ball.extra = R"({"tags":{"a":"x","b":[1,2]}})";
+      ball.color = i % 2 ? "#ef476f" : "";
+      scene.balls.push_back(ball);
+    }
+    const QByteArray saved = carom::io::serializeScene(scene);
+    const std::optional<Scene> streamed = carom::io::readSceneStreaming(
+        std::string_view(saved.constData(), static_cast<std::size_t>(saved.size())));
+    QVERIFY(streamed);
+    // -0 is written as 0, the rest exactly.
+    for (Ball& ball : scene.balls) ball.position.z() = 0.0;
+    QCOMPARE(difference(*streamed, scene), QString());
+    QVERIFY(*streamed == scene);
+  }
+
+  // What the streaming reader takes, the reader that names errors reads as the same scene;
+  // what it leaves (rare text and every error), parseScene reads with the other.
+  void streamingReaderAgreesOrGivesUp_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<bool>("streams");
+    QTest::newRow("empty") << document("") << true;
+    QTest::newRow("spaces and escapes")
+        << QByteArray(
+               "\r\n\t {\"format\" : \"carom-scene\" ,\"version\":1,\"balls\":[ {\"radius\""
+               ":1E-1,\"position\":[ -0 ,1.5e+2, 2 ], \"name\": "
+               "\"\\u00e9\\ud83c\\udfb1\\/\\b\\f\\n\\r\\t\\\"\\\\\"} ] } \n")
+        << true;
+    QTest::newRow("version 1.0") << QByteArray(R"({"format": "carom-scene", "version": 1.0})")
+                                 << true;
+    QTest::newRow("digits at the doubles' edge")
+        << document(R"("balls": [{"position": [0.1, 123456789012.34567, 5e-324], "radius": 1,)"
+                    R"( "mass": 90071992547409930}])")
+        << true;
+    QTest::newRow("unknown values of every kind")
+        << document(R"("x": [true, false, null, {"a": [[]], "b": {}}, "s", -1.5e-3])") << true;
+    QTest::newRow("version after the balls")
+        << QByteArray(R"({"format": "carom-scene", "balls": [], "version": 1})") << false;
+    QTest::newRow("duplicate key inside an unknown value")
+        << document(R"("x": {"a": 1, "b": {"c": 2, "c": 3}})") << false;
+    QTest::newRow("duplicate field")
+        << document(R"("world": {"timeStep": 1, "timeStep": 2})") << false;
+    QTest::newRow("lone surrogate") << document(R"("balls": [{"position": [0,0,0], "radius": 1,)"
+                                                R"( "name": "\ud800"}])")
+                                    << false;
+    QTest::newRow("number too large")
+        << document(R"("balls": [{"position": [1e400,0,0], "radius": 1}])") << false;
+    QTest::newRow("number too small")
+        << document(R"("balls": [{"position": [1e-400,0,0], "radius": 1}])") << false;
+    QTest::newRow("leading zero") << document(R"("x": 01)") << false;
+    QTest::newRow("trailing text") << document("") + " x" << false;
+    QTest::newRow("byte order mark") << "\xef\xbb\xbf" + document("") << false;
+    QTest::newRow("invalid UTF-8") << document("\"x\": \"\xc3\x28\"") << false;
+    QTest::newRow("vector of two")
+        << document(R"("balls": [{"position": [0,0], "radius": 1}])") << false;
+    QTest::newRow("missing radius") << document(R"("balls": [{"position": [0,0,0]}])") << false;
+    QTest::newRow("unknown method") << document(R"("world": {"method": "fast"})") << false;
+  }
+
+  void streamingReaderAgreesOrGivesUp() {
+    QFETCH(QByteArray, json);
+    QFETCH(bool, streams);
+    const std::optional<Scene> streamed = carom::io::readSceneStreaming(
+        std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
+    const SceneLoadResult named = carom::io::parseSceneNamingErrors(json, kSource);
+    QCOMPARE(bool(streamed), streams);
+    if (streamed) {
+      QVERIFY2(named.scene, qPrintable(named.error));
+      QVERIFY(*named.scene == *streamed);
+    }
+    // Either way parseScene answers as the reader that names errors does.
+    const SceneLoadResult result = parse(json);
+    QCOMPARE(result.error, named.error);
+    QCOMPARE(bool(result.scene), bool(named.scene));
   }
 
   void savedTextIsIndentedVersionOne() {

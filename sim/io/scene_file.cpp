@@ -1,5 +1,7 @@
 #include "sim/io/scene_file.h"
 
+#include "sim/io/scene_format.h"
+#include "sim/io/scene_stream_reader.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 
@@ -15,33 +17,36 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 #include <utility>
 
 namespace carom::io {
 namespace {
 
-// The newest version this Carom reads and writes. A scene with no box and no capped cylinder is
-// still written as version 1, so that files older Carom can read stay readable by it.
-constexpr int kFormatVersion = 2;
-constexpr int kFirstVersionWithBoxes = 2;  // and capped cylinders
-constexpr char kFormatName[] = "carom-scene";
+using format::kFirstVersionWithBoxes;
+constexpr int kFormatVersion = format::kVersion;
+const QString kFormatName = QString::fromLatin1(format::kName.data(), format::kName.size());
 
-const QStringList kTopKeys{"format", "version", "world", "planes", "cylinders", "boxes", "balls"};
-// Version 1 had no boxes: a "boxes" key there is one it does not know, kept as it is.
-const QStringList kTopKeysVersion1{"format", "version", "world", "planes", "cylinders", "balls"};
-const QStringList kWorldKeys{"gravity", "timeStep", "restitution", "method", "integrator"};
-const QStringList kPlaneKeys{"name", "point", "normal", "restitution", "color"};
-const QStringList kCylinderKeys{"name",   "point",       "axis", "radius",
-                                "length", "restitution", "color"};
-// Version 1 had no capped cylinders: there "length" is a key it does not know.
-const QStringList kCylinderKeysVersion1{"name", "point", "axis", "radius", "restitution", "color"};
-const QStringList kBoxKeys{"name", "center", "halfExtents", "rotation", "restitution", "color"};
-const QStringList kBallKeys{"name", "position",    "velocity", "radius",
-                            "mass", "restitution", "color"};
+QStringList keyList(std::span<const std::string_view> keys) {
+  QStringList list;
+  for (std::string_view key : keys) list << QString::fromLatin1(key.data(), qsizetype(key.size()));
+  return list;
+}
+
+const QStringList kTopKeys = keyList(format::kTopKeys);
+const QStringList kTopKeysVersion1 = keyList(format::kTopKeysVersion1);
+const QStringList kWorldKeys = keyList(format::kWorldKeys);
+const QStringList kPlaneKeys = keyList(format::kPlaneKeys);
+const QStringList kCylinderKeys = keyList(format::kCylinderKeys);
+const QStringList kCylinderKeysVersion1 = keyList(format::kCylinderKeysVersion1);
+const QStringList kBoxKeys = keyList(format::kBoxKeys);
+const QStringList kBallKeys = keyList(format::kBallKeys);
 
 // Parsing stops at the first problem; it travels to parseScene as this exception.
 struct ParseFailure {
@@ -73,11 +78,56 @@ QString describeType(const QJsonValue& value) {
   return "nothing";
 }
 
-// Shortest text that reads back as the same double; JSON has no infinities or NaN, so a scene
-// holding one is written with null there (and refused when read back).
+// The shortest text that reads back as the same double, as QByteArray::number(value, 'g',
+// QLocale::FloatingPointShortest) spells it (fixed unless scientific is shorter, and a nought
+// without a sign), without its allocations: a million balls hold seven million numbers.
+// JSON has no infinities or NaN, so a scene holding one is written with null there (and refused
+// when read back).
+void appendNumber(std::string& out, double value) {
+  if (!std::isfinite(value)) {
+    out += "null";
+    return;
+  }
+  if (value == 0.0) {
+    out += '0';
+    return;
+  }
+  char text[32];
+  const char* end =
+      std::to_chars(text, text + sizeof text, value, std::chars_format::scientific).ptr;
+  const char* mantissa = text[0] == '-' ? text + 1 : text;
+  char digits[24];
+  int count = 0;
+  const char* e = mantissa;
+  for (; *e != 'e'; ++e)
+    if (*e != '.') digits[count++] = *e;
+  int exponent = 0;
+  std::from_chars(e[1] == '+' ? e + 2 : e + 1, end, exponent);
+  const auto scientificLength = end - mantissa;
+  const int fixedLength = exponent < 0            ? 1 - exponent + count
+                          : exponent + 1 >= count ? exponent + 1
+                                                  : count + 1;
+  if (mantissa != text) out += '-';
+  if (fixedLength > scientificLength) {
+    out.append(mantissa, end);
+  } else if (exponent < 0) {
+    out += "0.";
+    out.append(static_cast<std::size_t>(-exponent - 1), '0');
+    out.append(digits, static_cast<std::size_t>(count));
+  } else if (exponent + 1 >= count) {
+    out.append(digits, static_cast<std::size_t>(count));
+    out.append(static_cast<std::size_t>(exponent + 1 - count), '0');
+  } else {
+    out.append(digits, static_cast<std::size_t>(exponent + 1));
+    out += '.';
+    out.append(digits + exponent + 1, static_cast<std::size_t>(count - exponent - 1));
+  }
+}
+
 QByteArray numberText(double value) {
-  if (!std::isfinite(value)) return "null";
-  return QByteArray::number(value, 'g', QLocale::FloatingPointShortest);
+  std::string text;
+  appendNumber(text, value);
+  return QByteArray::fromStdString(text);
 }
 
 QString quoted(const QString& text) {
@@ -466,9 +516,16 @@ std::optional<QString> duplicateKeyPath(const QByteArray& json) {
   return std::nullopt;
 }
 
+SceneLoadResult validated(Scene scene, const QString& sourceName) {
+  const auto errors = validateScene(scene, 1);
+  if (!errors.empty())
+    return {std::nullopt, sourceName + ": " + QString::fromStdString(errors.front().text())};
+  return {std::move(scene), QString()};
+}
+
 }  // namespace
 
-SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
+SceneLoadResult parseSceneNamingErrors(const QByteArray& json, const QString& sourceName) {
   if (valueBound(json) > kMaxSceneValues)
     return {std::nullopt, sourceName + QString(": the document holds more than %1 values, the "
                                                "limit for scene files")
@@ -494,10 +551,23 @@ SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
   } catch (const ParseFailure& failure) {
     return {std::nullopt, errorLine(sourceName, failure.path, failure.what)};
   }
-  const auto errors = validateScene(scene, 1);
-  if (!errors.empty())
-    return {std::nullopt, sourceName + ": " + QString::fromStdString(errors.front().text())};
-  return {std::move(scene), QString()};
+  return validated(std::move(scene), sourceName);
+}
+
+namespace {
+
+SceneLoadResult parseText(std::string_view json, const QString& sourceName) {
+  if (std::optional<Scene> scene = readSceneStreaming(json))
+    return validated(std::move(*scene), sourceName);
+  return parseSceneNamingErrors(
+      QByteArray::fromRawData(json.data(), static_cast<qsizetype>(json.size())), sourceName);
+}
+
+}  // namespace
+
+SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
+  return parseText(std::string_view(json.constData(), static_cast<std::size_t>(json.size())),
+                   sourceName);
 }
 
 SceneLoadResult loadSceneFile(const QString& fileName) {
@@ -516,7 +586,19 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
                      .arg(kMaxSceneFileBytes / (1024 * 1024));
   // The size check comes before reading; reading at most one byte more also catches files that
   // grow meanwhile or report no size.
-  if (file.size() > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
+  const qint64 size = file.size();
+  if (size > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
+  // Mapped rather than read when it can be: the pages come from the file cache as they are
+  // parsed, and no copy of a large file is made.
+  if (size > 0) {
+    if (const uchar* mapped = file.map(0, size)) {
+      SceneLoadResult result = parseText(
+          std::string_view(reinterpret_cast<const char*>(mapped), static_cast<std::size_t>(size)),
+          fileName);
+      file.unmap(const_cast<uchar*>(mapped));
+      return result;
+    }
+  }
   const QByteArray json = file.read(kMaxSceneFileBytes + 1);
   if (file.error() != QFileDevice::NoError)
     return {std::nullopt, fileName + ": cannot read the file: " + file.errorString()};
@@ -524,9 +606,78 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
   return parseScene(json, fileName);
 }
 
-QByteArray serializeScene(const Scene& scene) {
+namespace {
+
+void appendVector(std::string& out, const Vec3& v) {
+  out += '[';
+  appendNumber(out, v.x());
+  out += ", ";
+  appendNumber(out, v.y());
+  out += ", ";
+  appendNumber(out, v.z());
+  out += ']';
+}
+
+// A string as Qt's JSON writer quotes it, taken directly when it needs no escape.
+void appendString(std::string& out, const std::string& text) {
+  const bool plain = std::all_of(text.begin(), text.end(), [](char c) {
+    return c >= 0x20 && c < 0x7f && c != '"' && c != '\\';
+  });
+  if (plain) {
+    out += '"';
+    out += text;
+    out += '"';
+  } else {
+    out += jsonString(text).toStdString();
+  }
+}
+
+// A ball's line, as JsonFields writes it.
+void appendBall(std::string& out, const Ball& ball) {
+  if (!ball.extra.empty()) {
+    // Rare: the unknown keys go through Qt's JSON as they came.
+    JsonFields fields = startFields(ball);
+    fields.add("position", jsonVector(ball.position));
+    fields.add("velocity", jsonVector(ball.velocity));
+    fields.add("radius", numberText(ball.radius));
+    fields.add("mass", numberText(ball.mass));
+    fields.addInfo(ball);
+    fields.addExtra(ball.extra, kBallKeys);
+    out += fields.oneLine().toStdString();
+    return;
+  }
+  out += '{';
+  if (!ball.name.empty()) {
+    out += "\"name\": ";
+    appendString(out, ball.name);
+    out += ", ";
+  }
+  out += "\"position\": ";
+  appendVector(out, ball.position);
+  out += ", \"velocity\": ";
+  appendVector(out, ball.velocity);
+  out += ", \"radius\": ";
+  appendNumber(out, ball.radius);
+  out += ", \"mass\": ";
+  appendNumber(out, ball.mass);
+  if (ball.restitution) {
+    out += ", \"restitution\": ";
+    appendNumber(out, *ball.restitution);
+  }
+  if (!ball.color.empty()) {
+    out += ", \"color\": ";
+    appendString(out, ball.color);
+  }
+  out += '}';
+}
+
+// Writes the scene's text to `write(const char*, size)` in pieces: all but the balls from
+// JsonFields, the balls line by line (a million of them go to a file without the whole text in
+// memory).
+template <typename Write>
+void writeScene(const Scene& scene, Write&& write) {
   JsonFields top;
-  top.add("format", jsonString(kFormatName));
+  top.add("format", jsonString(format::kName));
   const bool versionOne =
       scene.boxes.empty() && std::none_of(scene.cylinders.begin(), scene.cylinders.end(),
                                           [](const Cylinder& c) { return c.length.has_value(); });
@@ -587,20 +738,34 @@ QByteArray serializeScene(const Scene& scene) {
     top.add("boxes", listText(boxes));
   }
 
-  QByteArrayList balls;
-  for (const Ball& ball : scene.balls) {
-    JsonFields fields = startFields(ball);
-    fields.add("position", jsonVector(ball.position));
-    fields.add("velocity", jsonVector(ball.velocity));
-    fields.add("radius", numberText(ball.radius));
-    fields.add("mass", numberText(ball.mass));
-    fields.addInfo(ball);
-    fields.addExtra(ball.extra, kBallKeys);
-    balls << fields.oneLine();
+  // The balls are the last field: the text up to them, then theirs, then the closing brace.
+  QByteArray head = top.indented("");
+  head.chop(2);  // "\n}"
+  head += scene.balls.empty() ? ",\n  \"balls\": []" : ",\n  \"balls\": [\n    ";
+  write(head.constData(), static_cast<std::size_t>(head.size()));
+  constexpr std::size_t kPiece = 1 << 20;
+  std::string piece;
+  piece.reserve(kPiece + 4096);
+  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
+    if (i > 0) piece += ",\n    ";
+    appendBall(piece, scene.balls[i]);
+    if (piece.size() >= kPiece) {
+      write(piece.data(), piece.size());
+      piece.clear();
+    }
   }
-  top.add("balls", listText(balls));
+  piece += scene.balls.empty() ? "\n}\n" : "\n  ]\n}\n";
+  write(piece.data(), piece.size());
+}
 
-  return top.indented("") + '\n';
+}  // namespace
+
+QByteArray serializeScene(const Scene& scene) {
+  QByteArray text;
+  writeScene(scene, [&text](const char* data, std::size_t size) {
+    text.append(data, static_cast<qsizetype>(size));
+  });
+  return text;
 }
 
 bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) {
@@ -610,8 +775,11 @@ bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) 
   };
   QSaveFile file(fileName);
   if (!file.open(QIODevice::WriteOnly)) return failWith(file.errorString());
-  const QByteArray json = serializeScene(scene);
-  if (file.write(json) != json.size()) {
+  bool written = true;
+  writeScene(scene, [&](const char* data, std::size_t size) {
+    written = written && file.write(data, static_cast<qint64>(size)) == static_cast<qint64>(size);
+  });
+  if (!written) {
     const QString reason = file.errorString();
     file.cancelWriting();
     return failWith(reason);

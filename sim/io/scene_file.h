@@ -19,6 +19,11 @@ struct SceneLoadResult {
 // (validateScene), so a returned scene is ready to simulate.
 SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName);
 SceneLoadResult loadSceneFile(const QString& fileName);
+// The reader behind parseScene's messages: Qt's JSON parser (line and column of a syntax
+// error), then each field by its path. parseScene turns to it whenever the streaming reader
+// (scene_stream_reader.h) gives up; it is several times slower and takes several times the
+// memory of the scene.
+SceneLoadResult parseSceneNamingErrors(const QByteArray& json, const QString& sourceName);
 
 // Indented JSON of format version 1; unknown keys kept in the scene's `extra` fields are written
 // back, so that saving what was loaded loses nothing.
