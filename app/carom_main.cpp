@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
   if (arguments.benchRenderBalls) return carom::app::benchmarkRender(*arguments.benchRenderBalls);
   if (arguments.benchStressSeconds)
     return carom::app::benchmarkStress(*arguments.benchStressSeconds);
+  if (arguments.benchOpen) return carom::app::benchmarkOpen(arguments.scenePath);
 
   carom::ui::MainWindow window;
   window.openExample("magic-room", false);

@@ -15,6 +15,7 @@ constexpr const char* kRunFor = "run-for";
 constexpr const char* kLanguage = "lang";
 constexpr const char* kBenchRender = "bench-render";
 constexpr const char* kBenchStress = "bench-stress";
+constexpr const char* kBenchOpen = "bench-open";
 
 WindowArguments refused(const QString& message, int exitCode) {
   WindowArguments arguments;
@@ -52,6 +53,10 @@ void addWindowOptions(QCommandLineParser& parser) {
                                    "and sound for S seconds, print the collision rate, frame rate, "
                                    "GUI stalls and memory every 10 s, and quit."),
        "S"},
+      {kBenchOpen,
+       QCoreApplication::translate("main",
+                                   "Open the scene file, run it for 5 s, select its last ball in "
+                                   "the outline, print how long each took, and quit.")},
   });
 }
 
@@ -89,6 +94,10 @@ WindowArguments parseWindowArguments(const QStringList& arguments) {
     if (!ok || seconds < 10 || seconds > 86400)
       return refused("--bench-stress takes seconds from 10 to 86400", 2);
     result.benchStressSeconds = seconds;
+  }
+  if (parser.isSet(kBenchOpen)) {
+    if (result.scenePath.isEmpty()) return refused("--bench-open needs a scene file", 2);
+    result.benchOpen = true;
   }
   return result;
 }

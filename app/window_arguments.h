@@ -18,6 +18,7 @@ struct WindowArguments {
   std::optional<QString> language;        // --lang, as given
   std::optional<int> benchRenderBalls;    // --bench-render
   std::optional<int> benchStressSeconds;  // --bench-stress
+  bool benchOpen = false;                 // --bench-open: of scenePath
   bool help = false;                      // -h, --help
   bool helpAll = false;                   // --help-all: also Qt's own options
   bool version = false;                   // -v, --version

@@ -1,6 +1,9 @@
 #include "app/window_benchmarks.h"
 
 #include "sim/scene_builders.h"
+#include "ui/editor/outline_dock.h"
+#include "ui/editor/properties_dock.h"
+#include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
 #include "ui/simulation_controller.h"
@@ -10,7 +13,9 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFile>
+#include <QItemSelectionModel>
 #include <QTimer>
+#include <QTreeView>
 
 #include <algorithm>
 #include <cstdio>
@@ -187,6 +192,77 @@ int benchmarkRender(int ballCount) {
   window.openScene(gas, {}, QStringLiteral("gas of %1 balls").arg(ballCount));
   const FrameFigures balls = measureFrames(window, *view);
   printFigures(qPrintable(QStringLiteral("%1 balls").arg(ballCount)), balls, &floor);
+  std::fflush(stdout);
+  return 0;
+}
+
+int benchmarkOpen(const QString& fileName) {
+  MainWindow window;
+  render::SceneView* view = showWithBenchViewSize(window);
+  if (!view) return 1;
+  bool framed = false;
+  QObject::connect(view, &render::SceneView::frameRendered, &window,
+                   [&](double) { framed = true; });
+  QElapsedTimer clock;
+  clock.start();
+  if (!window.openFile(fileName, false)) return 1;
+  const double openSeconds = clock.nsecsElapsed() * 1e-9;
+  // Until the view has drawn the new scene (frames ask for nothing else meanwhile).
+  framed = false;
+  while (!framed && clock.elapsed() < 600000) processEventsFor(10);
+  const double shownSeconds = clock.nsecsElapsed() * 1e-9;
+  const int balls = static_cast<int>(window.document()->scene().balls.size());
+  std::printf("scene: %s, %d balls\n", qPrintable(fileName), balls);
+  printView(*view);
+  std::printf("open (load, validate, document): %.2f s\n", openSeconds);
+  std::printf("first frame of it: %.2f s after the open began\n", shownSeconds);
+  std::printf("resident memory: %.0f MiB\n", residentMiB());
+
+  // Running: when the first step arrives, and how far the run gets in kRenderRunMs.
+  int frames = 0;
+  QObject::connect(view, &render::SceneView::frameRendered, &window, [&](double) { ++frames; });
+  const auto simulatedTime = [&] {
+    const auto snapshot = window.simulation().latest();
+    return snapshot ? snapshot->time : 0.0;
+  };
+  StallProbe probe(&window);
+  clock.restart();
+  window.setRunning(true);
+  while (simulatedTime() <= 0.0 && clock.elapsed() < 600000) processEventsFor(10);
+  const double firstStepSeconds = clock.nsecsElapsed() * 1e-9;
+  frames = 0;
+  probe.takeGaps();
+  const double simulatedBefore = simulatedTime();
+  clock.restart();
+  processEventsFor(kRenderRunMs);
+  const double runSeconds = clock.nsecsElapsed() * 1e-9;
+  const std::vector<double> gaps = probe.takeGaps();
+  std::printf(
+      "run: first step shown %.2f s after Run; then %.3f s simulated in %.1f s, %.1f fps, "
+      "longest GUI stall %.0f ms\n",
+      firstStepSeconds, simulatedTime() - simulatedBefore, runSeconds, frames / runSeconds,
+      gaps.empty() ? 0.0 : gaps.back());
+
+  // The outline and the properties while it runs: the last ball selected in the tree.
+  editor::OutlineDock* outline = window.outlineDock();
+  QElapsedTimer action;
+  action.start();
+  outline->tree()->expand(outline->model()->groupIndex(editor::ObjectKind::Ball));
+  processEventsFor(0);
+  const double expandMs = action.nsecsElapsed() * 1e-6;
+  action.restart();
+  const QModelIndex last = outline->model()->indexOf({editor::ObjectKind::Ball, balls - 1});
+  outline->tree()->selectionModel()->select(
+      last, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+  outline->tree()->scrollTo(last);
+  processEventsFor(0);
+  const double selectMs = action.nsecsElapsed() * 1e-6;
+  std::printf(
+      "outline: the balls' group opened in %.0f ms; the last ball selected and shown in "
+      "%.0f ms (properties: \"%s\")\n",
+      expandMs, selectMs, qPrintable(window.propertiesDock()->heading()));
+  window.setRunning(false);
+  std::printf("resident memory: %.0f MiB\n", residentMiB());
   std::fflush(stdout);
   return 0;
 }

@@ -1,7 +1,9 @@
 #pragma once
+// Benchmarks of the whole program in its real window, for `carom --bench-render`,
+// `--bench-stress` and `--bench-open`. Each prints its figures to stdout and returns an exit
+// code.
 
-// Benchmarks of the whole program in its real window, for `carom --bench-render` and
-// `carom --bench-stress`. Both print their figures to stdout and return an exit code.
+#include <QString>
 
 namespace carom::app {
 
@@ -14,5 +16,10 @@ int benchmarkRender(int ballCount);
 // sound on: every 10 s the collision rate, frame rate, the GUI thread's longest stall, resident
 // memory, live explosions and sounds played; then whether memory stayed flat.
 int benchmarkStress(int seconds);
+
+// Opens a scene file as File > Open does and reports how long until it is shown, how soon a run
+// shows its first step and how far it gets in 5 s with the GUI's longest stall, how long the
+// outline takes to open its balls and select the last one, and resident memory.
+int benchmarkOpen(const QString& fileName);
 
 }  // namespace carom::app

@@ -1,4 +1,5 @@
 #include "sim/bodies.h"
+#include "sim/prefault.h"
 
 #include <algorithm>
 
@@ -18,6 +19,10 @@ Bodies makeBodies(const Scene& scene) {
     bodies.boxes.push_back(boxShape(box));
     bodies.boxOwnRestitution.push_back(box.restitution);
   }
+  const std::size_t balls = scene.balls.size();
+  for (auto* values : {&bodies.radius, &bodies.mass, &bodies.inverseMass})
+    reservePrefaulted(*values, balls);
+  reservePrefaulted(bodies.ownRestitution, balls);
   for (const Ball& ball : scene.balls) {
     bodies.radius.push_back(ball.radius);
     bodies.mass.push_back(ball.mass);
@@ -33,6 +38,7 @@ void Bodies::setWorldRestitution(double worldRestitution) {
   const auto resolve = [worldRestitution](const std::vector<std::optional<double>>& own,
                                           std::vector<double>& resolved) {
     resolved.clear();
+    reservePrefaulted(resolved, own.size());
     for (const std::optional<double>& value : own)
       resolved.push_back(value.value_or(worldRestitution));
   };

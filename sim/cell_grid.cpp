@@ -1,4 +1,5 @@
 #include "sim/cell_grid.h"
+#include "sim/prefault.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,10 +50,11 @@ bool CellGrid::isBorder(const Coords& c) const {
 }
 
 void CellMembership::reset(int cellCount, int ballCount) {
-  head_.assign(cellCount, -1);
-  next_.assign(ballCount, -1);
-  prev_.assign(ballCount, -1);
-  cell_.assign(ballCount, -1);
+  for (auto [values, count] : {std::pair{&head_, cellCount}, std::pair{&next_, ballCount},
+                               std::pair{&prev_, ballCount}, std::pair{&cell_, ballCount}}) {
+    reservePrefaulted(*values, std::size_t(count));
+    values->assign(count, -1);
+  }
 }
 
 void CellMembership::insert(int ball, int cell) {

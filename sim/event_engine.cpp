@@ -1,4 +1,5 @@
 #include "sim/event_engine.h"
+#include "sim/prefault.h"
 
 #include "sim/contact_time.h"
 #include "sim/response.h"
@@ -50,11 +51,11 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
       collapseSpeed_(collapseSpeed),
       now_(now) {
   const int n = bodies.ballCount();
-  particles_.resize(n);
-  tracks_.resize(n);
-  predictions_.resize(n);
-  restSpeed_.resize(n);
-  slideSpeed_.resize(n);
+  resizePrefaulted(particles_, n);
+  resizePrefaulted(tracks_, n);
+  resizePrefaulted(predictions_, n);
+  resizePrefaulted(restSpeed_, n);
+  resizePrefaulted(slideSpeed_, n);
   for (int i = 0; i < n; ++i) {
     Particle& p = particles_[i];
     p.resting = state[i].resting;
@@ -125,6 +126,7 @@ void EventEngine::buildGrid(const std::vector<BallState>& state) {
 
 void EventEngine::buildStaticLists() {
   const int cells = grid_.cellCount();
+  reservePrefaulted(staticStart_, std::size_t(cells) + 1);
   staticStart_.assign(cells + 1, 0);
   statics_.clear();
   sharedStatics_ = false;
@@ -202,12 +204,39 @@ void EventEngine::buildStaticLists() {
       for (int y = from[1]; y <= to[1]; ++y)
         for (int x = from[0]; x <= to[0]; ++x) f(grid_.index({x, y, z}), cellBox({x, y, z}));
   };
+  // The cells planeNear accepts, row by row along x. Inside a row the test's value moves one
+  // way with x (each rounded step of its sum keeps order), so the near cells inside the grid
+  // are a run from one end, found without testing the far ones: a million balls make some ten
+  // million cells, of which a plane is near a few layers.
+  const auto forEachCellNearPlane = [&](const PlaneShape& plane, auto&& f) {
+    const CellGrid::Coords& counts = grid_.counts();
+    const double nx = plane.normal.x();
+    for (int z = 0; z < counts[2]; ++z)
+      for (int y = 0; y < counts[1]; ++y) {
+        const int first = grid_.index({0, y, z});
+        const bool borderRow = y == 0 || z == 0 || y + 1 == counts[1] || z + 1 == counts[2];
+        if (borderRow || counts[0] <= 2) {
+          for (int x = 0; x < counts[0]; ++x) f(first + x);
+          continue;
+        }
+        const auto near = [&](int x) { return planeNear(plane, cellBox({x, y, z})); };
+        f(first);  // the border cells at both ends of the row
+        if (nx > 0.0) {
+          for (int x = 1; x + 1 < counts[0] && near(x); ++x) f(first + x);
+        } else if (nx < 0.0) {
+          for (int x = counts[0] - 2; x > 0 && near(x); --x) f(first + x);
+        } else if (near(1)) {
+          for (int x = 1; x + 1 < counts[0]; ++x) f(first + x);
+        }
+        f(first + counts[0] - 1);
+      }
+  };
   // Visits every (cell, shape) pair that is near, shape by shape in the lists' order (planes,
   // cylinders, boxes), so each cell's list comes out in that order.
   const auto forEachNearPair = [&](auto&& f) {
     for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
-      forEachCandidate(nullptr, Vec3::Zero(), [&](int cell, const CellBox& box) {
-        if (planeNear(bodies_.planes[k], box)) f(cell, StaticRef{StaticKind::Plane, k});
+      forEachCellNearPlane(bodies_.planes[k], [&](int cell) {
+        f(cell, StaticRef{StaticKind::Plane, k});
       });
     for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
       const CylinderShape& cylinder = bodies_.cylinders[k];

@@ -1,4 +1,5 @@
 #include "sim/simulation.h"
+#include "sim/prefault.h"
 
 #include "sim/grab_sweep.h"
 #include "sim/measures.h"
@@ -12,6 +13,7 @@ namespace carom {
 Simulation::Simulation(const Scene& scene)
     : world_(scene.world), bodies_(std::make_shared<const Bodies>(makeBodies(scene))) {
   std::vector<BallState> state;
+  reservePrefaulted(state, scene.balls.size());
   double mass = 0.0, twiceKinetic = 0.0;
   for (const Ball& ball : scene.balls) {
     state.push_back({ball.position, ball.velocity, false});

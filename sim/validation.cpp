@@ -1,4 +1,5 @@
 #include "sim/validation.h"
+#include "sim/prefault.h"
 
 #include "sim/shapes.h"
 #include "sim/tolerances.h"
@@ -275,6 +276,7 @@ class BallOverlapFinder {
         largest > 0.0 ? std::ilogb(largest) + 1 - 40 : std::numeric_limits<int>::min();
 
     std::vector<std::pair<CellKey, std::size_t>> entries;
+    reservePrefaulted(entries, balls.size());
     for (std::size_t i = 0; i < balls.size(); ++i) {
       if (!usable[i]) continue;
       // A cell is wider than the diameter, so overlapping balls of a class are in neighbouring

@@ -555,6 +555,26 @@ class TestCli : public QObject {
 
   // --- bench ---
 
+  // The file bench saves, loads and predicts a gas: a size and three phases with their memory.
+  void benchFilesQuick() {
+    const CliRun run = runCli({"bench", "--files", "--quick"}, kBenchTimeoutMs);
+    VERIFY_EXIT(run, 0);
+    const QList<QByteArray> rows = nonEmptyLines(run.out);
+    QCOMPARE(rows.size(), 5);
+    QVERIFY2(rows[0].startsWith("scene file of 100000 balls: ") && rows[0].endsWith(" MiB"),
+             rows[0].constData());
+    bool ok = false;
+    QVERIFY2(rows[0].split(' ').at(5).toDouble(&ok) > 10.0 && ok, rows[0].constData());
+    const char* phases[] = {"save (atomic)", "load and validate", "first prediction (exact)"};
+    for (int k = 0; k < 3; ++k) {
+      const QByteArray row = rows[k + 2];
+      QVERIFY2(row.startsWith(phases[k]), row.constData());
+      const QList<QByteArray> cells = row.mid(qstrlen(phases[k])).simplified().split(' ');
+      QVERIFY2(cells.size() >= 2 && cells[0].toDouble(&ok) > 0.0 && ok && cells[1] == "s",
+               row.constData());
+    }
+  }
+
   void benchQuick() {
     const CliRun run = runCli({"bench", "--quick"}, kBenchTimeoutMs);
     VERIFY_EXIT(run, 0);
@@ -703,6 +723,8 @@ class TestCli : public QObject {
         << QStringList{"run", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("unknown bench option")
         << QStringList{"bench", "--slow"} << QStringList{"--slow"};
+    QTest::newRow("two benches")
+        << QStringList{"bench", "--files", "--timeline"} << QStringList{"--timeline", "--files"};
     QTest::newRow("unknown study option")
         << QStringList{"study", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("study without a scene")

@@ -730,22 +730,22 @@
 <context>
     <name>carom::ui::AutoMethod</name>
     <message>
-        <location filename="../ui/auto_method.cpp" line="23"/>
+        <location filename="../ui/auto_method.cpp" line="25"/>
         <source>%1 (%2, step %3 s)</source>
         <translation>%1 (%2, Schritt %3 s)</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="89"/>
+        <location filename="../ui/auto_method.cpp" line="99"/>
         <source>Auto: no setting meets an energy error of %1 per second; the closest is %2. The settings are kept.</source>
         <translation>Auto: Keine Einstellung erreicht einen Energiefehler von %1 je Sekunde; am nächsten kommt %2. Die Einstellungen bleiben.</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="98"/>
+        <location filename="../ui/auto_method.cpp" line="108"/>
         <source>Choose Method Automatically</source>
         <translation>Methode automatisch wählen</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="103"/>
+        <location filename="../ui/auto_method.cpp" line="113"/>
         <source>Auto chose %1: the cheapest setting with an energy error under %2 per second (%3 s of computing per simulated second; pilot %4 s)</source>
         <translation>Auto wählte %1: die günstigste Einstellung mit einem Energiefehler unter %2 je Sekunde (%3 s Rechenzeit je simulierter Sekunde; Vorlauf %4 s)</translation>
     </message>
@@ -2354,54 +2354,59 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/window_arguments.cpp" line="31"/>
+        <location filename="../app/window_arguments.cpp" line="32"/>
         <source>Collision physics sandbox</source>
         <translation>Sandbox für Kollisionsphysik</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="34"/>
+        <location filename="../app/window_arguments.cpp" line="35"/>
         <source>Scene file to open</source>
         <translation>Zu öffnende Szenendatei</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="37"/>
+        <location filename="../app/window_arguments.cpp" line="38"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Ein Bild des Fensters speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="38"/>
+        <location filename="../app/window_arguments.cpp" line="39"/>
         <source>file.png</source>
         <translation>datei.png</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="40"/>
+        <location filename="../app/window_arguments.cpp" line="41"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Die Simulation vor --screenshot so lange laufen lassen.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="41"/>
+        <location filename="../app/window_arguments.cpp" line="42"/>
         <source>seconds</source>
         <translation>Sekunden</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="42"/>
+        <location filename="../app/window_arguments.cpp" line="43"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Sprache des Programms (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="43"/>
+        <location filename="../app/window_arguments.cpp" line="44"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="45"/>
+        <location filename="../app/window_arguments.cpp" line="46"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Ein Gas aus N Kugeln 5 s lang mit der Ansicht in 1280x720 laufen lassen, Bildzeiten und die längste Blockade der Oberfläche ausgeben und beenden.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="50"/>
+        <location filename="../app/window_arguments.cpp" line="51"/>
         <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
         <translation>Ein Gas mit etwa 10.000 Stößen pro Sekunde S Sekunden lang mit Explosionen und Ton laufen lassen, alle 10 s Stoßrate, Bildrate, GUI-Blockaden und Speicher ausgeben und beenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/window_arguments.cpp" line="57"/>
+        <source>Open the scene file, run it for 5 s, select its last ball in the outline, print how long each took, and quit.</source>
+        <translation>Die Szenendatei öffnen, 5 s laufen lassen, ihre letzte Kugel in der Gliederung auswählen, ausgeben, wie lange jeder Schritt dauerte, und beenden.</translation>
     </message>
 </context>
 </TS>

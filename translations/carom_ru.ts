@@ -734,22 +734,22 @@
 <context>
     <name>carom::ui::AutoMethod</name>
     <message>
-        <location filename="../ui/auto_method.cpp" line="23"/>
+        <location filename="../ui/auto_method.cpp" line="25"/>
         <source>%1 (%2, step %3 s)</source>
         <translation>%1 (%2, шаг %3 s)</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="89"/>
+        <location filename="../ui/auto_method.cpp" line="99"/>
         <source>Auto: no setting meets an energy error of %1 per second; the closest is %2. The settings are kept.</source>
         <translation>Auto: ни одна настройка не даёт ошибку энергии %1 в секунду; ближе всех %2. Настройки оставлены.</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="98"/>
+        <location filename="../ui/auto_method.cpp" line="108"/>
         <source>Choose Method Automatically</source>
         <translation>Выбрать метод автоматически</translation>
     </message>
     <message>
-        <location filename="../ui/auto_method.cpp" line="103"/>
+        <location filename="../ui/auto_method.cpp" line="113"/>
         <source>Auto chose %1: the cheapest setting with an energy error under %2 per second (%3 s of computing per simulated second; pilot %4 s)</source>
         <translation>Auto выбрал %1: самая дешёвая настройка с ошибкой энергии меньше %2 в секунду (%3 s вычислений на секунду моделирования; пробный прогон %4 s)</translation>
     </message>
@@ -2365,54 +2365,59 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/window_arguments.cpp" line="31"/>
+        <location filename="../app/window_arguments.cpp" line="32"/>
         <source>Collision physics sandbox</source>
         <translation>Песочница для физики столкновений</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="34"/>
+        <location filename="../app/window_arguments.cpp" line="35"/>
         <source>Scene file to open</source>
         <translation>Файл сцены для открытия</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="37"/>
+        <location filename="../app/window_arguments.cpp" line="38"/>
         <source>Save a picture of the window and quit.</source>
         <translation>Сохранить снимок окна и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="38"/>
+        <location filename="../app/window_arguments.cpp" line="39"/>
         <source>file.png</source>
         <translation>файл.png</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="40"/>
+        <location filename="../app/window_arguments.cpp" line="41"/>
         <source>Run the simulation this long before --screenshot.</source>
         <translation>Сколько секунд выполнять симуляцию перед --screenshot.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="41"/>
+        <location filename="../app/window_arguments.cpp" line="42"/>
         <source>seconds</source>
         <translation>секунды</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="42"/>
+        <location filename="../app/window_arguments.cpp" line="43"/>
         <source>Language of the program (en, ru, de).</source>
         <translation>Язык программы (en, ru, de).</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="43"/>
+        <location filename="../app/window_arguments.cpp" line="44"/>
         <source>code</source>
         <translation>код</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="45"/>
+        <location filename="../app/window_arguments.cpp" line="46"/>
         <source>Run a gas of N balls for 5 s with the view at 1280x720, print frame times and the longest GUI stall, and quit.</source>
         <translation>Запустить газ из N шаров на 5 с при виде 1280x720, вывести время кадров и самую долгую задержку интерфейса и выйти.</translation>
     </message>
     <message>
-        <location filename="../app/window_arguments.cpp" line="50"/>
+        <location filename="../app/window_arguments.cpp" line="51"/>
         <source>Run a gas at about 10,000 collisions a second with explosions and sound for S seconds, print the collision rate, frame rate, GUI stalls and memory every 10 s, and quit.</source>
         <translation>Запустить газ примерно с 10 000 столкновений в секунду со взрывами и звуком на S секунд, каждые 10 с выводить частоту столкновений, частоту кадров, задержки GUI и память, затем выйти.</translation>
+    </message>
+    <message>
+        <location filename="../app/window_arguments.cpp" line="57"/>
+        <source>Open the scene file, run it for 5 s, select its last ball in the outline, print how long each took, and quit.</source>
+        <translation>Открыть файл сцены, запустить её на 5 с, выбрать последний шар в структуре, вывести, сколько заняло каждое действие, и выйти.</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,7 @@
 
 #include "app/cli/bench.h"
 #include "app/cli/cli_arguments.h"
+#include "app/cli/file_bench.h"
 #include "app/cli/method_report.h"
 #include "app/cli/run_report.h"
 #include "app/cli/study.h"
@@ -113,6 +114,7 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
       return runScene(*scene, command.run, started, out, err);
     }
     case Command::Bench:
+      if (command.bench.files) return runFileBench(command.bench, out, err);
       return command.bench.timeline ? runTimelineBench(command.bench, out, err)
                                     : runBench(command.bench, out, err);
     case Command::Study: {

@@ -227,9 +227,13 @@ ParseResult parseArguments(const QStringList& arguments) {
         command.bench.quick = true;
       else if (arg == "--timeline")
         command.bench.timeline = true;
+      else if (arg == "--files")
+        command.bench.files = true;
       else
         return failure(QString("unknown bench option '%1'").arg(arg));
     }
+    if (command.bench.timeline && command.bench.files)
+      return failure("--timeline and --files are two benches: give one of them");
     return {command, {}};
   }
   return failure(QString("unknown command '%1'").arg(verb));
@@ -261,7 +265,7 @@ QString usageText() {
       "      chosen. When none meets it, the run exits with 4 unless --accept-closest asks\n"
       "      for the closest.\n"
       "  carom-cli validate SCENE\n"
-      "  carom-cli bench [--quick] [--timeline]\n"
+      "  carom-cli bench [--quick] [--timeline | --files]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"
       "      The Speed vs accuracy study of the window (exact, then swept and discrete with\n"
       "      every integrator and 1/4 to 4 times the scene's time step), each run S seconds\n"

@@ -39,6 +39,7 @@ struct StudyOptions {
 struct BenchOptions {
   bool quick = false;     // small sizes, for a smoke test
   bool timeline = false;  // the timeline's memory and scrub latency instead
+  bool files = false;     // saving, loading and first prediction of a million balls instead
 };
 
 struct Command {

@@ -2,6 +2,7 @@
 
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_format.h"
+#include "sim/prefault.h"
 #include "sim/tolerances.h"
 
 #include <QByteArray>
@@ -565,6 +566,12 @@ Scene read(Cursor& cursor, std::size_t textSize) {
     } else if (key == "balls") {
       const Ball defaults;
       forEachObject(cursor, tolerance::kMaxBalls, [&] {
+        // The room reserved is mapped in a piece at a time, ahead of the balls written to it.
+        constexpr std::size_t kPiece = 16384;
+        std::vector<Ball>& balls = scene.balls;
+        if (balls.size() % kPiece == 0 && balls.size() < balls.capacity())
+          prefaultForWriting(balls.data() + balls.size(),
+                             std::min(kPiece, balls.capacity() - balls.size()) * sizeof(Ball));
         fields.read(cursor, format::kBallKeys);
         Ball& ball = scene.balls.emplace_back();
         ball.position = fields.vector("position");
