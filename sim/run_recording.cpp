@@ -41,7 +41,10 @@ void RunRecording::step(Simulation& live) {
   live.step();
   ++frames_;
   sinceKeyframe_ += std::chrono::steady_clock::now() - begin;
-  if (sinceKeyframe_ >= keyframeSpacing_) addKeyframe(live);
+  const auto spacing = keyframeSpacing_.count() > 0
+                           ? std::max(keyframeSpacing_, kKeyframeCopyFactor * lastCopy_)
+                           : keyframeSpacing_;
+  if (sinceKeyframe_ >= spacing) addKeyframe(live);
 }
 
 void RunRecording::intervene(const Intervention& what, Simulation& live) {
@@ -53,7 +56,9 @@ void RunRecording::intervene(const Intervention& what, Simulation& live) {
 }
 
 void RunRecording::addKeyframe(const Simulation& live) {
+  const auto begin = std::chrono::steady_clock::now();
   auto copy = std::make_unique<Simulation>(live);
+  lastCopy_ = std::chrono::steady_clock::now() - begin;
   // Collisions are the live run's news, for its explosions and sounds; a replay needs none.
   copy->setCollisionLog(false);
   copy->takeCollisions();

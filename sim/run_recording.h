@@ -6,7 +6,8 @@
 //
 // Moments are frames: frame k is the state after the run's k-th step and every intervention
 // made before the next step. Keyframes are spaced by the work of the steps between them (a
-// replay costs about kKeyframeSpacingSeconds); when the recording outgrows its memory budget,
+// replay costs about kKeyframeSpacingSeconds, or kKeyframeCopyFactor copies of a scene so
+// large that copying it takes longer than that); when the recording outgrows its memory budget,
 // every second keyframe is dropped, never the first nor the newest, so older stretches replay
 // more slowly and the newest stays quick.
 
@@ -40,9 +41,13 @@ class RunRecording {
   // Real seconds of stepping between keyframes: the longest a replay of the newest stretch
   // takes.
   static constexpr double kKeyframeSpacingSeconds = 0.05;
+  // And at least this many times what the last keyframe's copy took: a million balls take over
+  // a second to copy, and a keyframe after every step would double the run's cost.
+  static constexpr int kKeyframeCopyFactor = 10;
 
   // Starts recording at `start`'s present state: frame 0. A keyframe follows each
-  // `keyframeSpacingSeconds` of stepping (0: every step).
+  // `keyframeSpacingSeconds` of stepping, or kKeyframeCopyFactor times the last copy's time if
+  // that is longer (0: every step).
   explicit RunRecording(const Simulation& start, std::size_t budgetBytes = kDefaultBudgetBytes,
                         double keyframeSpacingSeconds = kKeyframeSpacingSeconds);
   ~RunRecording();
@@ -97,6 +102,7 @@ class RunRecording {
   std::size_t memoryBytes_ = 0;
   // Real time spent stepping since the newest keyframe.
   std::chrono::steady_clock::duration sinceKeyframe_{};
+  std::chrono::steady_clock::duration lastCopy_{};  // what the newest keyframe's copy took
 };
 
 }  // namespace carom
