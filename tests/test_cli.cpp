@@ -723,8 +723,8 @@ class TestCli : public QObject {
         << QStringList{"run", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("unknown bench option")
         << QStringList{"bench", "--slow"} << QStringList{"--slow"};
-    QTest::newRow("two benches")
-        << QStringList{"bench", "--files", "--timeline"} << QStringList{"--timeline", "--files"};
+    QTest::newRow("two benches") << QStringList{"bench", "--files", "--timeline"}
+                                 << QStringList{"--timeline", "--files"};
     QTest::newRow("unknown study option")
         << QStringList{"study", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("study without a scene")
