@@ -4,7 +4,8 @@
 // earliest is processed, only the balls it changed are predicted again, and predictions that
 // involved a ball changed since are dropped when their time comes (collision counters).
 //
-// Its sliding and its rest decisions are in engine_sliding.cpp and engine_resting.cpp.
+// Its cells and their static shapes are in engine_cells.cpp, its sliding and its rest decisions
+// in engine_sliding.cpp and engine_resting.cpp.
 //
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).

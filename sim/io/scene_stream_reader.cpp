@@ -44,6 +44,14 @@ struct Value {
   int count = 0;
 };
 
+// Qt's compact JSON of an object whose members' texts `members` holds, comma-separated: the text
+// ObjectReader::extra gives for the same unknown members.
+std::string compactObject(QByteArray members) {
+  return QJsonDocument(QJsonDocument::fromJson('{' + members + '}').object())
+      .toJson(QJsonDocument::Compact)
+      .toStdString();
+}
+
 // A member of an object, with the text of `"key": value` as it is in the file.
 struct Member {
   std::string key;
@@ -444,13 +452,10 @@ class Fields {
     for (int k = 0; k < count_; ++k) {
       const Member& member = members_[k];
       if (std::find(known_.begin(), known_.end(), member.key) != known_.end()) continue;
-      text += text.isEmpty() ? '{' : ',';
+      if (!text.isEmpty()) text += ',';
       text.append(member.raw.data(), static_cast<qsizetype>(member.raw.size()));
     }
-    if (text.isEmpty()) return {};
-    text += '}';
-    const QJsonObject object = QJsonDocument::fromJson(text).object();
-    return QJsonDocument(object).toJson(QJsonDocument::Compact).toStdString();
+    return text.isEmpty() ? std::string() : compactObject(text);
   }
 
   void readInfo(ObjectInfo& info) const {
@@ -582,17 +587,12 @@ Scene read(Cursor& cursor, std::size_t textSize) {
       });
     } else {
       cursor.skipValue(1);
-      unknown += unknown.isEmpty() ? '{' : ',';
+      if (!unknown.isEmpty()) unknown += ',';
       unknown.append(start, static_cast<qsizetype>(cursor.position() - start));
     }
   });
   if (!cursor.atEnd() || !formatSeen || version == 0) giveUp();
-  if (!unknown.isEmpty()) {
-    unknown += '}';
-    scene.extra = QJsonDocument(QJsonDocument::fromJson(unknown).object())
-                      .toJson(QJsonDocument::Compact)
-                      .toStdString();
-  }
+  if (!unknown.isEmpty()) scene.extra = compactObject(unknown);
   return scene;
 }
 
