@@ -29,12 +29,7 @@ CellGrid::CellGrid(const Vec3& lower, const Vec3& upper, double minCellSize, std
 }
 
 CellGrid::Coords CellGrid::coordsOf(const Vec3& p) const {
-  Coords c;
-  for (int a = 0; a < 3; ++a) {
-    const double f = std::floor((p[a] - origin_[a]) / size_[a]);
-    c[a] = f < 0.0 ? 0 : (f >= counts_[a] - 1 ? counts_[a] - 1 : static_cast<int>(f));
-  }
-  return c;
+  return {coordOf(0, p.x()), coordOf(1, p.y()), coordOf(2, p.z())};
 }
 
 CellGrid::Coords CellGrid::coords(int cell) const {

@@ -8,6 +8,7 @@
 #include "sim/scene.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -28,6 +29,11 @@ class CellGrid {
   double cellSize(int axis) const { return size_[axis]; }
 
   Coords coordsOf(const Vec3& p) const;
+  // The cell's coordinate along one axis at x (clamped: the border cells reach to infinity).
+  int coordOf(int axis, double x) const {
+    const double f = std::floor((x - origin_[axis]) / size_[axis]);
+    return f < 0.0 ? 0 : (f >= counts_[axis] - 1 ? counts_[axis] - 1 : static_cast<int>(f));
+  }
   int index(const Coords& c) const { return (c[2] * counts_[1] + c[1]) * counts_[0] + c[0]; }
   Coords coords(int cell) const;
 

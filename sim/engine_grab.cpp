@@ -60,14 +60,10 @@ void EventEngine::place(const Vec3& position) {
   Particle& p = particles_[i];
   tracks_[i].motion.position = position;
   tracks_[i].motion.since = now_;
-  p.coords = grid_.coordsOf(position);
-  const int cell = grid_.index(p.coords);
-  if (cell != p.cell) {
-    members_.remove(i);
-    p.cell = cell;
-    members_.insert(i, cell);
-    noteStatics(i);
-  }
+  const CellGrid::Coords coords = levels_[p.level].grid.coordsOf(position);
+  if (coords != p.coords) moveToCell(i, coords);
+  for (int l = p.level + 1; l < static_cast<int>(levels_.size()); ++l)
+    outerCoords(i, l) = levels_[l].grid.coordsOf(position);
   changed(i);
   predict(i);
 }

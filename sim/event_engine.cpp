@@ -77,7 +77,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     energyExcess_.assign(n, 0.0);
     for (int i = 0; i < n; ++i) recordEnergy(i);
   }
-  buildGrid(state);
+  buildGrid();
   buildStaticLists();
   for (int i = 0; i < n; ++i) noteStatics(i);
   predictAll();
@@ -190,27 +190,34 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = predictions_[i].crossing;
-  const CellGrid::Coords& c = particles_[i].coords;
-  if (straightPaths_) {
+  const auto findIn = [&](int l, const CellGrid::Coords& c) {
+    const CellGrid& grid = levels_[l].grid;
+    const auto level = static_cast<std::int8_t>(l);
+    if (straightPaths_) {
+      for (int a = 0; a < 3; ++a) {
+        const double t = straightExitTime(path.position[a], path.velocity[a],
+                                          grid.lowerFace(a, c[a]), grid.upperFace(a, c[a]));
+        if (now_ + t < std::min(next.time, horizon_))
+          next = {now_ + t, static_cast<std::int8_t>(a),
+                  static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
+      }
+      return;
+    }
     for (int a = 0; a < 3; ++a) {
-      const double t = straightExitTime(path.position[a], path.velocity[a],
-                                        grid_.lowerFace(a, c[a]), grid_.upperFace(a, c[a]));
-      if (now_ + t < std::min(next.time, horizon_))
-        next = {now_ + t, static_cast<std::int8_t>(a),
-                static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1)};
+      for (int direction : {1, -1}) {
+        const double face = direction > 0 ? grid.upperFace(a, c[a]) : grid.lowerFace(a, c[a]);
+        const double horizon = std::min(next.time, horizon_) - now_;
+        const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
+                                              path.acceleration[a], face, direction > 0, horizon);
+        if (t < horizon)
+          next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
+                  level};
+      }
     }
-    return;
-  }
-  for (int a = 0; a < 3; ++a) {
-    for (int direction : {1, -1}) {
-      const double face = direction > 0 ? grid_.upperFace(a, c[a]) : grid_.lowerFace(a, c[a]);
-      const double horizon = std::min(next.time, horizon_) - now_;
-      const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
-                                            path.acceleration[a], face, direction > 0, horizon);
-      if (t < horizon)
-        next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction)};
-    }
-  }
+  };
+  const Particle& p = particles_[i];
+  findIn(p.level, p.coords);
+  for (int l = p.level + 1; l < static_cast<int>(levels_.size()); ++l) findIn(l, outerCoords(i, l));
 }
 
 void EventEngine::schedule(int i) {
@@ -234,35 +241,47 @@ void EventEngine::cross(int i, RunStats& stats) {
   ++stats.cellCrossings;
   Particle& p = particles_[i];
   const Crossing crossing = predictions_[i].crossing;
-  p.coords[crossing.axis] += crossing.direction;
-  members_.remove(i);
-  p.cell = grid_.index(p.coords);
-  members_.insert(i, p.cell);
-  noteStatics(i);
+  const bool own = crossing.level == p.level;
+  CellGrid::Coords coords = own ? p.coords : outerCoords(i, crossing.level);
+  coords[crossing.axis] += crossing.direction;
+  const BallPath path = pathAt(i, now_);
   // The path is unchanged, so the contact already predicted stays valid: only the statics of the
   // new cell and the balls in the layer of cells that just came into reach can bring it forward.
-  const BallPath path = pathAt(i, now_);
-  findStaticContact(i, path);
-  CellGrid::Coords layer = p.coords;
+  if (own) {
+    moveToCell(i, coords);
+    findStaticContact(i, path);
+  } else {
+    outerCoords(i, crossing.level) = coords;
+  }
+  const CellLevel& level = levels_[crossing.level];
+  const CellGrid::Coords& counts = level.grid.counts();
+  CellGrid::Coords layer = coords;
   layer[crossing.axis] += crossing.direction;
   int cells[9];
   int cellCount = 0;
-  if (layer[crossing.axis] >= 0 && layer[crossing.axis] < grid_.counts()[crossing.axis]) {
-    const int u = (crossing.axis + 1) % 3, v = (crossing.axis + 2) % 3;
+  const int u = (crossing.axis + 1) % 3, v = (crossing.axis + 2) % 3;
+  if (layer[crossing.axis] >= 0 && layer[crossing.axis] < counts[crossing.axis]) {
     for (int du = -1; du <= 1; ++du) {
       for (int dv = -1; dv <= 1; ++dv) {
         CellGrid::Coords cell = layer;
         cell[u] += du;
         cell[v] += dv;
-        if (cell[u] < 0 || cell[u] >= grid_.counts()[u] || cell[v] < 0 ||
-            cell[v] >= grid_.counts()[v])
-          continue;
-        cells[cellCount++] = grid_.index(cell);
+        if (cell[u] < 0 || cell[u] >= counts[u] || cell[v] < 0 || cell[v] >= counts[v]) continue;
+        cells[cellCount++] = level.firstCell + level.grid.index(cell);
       }
     }
   }
   findBallContacts(i, path, [&](auto&& visit) {
     for (int c = 0; c < cellCount; ++c) members_.forEachIn(cells[c], visit);
+    if (!own || cellCount == 0) return;
+    // The smaller balls under the new layer of its own cells.
+    CellGrid::Coords from = layer, to = layer;
+    for (int a : {u, v}) {
+      --from[a];
+      ++to[a];
+    }
+    for (int l = 0; l < p.level; ++l)
+      forEachFinerCell(l, p.level, from, to, [&](int cell) { members_.forEachIn(cell, visit); });
   });
   predictions_[i].crossing = {};
   findCrossing(i, path);
@@ -274,6 +293,7 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
     const int i = queue_.top();
     now_ = std::max(now_, queue_.topTime());  // time never steps backwards
     process(i, stats, log);
+    rebuildCellsIfCrowded();
   }
   now_ = std::max(now_, end);
   stats.pairTests += pairTests_;
@@ -556,9 +576,13 @@ void EventEngine::notePenetration(double overlap, RunStats& stats) const {
 }
 
 std::string EventEngine::gridSummary() const {
-  const CellGrid::Coords& c = grid_.counts();
-  const std::string grid =
-      "cell grid " + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" + std::to_string(c[2]);
+  std::string grid = levels_.size() > 1 ? "cell grids" : "cell grid";
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    const CellGrid::Coords& c = levels_[l].grid.counts();
+    grid += (l > 0 ? ", " : " ") + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
+            std::to_string(c[2]);
+  }
+  if (levels_.size() > 1) grid += " (" + std::to_string(levels_.size()) + " ball size classes)";
   if (sharedStatics_)
     return grid + ", all " + std::to_string(statics_.size()) + " static shapes in every cell";
   return grid + ", " + std::to_string(statics_.size()) + " static-shape entries in cells";
@@ -602,6 +626,7 @@ std::size_t EventEngine::memoryBytes() const {
          carom::memoryBytes(slideSurfaces_) + carom::memoryBytes(slideAcceleration_) +
          carom::memoryBytes(slideGravity_) + carom::memoryBytes(creaseLine_) +
          carom::memoryBytes(creaseAcceleration_) + members_.memoryBytes() +
+         carom::memoryBytes(outerCoords_) + carom::memoryBytes(levels_) +
          carom::memoryBytes(staticStart_) + carom::memoryBytes(statics_) + queue_.memoryBytes();
 }
 

@@ -7,6 +7,13 @@
 // Its cells and their static shapes are in engine_cells.cpp, its sliding and its rest decisions
 // in engine_sliding.cpp and engine_resting.cpp.
 //
+// Balls of very different sizes live in grids of their own (levels, by size class): cells sized
+// by the largest ball of all would put thousands of small balls in one cell. A ball finds the
+// larger balls it may touch in the cells of their levels around it, and the smaller ones in
+// their levels' cells under its own level's block of 3x3x3 cells (Ogarko and Luding, "A fast
+// multilevel algorithm for contact detection of arbitrarily polydisperse objects", 2012). It
+// follows its position in every larger level's grid by crossing events, as in its own.
+//
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
 
@@ -18,6 +25,7 @@
 #include "sim/motion.h"
 #include "sim/run_stats.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -78,8 +86,9 @@ class EventEngine {
     double radius;
   };
   struct Particle {
-    CellGrid::Coords coords{};
-    int cell = 0;
+    CellGrid::Coords coords{};  // in its level's grid
+    int cell = 0;               // its cell, numbered across all levels
+    std::int8_t level = 0;
     int staticBegin = 0;  // the cell's static shapes in statics_, kept here to save a lookup
     int staticEnd = 0;
     std::uint32_t counter = 0;  // changes whenever the path changes
@@ -104,6 +113,18 @@ class EventEngine {
     double time = std::numeric_limits<double>::infinity();  // absolute
     std::int8_t axis = 0;
     std::int8_t direction = 0;
+    std::int8_t level = 0;  // the ball's own, or a larger one it is followed in
+  };
+  // The balls of one size class and their grid.
+  struct CellLevel {
+    CellGrid grid;
+    int firstCell = 0;  // its cells' first number across all levels
+    double maxRadius = 0.0;
+    int balls = 0;
+    // Balls in the grid's border cells, now and just after it was built: when many more have
+    // wandered out there, the grid is built again around where the balls are.
+    int borderBalls = 0;
+    int builtBorderBalls = 0;
   };
   enum class StaticKind : std::uint8_t { Plane, Cylinder, Box };
   struct StaticRef {
@@ -141,9 +162,36 @@ class EventEngine {
     return staticContact(i, ref, tracks_[i].motion.position);
   }
 
-  void buildGrid(const std::vector<BallState>& state);
+  // The levels and their grids around the balls' positions now.
+  void buildGrid();
   void buildStaticLists();
   void noteStatics(int i);
+  // Files ball i (at its position now) in its level's cell and follows it in the larger levels.
+  void fileBall(int i);
+  void moveToCell(int i, const CellGrid::Coords& coords);
+  // Builds the grids again when a level's border cells hold many more balls than when it was
+  // built (balls spread beyond the region it covers): they would all be one another's
+  // neighbours there.
+  void rebuildCellsIfCrowded();
+  bool isBorderCell(int level, const CellGrid::Coords& c) const {
+    return levels_[level].grid.isBorder(c);
+  }
+  // Ball i's cell coordinates in larger level `level`.
+  CellGrid::Coords& outerCoords(int i, int level) {
+    return outerCoords_[std::size_t(i) * levels_.size() + level];
+  }
+  const CellGrid::Coords& outerCoords(int i, int level) const {
+    return outerCoords_[std::size_t(i) * levels_.size() + level];
+  }
+  // Calls f(cell) for the cells of the level `finer` (numbered across levels) that meet the box
+  // of level `level`'s cells from `from` to `to` (clamped to its grid), with a cell more on
+  // every side against rounding.
+  template <typename F>
+  void forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
+                        F&& f) const;
+  // Calls f(ball) for every ball, other than i, whose cell in any level is near enough to touch i.
+  template <typename F>
+  void forEachNeighbourAcrossLevels(int i, F&& f) const;
   void predictAll();
   // Predicts ball i's next contact and crossing from scratch.
   void predict(int i);
@@ -333,7 +381,11 @@ class EventEngine {
   void notePenetration(double overlap, RunStats& stats) const;
   template <typename F>
   void forEachNeighbour(int i, F&& f) const {
-    grid_.forEachNeighbourCell(particles_[i].coords, [&](int cell) {
+    if (levels_.size() > 1) {
+      forEachNeighbourAcrossLevels(i, f);
+      return;
+    }
+    levels_[0].grid.forEachNeighbourCell(particles_[i].coords, [&](int cell) {
       members_.forEachIn(cell, [&](int k) {
         if (k != i) f(k);
       });
@@ -377,7 +429,9 @@ class EventEngine {
   std::vector<Vec3> slideGravity_;        // gravity along each surface
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
   std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
-  CellGrid grid_;
+  std::vector<CellLevel> levels_;
+  std::vector<CellGrid::Coords> outerCoords_;  // per ball and level (only larger levels used)
+  bool cellsCrowded_ = false;  // a level's border cells are crowded (rebuildCellsIfCrowded)
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell
   bool sharedStatics_ = false;    // every cell uses all of statics_
@@ -390,5 +444,48 @@ class EventEngine {
   int heldPushesInBurst_ = 0;
   double heldLastPush_ = -std::numeric_limits<double>::infinity();
 };
+
+template <typename F>
+void EventEngine::forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
+                                   F&& f) const {
+  const CellGrid& coarse = levels_[level].grid;
+  const CellLevel& fine = levels_[finer];
+  CellGrid::Coords low, high;
+  for (int a = 0; a < 3; ++a) {
+    from[a] = std::max(from[a], 0);
+    to[a] = std::min(to[a], coarse.counts()[a] - 1);
+    if (from[a] > to[a]) return;
+    low[a] = std::max(fine.grid.coordOf(a, coarse.lowerFace(a, from[a])) - 1, 0);
+    high[a] =
+        std::min(fine.grid.coordOf(a, coarse.upperFace(a, to[a])) + 1, fine.grid.counts()[a] - 1);
+  }
+  for (int z = low[2]; z <= high[2]; ++z)
+    for (int y = low[1]; y <= high[1]; ++y)
+      for (int x = low[0]; x <= high[0]; ++x) f(fine.firstCell + fine.grid.index({x, y, z}));
+}
+
+template <typename F>
+void EventEngine::forEachNeighbourAcrossLevels(int i, F&& f) const {
+  const Particle& p = particles_[i];
+  const auto visitCell = [&](int cell) {
+    members_.forEachIn(cell, [&](int k) {
+      if (k != i) f(k);
+    });
+  };
+  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
+    const CellLevel& level = levels_[l];
+    if (l < p.level) {
+      CellGrid::Coords from = p.coords, to = p.coords;
+      for (int a = 0; a < 3; ++a) {
+        --from[a];
+        ++to[a];
+      }
+      forEachFinerCell(l, p.level, from, to, visitCell);
+      continue;
+    }
+    const CellGrid::Coords& around = l == p.level ? p.coords : outerCoords(i, l);
+    level.grid.forEachNeighbourCell(around, [&](int cell) { visitCell(level.firstCell + cell); });
+  }
+}
 
 }  // namespace carom

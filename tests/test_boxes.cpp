@@ -273,7 +273,10 @@ class TestBoxes : public QObject {
                           0.5 * flight * flight * s.world.gravity;
     QVERIFY2((sim.positions()[0] - expected).norm() < 1e-9,
              qPrintable(QString::number((sim.positions()[0] - expected).norm())));
-    QVERIFY2(sim.stats().events < 10, qPrintable(QString::number(sim.stats().events)));
+    // A slide and a flight, not a chatter of contacts (cell crossings aside: the grid covers the
+    // box in cells of a diameter).
+    const std::uint64_t contacts = sim.stats().events - sim.stats().cellCrossings;
+    QVERIFY2(contacts < 10, qPrintable(QString::number(contacts)));
   }
 
   // A ball that reaches a face's edge slower than sqrt(r g_n) cannot fly clear of the edge's

@@ -575,6 +575,26 @@ class TestCli : public QObject {
     }
   }
 
+  // Every placement of the big balls at every ratio, under both methods; the rows with big
+  // balls use two grids, the gas alone one.
+  void benchSizesQuick() {
+    const CliRun run = runCli({"bench", "--sizes", "--quick"}, kBenchTimeoutMs);
+    VERIFY_EXIT(run, 0);
+    QList<QByteArray> rows = nonEmptyLines(run.out);
+    QCOMPARE(rows.size(), 1 + 2 * 3 * 3);
+    QVERIFY2(rows.takeFirst().contains("us/collision"), run.out.constData());
+    for (const QByteArray& row : rows) {
+      const QList<QByteArray> cells = row.simplified().split(' ');
+      QVERIFY2(cells.size() > 12, row.constData());
+      const bool alone = cells[1] == "none";
+      QVERIFY2(cells[0] == "exact" || cells[0] == "swept", row.constData());
+      QCOMPARE(cells[5], alone ? QByteArray("2000") : QByteArray("2004"));
+      bool ok = false;
+      QVERIFY2(cells[7].toDouble(&ok) > 1000.0 && ok, row.constData());  // collisions
+      QVERIFY2(row.contains(alone ? "cell grid " : "(2 ball size classes)"), row.constData());
+    }
+  }
+
   void benchQuick() {
     const CliRun run = runCli({"bench", "--quick"}, kBenchTimeoutMs);
     VERIFY_EXIT(run, 0);
@@ -725,6 +745,8 @@ class TestCli : public QObject {
         << QStringList{"bench", "--slow"} << QStringList{"--slow"};
     QTest::newRow("two benches") << QStringList{"bench", "--files", "--timeline"}
                                  << QStringList{"--timeline", "--files"};
+    QTest::newRow("three benches") << QStringList{"bench", "--sizes", "--files", "--timeline"}
+                                   << QStringList{"--timeline", "--sizes"};
     QTest::newRow("unknown study option")
         << QStringList{"study", scene, "--fast"} << QStringList{"unknown option", "--fast"};
     QTest::newRow("study without a scene")
@@ -986,9 +1008,9 @@ class TestCli : public QObject {
     QVERIFY(!scene.isEmpty());
     QElapsedTimer process;
     process.start();
-    // Long enough that the work, not the process's start, takes most of its time: a discrete
-    // step of this scene is fast since each size class has its grid.
-    const QString duration = method == "discrete" ? "1" : "0.01";
+    // Long enough that the work, not the process's start, takes most of its time: every
+    // method gives each size class a grid of its own, so this scene is fast.
+    const QString duration = method == "exact" ? "30" : "5";
     const CliRun run = runCli({"run", scene, "--duration", duration, "--method", method, "--json"});
     const double processSeconds = process.nsecsElapsed() * 1e-9;
     VERIFY_EXIT(run, 0);

@@ -5,6 +5,7 @@
 #include "app/cli/file_bench.h"
 #include "app/cli/method_report.h"
 #include "app/cli/run_report.h"
+#include "app/cli/size_bench.h"
 #include "app/cli/study.h"
 #include "app/cli/timeline_bench.h"
 #include "sim/io/scene_file.h"
@@ -115,6 +116,7 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
     }
     case Command::Bench:
       if (command.bench.files) return runFileBench(command.bench, out, err);
+      if (command.bench.sizes) return runSizeBench(command.bench, out, err);
       return command.bench.timeline ? runTimelineBench(command.bench, out, err)
                                     : runBench(command.bench, out, err);
     case Command::Study: {

@@ -229,11 +229,13 @@ ParseResult parseArguments(const QStringList& arguments) {
         command.bench.timeline = true;
       else if (arg == "--files")
         command.bench.files = true;
+      else if (arg == "--sizes")
+        command.bench.sizes = true;
       else
         return failure(QString("unknown bench option '%1'").arg(arg));
     }
-    if (command.bench.timeline && command.bench.files)
-      return failure("--timeline and --files are two benches: give one of them");
+    if (int(command.bench.timeline) + int(command.bench.files) + int(command.bench.sizes) > 1)
+      return failure("--timeline, --files and --sizes are three benches: give one of them");
     return {command, {}};
   }
   return failure(QString("unknown command '%1'").arg(verb));
@@ -265,7 +267,7 @@ QString usageText() {
       "      chosen. When none meets it, the run exits with 4 unless --accept-closest asks\n"
       "      for the closest.\n"
       "  carom-cli validate SCENE\n"
-      "  carom-cli bench [--quick] [--timeline | --files]\n"
+      "  carom-cli bench [--quick] [--timeline | --files | --sizes]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"
       "      The Speed vs accuracy study of the window (exact, then swept and discrete with\n"
       "      every integrator and 1/4 to 4 times the scene's time step), each run S seconds\n"

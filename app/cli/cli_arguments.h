@@ -40,6 +40,7 @@ struct BenchOptions {
   bool quick = false;     // small sizes, for a smoke test
   bool timeline = false;  // the timeline's memory and scrub latency instead
   bool files = false;     // saving, loading and first prediction of a million balls instead
+  bool sizes = false;     // the cost of mixed ball sizes instead
 };
 
 struct Command {

@@ -1,0 +1,151 @@
+// The event engine with balls of very different sizes (a grid per size class) and balls that
+// spread far beyond where they started (grids built again): no contact is missed at radius
+// ratios up to 1e3, under `exact` and `swept`, and energy is kept.
+
+#include "sim/scene_builders.h"
+#include "sim/simulation.h"
+#include "tests/scene_helpers.h"
+
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using namespace carom;
+using carom::testing::addMethodRows;
+using carom::testing::makeBall;
+
+namespace {
+
+// The deepest overlap of any two balls, by testing every pair.
+double deepestOverlap(const Simulation& sim, const Scene& scene) {
+  const std::vector<Vec3> at = sim.positions();
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (std::size_t j = i + 1; j < at.size(); ++j) {
+      const double gap = (at[i] - at[j]).norm() - scene.balls[i].radius - scene.balls[j].radius;
+      deepest = std::max(deepest, -gap);
+    }
+  return deepest;
+}
+
+std::string gridNote(const Simulation& sim) {
+  for (const std::string& note : sim.modelNotes())
+    if (note.starts_with("cell grid")) return note;
+  return {};
+}
+
+// A gas of 1 cm balls with two balls `ratio` times larger driven through it from either side,
+// and two more beside them, in a closed room.
+Scene gasWithBigBalls(double ratio, Method method) {
+  const double r = 0.01, big = ratio * r;
+  Scene scene = makeGasInBox(300, 0.2, Vec3::Zero(), 11, r);
+  const double side = scene.planes[1].point.x() - scene.planes[0].point.x();
+  scene.planes.clear();
+  addBoxWalls(scene, 0.5 * side + 3.0 * big + 0.1);
+  const double reach = 0.5 * side + big + 0.001;
+  for (const Vec3& place : {Vec3(-reach, 0.01, 0.0), Vec3(reach, -0.01, 0.0),
+                            Vec3(0.0, 0.0, -2.0 * reach), Vec3(0.0, 0.0, 2.0 * reach)})
+    scene.balls.push_back(makeBall(place, -2.0 * place.normalized(), big, std::pow(ratio, 3.0)));
+  scene.world.method = method;
+  scene.world.timeStep = 0.01;
+  return scene;
+}
+
+}  // namespace
+
+class TestSizeClasses : public QObject {
+  Q_OBJECT
+ private slots:
+  void noContactMissedAcrossSizes_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("ratio");
+    for (Method method : {Method::Exact, Method::Swept})
+      for (double ratio : {3.0, 10.0, 100.0, 1000.0})
+        QTest::newRow((std::string(methodName(method)) + " " + std::to_string(int(ratio))).c_str())
+            << int(method) << ratio;
+  }
+  void noContactMissedAcrossSizes() {
+    QFETCH(int, method);
+    QFETCH(double, ratio);
+    const Scene scene = gasWithBigBalls(ratio, Method(method));
+    Simulation sim(scene);
+    QVERIFY2(gridNote(sim).starts_with("cell grids"), gridNote(sim).c_str());
+    const double initial = sim.totalEnergy();
+    std::uint64_t bigCollisions = 0;
+    for (int sample = 0; sample < 40; ++sample) {
+      sim.advance(0.005);
+      const double overlap = deepestOverlap(sim, scene);
+      QVERIFY2(overlap < 1e-9 * 0.01,
+               qPrintable(QString("t %1: overlap %2 m").arg(sim.time()).arg(overlap)));
+    }
+    bigCollisions = sim.stats().collisions.total();
+    // The big balls went through the gas: many more collisions than the gas makes alone.
+    QVERIFY2(bigCollisions > 1000, qPrintable(QString::number(bigCollisions)));
+    QVERIFY2(std::abs(sim.totalEnergy() - initial) <= 1e-9 * initial,
+             qPrintable(QString("energy %1 -> %2").arg(initial).arg(sim.totalEnergy())));
+  }
+
+  // A marble fired at a boulder a thousand times its radius: one elastic collision, at the
+  // time and with the rebound a head-on collision of these masses has.
+  void marbleOffABoulder_data() { addMethodRows({Method::Exact, Method::Swept}); }
+  void marbleOffABoulder() {
+    QFETCH(int, method);
+    const double r = 0.001, big = 1.0, gap = 0.3, speed = 2.0;
+    const double m = 1.0, M = 1e9;
+    Scene scene;
+    scene.world.gravity = Vec3::Zero();
+    scene.world.method = Method(method);
+    scene.world.timeStep = 0.01;
+    scene.balls.push_back(makeBall(Vec3(0.2, big + r + gap, 0.1), Vec3(0, -speed, 0), r, m));
+    // Off the boulder's axis: it meets the sphere where its surface is at height sqrt(R^2-x^2).
+    scene.balls.push_back(makeBall(Vec3::Zero(), Vec3::Zero(), big, M));
+    Simulation sim(scene);
+    const Vec3 c = scene.balls[0].position;
+    const double surface = std::sqrt((big + r) * (big + r) - c.x() * c.x() - c.z() * c.z());
+    const double tHit = (c.y() - surface) / speed;
+    sim.advance(tHit * 0.999);
+    QCOMPARE(sim.stats().collisions.total(), std::uint64_t(0));
+    sim.advance(tHit * 0.002);
+    QCOMPARE(sim.stats().collisions.total(), std::uint64_t(1));
+    // The marble's velocity along the normal reverses (scaled by the masses), the rest stays.
+    const Vec3 n = Vec3(c.x(), surface, c.z()).normalized();
+    const Vec3 v0(0, -speed, 0);
+    const double vn = v0.dot(n);
+    const Vec3 expected = v0 - vn * n + vn * (m - M) / (m + M) * n;
+    QVERIFY2((sim.velocities()[0] - expected).norm() < 1e-9 * speed,
+             qPrintable(QString("off by %1").arg((sim.velocities()[0] - expected).norm())));
+  }
+
+  // A tight cluster let loose in a room a hundred times its size: its grid, built around it,
+  // is built again as the balls spread, and no contact is lost on the way.
+  void gridsFollowSpreadingBalls_data() { addMethodRows({Method::Exact, Method::Swept}); }
+  void gridsFollowSpreadingBalls() {
+    QFETCH(int, method);
+    Scene scene = makeGasInBox(400, 0.3, Vec3::Zero(), 5, 0.01);
+    const double side = scene.planes[1].point.x() - scene.planes[0].point.x();
+    scene.planes.clear();
+    addBoxWalls(scene, 50.0 * side);
+    for (Ball& ball : scene.balls) ball.velocity *= 5.0;
+    scene.world.method = Method(method);
+    scene.world.timeStep = 0.01;
+    Simulation sim(scene);
+    const std::string before = gridNote(sim);
+    const double initial = sim.totalEnergy();
+    for (int sample = 0; sample < 20; ++sample) {
+      sim.advance(0.05);
+      const double overlap = deepestOverlap(sim, scene);
+      QVERIFY2(overlap < 1e-9 * 0.01,
+               qPrintable(QString("t %1: overlap %2 m").arg(sim.time()).arg(overlap)));
+    }
+    QVERIFY2(gridNote(sim) != before, before.c_str());
+    QVERIFY2(sim.stats().collisions.ballBall > 400,
+             qPrintable(QString::number(sim.stats().collisions.ballBall)));
+    QVERIFY2(std::abs(sim.totalEnergy() - initial) <= 1e-9 * initial,
+             qPrintable(QString("energy %1 -> %2").arg(initial).arg(sim.totalEnergy())));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestSizeClasses)
+#include "test_size_classes.moc"
