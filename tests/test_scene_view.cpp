@@ -156,6 +156,7 @@ class TestSceneView : public QObject {
   void trailsAndVelocityArrowsAreDrawn();
   void renderPictureDrawsAtItsOwnSize();
   void renderPictureWithoutHighlights();
+  void crowdsDrawSmallBallsAsSprites();
 
  private:
   struct ShownView {
@@ -873,6 +874,71 @@ void TestSceneView::renderPictureWithoutHighlights() {
   QCOMPARE(view.renderPicture(picture, size), unselected);
   picture.highlights = true;
   QCOMPARE(view.renderPicture(picture, size), selected);
+}
+
+// From SceneView::kPointSpriteBalls balls on, the small ones are point sprites: one ball more
+// than a crowd drawn as squares (a copy of its first ball, which adds no pixel) draws the same
+// picture, up to the soft edges and highlights of sprites lit in the screen's frame.
+void TestSceneView::crowdsDrawSmallBallsAsSprites() {
+  carom::Scene crowd = testScene();
+  crowd.balls.clear();
+  const int side = 47;  // 103,823 places, for kPointSpriteBalls - 1 balls
+  for (int i = 0; static_cast<int>(crowd.balls.size()) + 1 < SceneView::kPointSpriteBalls; ++i) {
+    carom::Ball b =
+        ball(Vec3(i % side, (i / side) % side, i / (side * side)) * 0.06 + Vec3(-1.4, 0.3, -1.4),
+             "#d04040");
+    b.radius = 0.02;
+    crowd.balls.push_back(b);
+  }
+  carom::Scene sprites = crowd;
+  sprites.balls.push_back(crowd.balls.front());
+  carom::Scene empty = crowd;
+  empty.balls.clear();
+  ShownView shown = showView(crowd);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  // The same camera for all three pictures.
+  const auto picture = [&](const carom::Scene& scene) {
+    view.setScene(std::make_shared<const RenderScene>(makeRenderScene(scene)));
+    view.setBallPositions([&] {
+      std::vector<Vec3> at;
+      for (const carom::Ball& b : scene.balls) at.push_back(b.position);
+      return at;
+    }());
+    const int before = *shown.frames;
+    [&] { QTRY_VERIFY(*shown.frames > before); }();
+    return view.grabFramebuffer();
+  };
+  view.camera();  // fixes the camera where it framed the crowd
+  const QImage squares = picture(crowd);
+  const QImage points = picture(sprites);
+  const QImage room = picture(empty);
+  const auto differs = [](QRgb a, QRgb b, int by) {
+    return std::abs(qRed(a) - qRed(b)) + std::abs(qGreen(a) - qGreen(b)) +
+               std::abs(qBlue(a) - qBlue(b)) >
+           by;
+  };
+  int ballPixels = 0, spritePixels = 0, eitherOnly = 0, unlike = 0;
+  for (int y = 0; y < room.height(); ++y)
+    for (int x = 0; x < room.width(); ++x) {
+      const bool square = differs(squares.pixel(x, y), room.pixel(x, y), 30);
+      const bool sprite = differs(points.pixel(x, y), room.pixel(x, y), 30);
+      ballPixels += square;
+      spritePixels += sprite;
+      eitherOnly += square != sprite;
+      unlike += differs(squares.pixel(x, y), points.pixel(x, y), 60);
+    }
+  const QString figures = QString(
+                              "ball pixels %1 as squares, %2 as sprites, %3 in one only, %4 "
+                              "unlike")
+                              .arg(ballPixels)
+                              .arg(spritePixels)
+                              .arg(eitherOnly)
+                              .arg(unlike);
+  qInfo("%s", qPrintable(figures));
+  QVERIFY2(ballPixels > room.width() * room.height() / 10, qPrintable(figures));
+  QVERIFY2(eitherOnly < ballPixels / 20, qPrintable(figures));
+  QVERIFY2(unlike < ballPixels / 10, qPrintable(figures));
 }
 
 QTEST_MAIN(TestSceneView)

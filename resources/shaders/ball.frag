@@ -1,5 +1,6 @@
 // Follows lighting.glsl, which has the #version line and the shared lighting.
 in vec2 outline;
+flat in float spriteScale;  // 0 for squares
 flat in vec3 light;
 flat in vec3 halfway;
 flat in vec3 worldUp;
@@ -8,12 +9,15 @@ flat in float edgePixels;
 flat in float selected;
 out vec4 fragColor;
 void main() {
-  float fromCenter2 = dot(outline, outline);
+  // A sprite's coordinates run from its top left corner.
+  vec2 at = spriteScale > 0.0 ? (2.0 * gl_PointCoord - 1.0) * vec2(spriteScale, -spriteScale)
+                              : outline;
+  float fromCenter2 = dot(at, at);
   // Coverage of this pixel by the outline, which alpha-to-coverage turns into samples.
   float coverage = clamp((1.0 - sqrt(fromCenter2)) * edgePixels + 0.5, 0.0, 1.0);
   if (coverage <= 0.0) discard;
   // Pixels of the soft edge just outside take the outline's normal.
-  vec3 n = vec3(outline, sqrt(max(1.0 - fromCenter2, 0.0)));
+  vec3 n = vec3(at, sqrt(max(1.0 - fromCenter2, 0.0)));
   vec3 ambient = mix(groundAmbient, skyAmbient, 0.5 + 0.5 * dot(n, worldUp));
   float diffuse = max(dot(n, light), 0.0);
   // The shininess of 40 by squaring, far cheaper than pow() in a software renderer.

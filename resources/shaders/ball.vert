@@ -14,6 +14,10 @@
 //   ball, so a plane, cylinder or ball that does not cut into the ball is drawn in front of it
 //   exactly where it is in front of the sphere, except that two balls overlapping on the
 //   screen are ordered by their centres.
+// - In scenes of very many balls (SceneView::kPointSpriteBalls), balls small on the screen are
+//   point sprites instead: one vertex a ball rather than four and two triangles, with the same
+//   shading in the fragment shader. The ball's frame then takes the screen's axes, which are the
+//   sprite's.
 layout(location = 1) in vec3 center;
 layout(location = 2) in float radius;
 layout(location = 3) in vec4 color;
@@ -21,7 +25,9 @@ uniform mat4 viewProjection;
 uniform vec3 eyePosition;
 uniform vec3 lightDirection;
 uniform float pixelAngle;  // view height over distance, per device pixel
+uniform bool pointSprites;
 out vec2 outline;          // position in the square; the sphere's outline is the unit circle
+flat out float spriteScale;  // point sprites: the sprite's half size over the outline's radius
 // In the ball's frame: x right, y up, z towards the eye.
 flat out vec3 light;
 flat out vec3 halfway;
@@ -41,8 +47,15 @@ void main() {
     return;
   }
   vec3 forward = toCenter / distance;
-  vec3 helper = abs(forward.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-  vec3 right = normalize(cross(forward, helper));
+  vec3 right;
+  if (pointSprites) {
+    // The view's right: the first row of the view matrix, which the projection only scales.
+    vec3 screenRight = vec3(viewProjection[0][0], viewProjection[1][0], viewProjection[2][0]);
+    right = normalize(screenRight - dot(screenRight, forward) * forward);
+  } else {
+    vec3 helper = abs(forward.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    right = normalize(cross(forward, helper));
+  }
   vec3 up = cross(right, forward);
   mat3 toBall = transpose(mat3(right, up, -forward));
   light = toBall * lightDirection;
@@ -54,6 +67,14 @@ void main() {
   edgePixels = outlineRadius / (pixelAngle * distance);
   // Plus a pixel and a half, for the soft edge.
   float halfSize = outlineRadius + 1.5 * pixelAngle * distance;
+  if (pointSprites) {
+    spriteScale = halfSize / outlineRadius;
+    outline = vec2(0.0);
+    gl_PointSize = 2.0 * halfSize / (pixelAngle * distance);
+    gl_Position = viewProjection * vec4(center, 1.0);
+    return;
+  }
+  spriteScale = 0.0;
   outline = corner * (halfSize / outlineRadius);
   gl_Position = viewProjection * vec4(center + halfSize * (corner.x * right + corner.y * up), 1.0);
 }

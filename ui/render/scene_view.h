@@ -5,6 +5,7 @@
 #include "sim/run_stats.h"
 #include "ui/render/camera.h"
 #include "ui/render/explosion_pool.h"
+#include "ui/render/gl_util.h"
 #include "ui/render/render_scene.h"
 
 #include <Eigen/Geometry>
@@ -60,6 +61,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // Sides of a rendered picture, in pixels.
   static constexpr int kMinPictureSide = 16;
   static constexpr int kMaxPictureSide = 8192;
+  // From this many balls on, those small on the screen are drawn as point sprites (ball.vert):
+  // a software renderer spent 1.5 s on the squares of a million balls.
+  static constexpr int kPointSpriteBalls = 100'000;
 
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
@@ -77,7 +81,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void setScene(std::shared_ptr<const RenderScene> scene);
   std::shared_ptr<const RenderScene> scene() const { return scene_; }
   // One position per ball of the scene, in its order; schedules a repaint.
-  void setBallPositions(std::vector<Vec3> positions);
+  void setBallPositions(const std::vector<Vec3>& positions);
   const std::vector<Vec3>& ballPositions() const { return ballPositions_; }
 
   // Whoever changes the camera calls update(). Taking it for writing also stops the view from
@@ -181,7 +185,23 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void drawPicture(const FrameCamera& frame, double pixelHeight,
                    const std::vector<ExplosionPool::Live>& explosions);
   void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
-  void sortBallsFrontToBack(const QVector3D& eye);
+  // Fills the element buffer with the balls nearest first: the squares' triangles, then the
+  // point sprites' vertices (in scenes of kPointSpriteBalls or more, the balls whose sprite fits
+  // the renderer's largest point).
+  void sortBallsFrontToBack(const QVector3D& eye, double pixelAngle);
+  // Replaces the bound buffer's contents, keeping its storage when the size is unchanged: the
+  // frame before has finished (endFrame), so nothing draws from it, and new storage would be
+  // fresh memory to fault in.
+  template <typename T>
+  void uploadReusingStorage(GLenum target, const std::vector<T>& data, GLsizeiptr& storageBytes) {
+    const auto bytes = static_cast<GLsizeiptr>(data.size() * sizeof(T));
+    if (bytes != storageBytes) {
+      glBufferData(target, bytes, data.empty() ? nullptr : data.data(), GL_STREAM_DRAW);
+      storageBytes = bytes;
+    } else if (bytes > 0) {
+      glBufferSubData(target, 0, bytes, data.data());
+    }
+  }
   void drawBalls(const FrameCamera& frame, double pixelHeight);
   // Cylinders, boxes and planes, after the balls.
   void drawStatics(const FrameCamera& frame);
@@ -240,6 +260,17 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   int boxInstanceCount_ = 0;
   float boxGridSpacing_ = 1.0f;
   int uploadedBallCount_ = 0;
+  int squareBallCount_ = 0;  // in the element buffer, before the sprites
+  int spriteBallCount_ = 0;
+  float largestPointSize_ = 1.0f;
+  // What each frame builds for the balls, kept from frame to frame: a million balls make some
+  // 80 MB of them, and fresh memory costs a page fault every 4 KiB (a third of a second here).
+  std::vector<Float3> ballCenterScratch_;
+  std::vector<std::pair<float, GLuint>> ballOrderScratch_;
+  std::vector<std::pair<float, GLuint>> ballSortScratch_;
+  std::vector<GLuint> ballIndexScratch_;
+  GLsizeiptr ballCenterBytes_ = 0;  // the sizes of the GL buffers' storage
+  GLsizeiptr ballIndexBytes_ = 0;
 };
 
 }  // namespace carom::render
