@@ -7,6 +7,7 @@
 #include "sim/memory_bytes.h"
 #include "sim/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -36,6 +37,16 @@ class CellGrid {
   }
   int index(const Coords& c) const { return (c[2] * counts_[1] + c[1]) * counts_[0] + c[0]; }
   Coords coords(int cell) const;
+
+  // The grid's lattice continued beyond it: the cell coordinate at x unclamped (within a range no
+  // sum of coordinates overflows), and the faces of any cell of it. Inside the grid, these are
+  // the cells' own coordinates and faces.
+  int latticeCoordOf(int axis, double x) const {
+    constexpr double kLimit = 1 << 29;
+    return static_cast<int>(
+        std::clamp(std::floor((x - origin_[axis]) / size_[axis]), -kLimit, kLimit));
+  }
+  double latticeFace(int axis, int k) const { return origin_[axis] + k * size_[axis]; }
 
   // Coordinates of the cell's faces along an axis; +-infinity for the outer faces of border cells.
   double lowerFace(int axis, int i) const {

@@ -27,7 +27,7 @@ int sizeClass(double radius, double smallest) {
 void EventEngine::buildGrid() {
   const int n = ballCount();
   levels_.clear();
-  outerCoords_.clear();
+  levelCoords_.clear();
   cellsCrowded_ = false;
   if (n == 0) {
     // A scene without balls (being built in the editor) gets one unit cell.
@@ -54,6 +54,7 @@ void EventEngine::buildGrid() {
     lower[l] = lower[l].cwiseMin(at);
     upper[l] = upper[l].cwiseMax(at);
     levels_[l].maxRadius = std::max(levels_[l].maxRadius, bodies_.radius[i]);
+    levels_[l].minRadius = std::min(levels_[l].minRadius, bodies_.radius[i]);
     ++levels_[l].balls;
   }
   // Each grid covers its balls where they are now, and the finite shapes, where balls go (a
@@ -82,7 +83,26 @@ void EventEngine::buildGrid() {
     cells += level.grid.cellCount();
   }
   members_.reset(cells, n);
-  if (levels_.size() > 1) outerCoords_.resize(std::size_t(n) * levels_.size());
+  // A ball follows a finer level when its box there holds no more than its block of cells in its
+  // own level would hand over to a ball of that level: the grain finds it in the block around
+  // it (forEachNeighbourAcrossLevels). Touching, a ball of radius R and one of radius r are at
+  // most R + r apart along each axis, within the box's reach of cells and one more for where in
+  // its cell each centre is; the grain's block covers one cell of the larger level, at least 2R,
+  // around it, so the box reach of R + r and two of the grains' cells (2r each) more must be
+  // within 2R: R at least 7 r. 8 r keeps a margin for rounding.
+  constexpr double kFollowRatio = 8.0;
+  const int levelCount = static_cast<int>(levels_.size());
+  boxReach_.assign(std::size_t(levelCount) * levelCount, CellGrid::Coords{0, 0, 0});
+  for (int l = 0; l < levelCount; ++l)
+    for (int finer = 0; finer < l; ++finer) {
+      if (levels_[l].minRadius < kFollowRatio * levels_[finer].maxRadius) continue;
+      CellGrid::Coords& reach = boxReach_[std::size_t(l) * levelCount + finer];
+      for (int a = 0; a < 3; ++a)
+        reach[a] = static_cast<int>(std::ceil((levels_[l].maxRadius + levels_[finer].maxRadius) /
+                                              levels_[finer].grid.cellSize(a))) +
+                   1;
+    }
+  if (levelCount > 1) levelCoords_.resize(std::size_t(n) * levelCount);
   for (int i = 0; i < n; ++i) fileBall(i);
   for (CellLevel& level : levels_) level.builtBorderBalls = level.borderBalls;
 }
@@ -95,8 +115,19 @@ void EventEngine::fileBall(int i) {
   p.cell = level.firstCell + level.grid.index(p.coords);
   members_.insert(i, p.cell);
   if (level.grid.isBorder(p.coords)) ++level.borderBalls;
-  for (int l = p.level + 1; l < static_cast<int>(levels_.size()); ++l)
-    outerCoords(i, l) = levels_[l].grid.coordsOf(at);
+  noteLevelCoords(i, at);
+}
+
+void EventEngine::noteLevelCoords(int i, const Vec3& at) {
+  const int own = particles_[i].level;
+  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
+    const CellGrid& grid = levels_[l].grid;
+    if (l > own) {
+      levelCoords(i, l) = grid.coordsOf(at);
+    } else if (l < own && followsFiner(own, l)) {
+      for (int a = 0; a < 3; ++a) levelCoords(i, l)[a] = grid.latticeCoordOf(a, at[a]);
+    }
+  }
 }
 
 void EventEngine::moveToCell(int i, const CellGrid::Coords& coords) {

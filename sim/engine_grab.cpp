@@ -62,8 +62,7 @@ void EventEngine::place(const Vec3& position) {
   tracks_[i].motion.since = now_;
   const CellGrid::Coords coords = levels_[p.level].grid.coordsOf(position);
   if (coords != p.coords) moveToCell(i, coords);
-  for (int l = p.level + 1; l < static_cast<int>(levels_.size()); ++l)
-    outerCoords(i, l) = levels_[l].grid.coordsOf(position);
+  noteLevelCoords(i, position);
   changed(i);
   predict(i);
 }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace carom {
 namespace {
@@ -190,13 +191,20 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = predictions_[i].crossing;
-  const auto findIn = [&](int l, const CellGrid::Coords& c) {
+  // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
+  const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
     const CellGrid& grid = levels_[l].grid;
+    const auto lowerFace = [&](int a) {
+      return lattice ? grid.latticeFace(a, c[a]) : grid.lowerFace(a, c[a]);
+    };
+    const auto upperFace = [&](int a) {
+      return lattice ? grid.latticeFace(a, c[a] + 1) : grid.upperFace(a, c[a]);
+    };
     const auto level = static_cast<std::int8_t>(l);
     if (straightPaths_) {
       for (int a = 0; a < 3; ++a) {
-        const double t = straightExitTime(path.position[a], path.velocity[a],
-                                          grid.lowerFace(a, c[a]), grid.upperFace(a, c[a]));
+        const double t =
+            straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
         if (now_ + t < std::min(next.time, horizon_))
           next = {now_ + t, static_cast<std::int8_t>(a),
                   static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
@@ -205,7 +213,7 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
     }
     for (int a = 0; a < 3; ++a) {
       for (int direction : {1, -1}) {
-        const double face = direction > 0 ? grid.upperFace(a, c[a]) : grid.lowerFace(a, c[a]);
+        const double face = direction > 0 ? upperFace(a) : lowerFace(a);
         const double horizon = std::min(next.time, horizon_) - now_;
         const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
                                               path.acceleration[a], face, direction > 0, horizon);
@@ -216,8 +224,11 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
     }
   };
   const Particle& p = particles_[i];
-  findIn(p.level, p.coords);
-  for (int l = p.level + 1; l < static_cast<int>(levels_.size()); ++l) findIn(l, outerCoords(i, l));
+  findIn(p.level, p.coords, false);
+  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
+    if (l > p.level) findIn(l, levelCoords(i, l), false);
+    if (l < p.level && followsFiner(p.level, l)) findIn(l, levelCoords(i, l), true);
+  }
 }
 
 void EventEngine::schedule(int i) {
@@ -241,47 +252,53 @@ void EventEngine::cross(int i, RunStats& stats) {
   ++stats.cellCrossings;
   Particle& p = particles_[i];
   const Crossing crossing = predictions_[i].crossing;
-  const bool own = crossing.level == p.level;
-  CellGrid::Coords coords = own ? p.coords : outerCoords(i, crossing.level);
-  coords[crossing.axis] += crossing.direction;
+  const int crossed = crossing.level;
+  const bool own = crossed == p.level;
+  const int axis = crossing.axis;
+  CellGrid::Coords coords = own ? p.coords : levelCoords(i, crossed);
+  coords[axis] += crossing.direction;
   const BallPath path = pathAt(i, now_);
   // The path is unchanged, so the contact already predicted stays valid: only the statics of the
-  // new cell and the balls in the layer of cells that just came into reach can bring it forward.
+  // new cell and the balls in the cells that just came into reach can bring it forward.
   if (own) {
     moveToCell(i, coords);
     findStaticContact(i, path);
   } else {
-    outerCoords(i, crossing.level) = coords;
+    levelCoords(i, crossed) = coords;
   }
-  const CellLevel& level = levels_[crossing.level];
-  const CellGrid::Coords& counts = level.grid.counts();
-  CellGrid::Coords layer = coords;
-  layer[crossing.axis] += crossing.direction;
-  int cells[9];
-  int cellCount = 0;
-  const int u = (crossing.axis + 1) % 3, v = (crossing.axis + 2) % 3;
-  if (layer[crossing.axis] >= 0 && layer[crossing.axis] < counts[crossing.axis]) {
-    for (int du = -1; du <= 1; ++du) {
-      for (int dv = -1; dv <= 1; ++dv) {
-        CellGrid::Coords cell = layer;
-        cell[u] += du;
-        cell[v] += dv;
-        if (cell[u] < 0 || cell[u] >= counts[u] || cell[v] < 0 || cell[v] >= counts[v]) continue;
-        cells[cellCount++] = level.firstCell + level.grid.index(cell);
-      }
-    }
-  }
-  findBallContacts(i, path, [&](auto&& visit) {
-    for (int c = 0; c < cellCount; ++c) members_.forEachIn(cells[c], visit);
-    if (!own || cellCount == 0) return;
-    // The smaller balls under the new layer of its own cells.
-    CellGrid::Coords from = layer, to = layer;
-    for (int a : {u, v}) {
+  // What came into reach in the crossed level: the layer of cells ahead of its block, or, in a
+  // finer level it follows, the face of its box ahead.
+  CellGrid::Coords from = coords, to = coords;
+  if (crossed < p.level) {
+    // The box's face ahead: the lattice cell it is now, moved by its reach.
+    CellGrid::Coords ahead = coords;
+    ahead[axis] += crossing.direction * boxReach(p.level, crossed)[axis];
+    std::tie(from, to) = followerBox(i, crossed, ahead);
+    from[axis] = to[axis] = std::clamp(ahead[axis], 0, levels_[crossed].grid.counts()[axis] - 1);
+  } else {
+    for (int a = 0; a < 3; ++a) {
       --from[a];
       ++to[a];
     }
-    for (int l = 0; l < p.level; ++l)
-      forEachFinerCell(l, p.level, from, to, [&](int cell) { members_.forEachIn(cell, visit); });
+    (crossing.direction > 0 ? from : to)[axis] = (crossing.direction > 0 ? to : from)[axis];
+  }
+  findBallContacts(i, path, [&](auto&& visit) {
+    const auto visitCell = [&](int cell) { members_.forEachIn(cell, visit); };
+    forEachCellIn(crossed, from, to, visitCell);
+    if (!own) return;
+    for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
+      if (l < p.level && !followsFiner(p.level, l)) {
+        // The smaller balls under the new layer of its own cells.
+        forEachFinerCell(l, p.level, from, to, visitCell);
+      } else if (l > p.level && followsFiner(l, p.level)) {
+        // Larger balls that follow this level: it may have come into their boxes.
+        levels_[l].grid.forEachNeighbourCell(levelCoords(i, l), [&](int cell) {
+          members_.forEachIn(levels_[l].firstCell + cell, [&](int k) {
+            if (inFollowersBox(i, k)) visit(k);
+          });
+        });
+      }
+    }
   });
   predictions_[i].crossing = {};
   findCrossing(i, path);
@@ -626,7 +643,7 @@ std::size_t EventEngine::memoryBytes() const {
          carom::memoryBytes(slideSurfaces_) + carom::memoryBytes(slideAcceleration_) +
          carom::memoryBytes(slideGravity_) + carom::memoryBytes(creaseLine_) +
          carom::memoryBytes(creaseAcceleration_) + members_.memoryBytes() +
-         carom::memoryBytes(outerCoords_) + carom::memoryBytes(levels_) +
+         carom::memoryBytes(levelCoords_) + carom::memoryBytes(levels_) +
          carom::memoryBytes(staticStart_) + carom::memoryBytes(statics_) + queue_.memoryBytes();
 }
 

@@ -14,6 +14,12 @@
 // multilevel algorithm for contact detection of arbitrarily polydisperse objects", 2012). It
 // follows its position in every larger level's grid by crossing events, as in its own.
 //
+// A ball at least eight times larger than another level's balls follows its cell in that
+// level's grid too, and finds them in the box of cells its own size around it rather than under
+// its block, which is 27 times the volume: every collision of a boulder ploughing through sand
+// predicts it again against every grain so found. A grain then looks for boulders in their
+// level's block around it at each of its own crossings.
+//
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
 
@@ -120,6 +126,7 @@ class EventEngine {
     CellGrid grid;
     int firstCell = 0;  // its cells' first number across all levels
     double maxRadius = 0.0;
+    double minRadius = std::numeric_limits<double>::infinity();
     int balls = 0;
     // Balls in the grid's border cells, now and just after it was built: when many more have
     // wandered out there, the grid is built again around where the balls are.
@@ -169,6 +176,8 @@ class EventEngine {
   // Files ball i (at its position now) in its level's cell and follows it in the larger levels.
   void fileBall(int i);
   void moveToCell(int i, const CellGrid::Coords& coords);
+  // Ball i's coordinates in the other levels' grids, at `at` (levelCoords).
+  void noteLevelCoords(int i, const Vec3& at);
   // Builds the grids again when a level's border cells hold many more balls than when it was
   // built (balls spread beyond the region it covers): they would all be one another's
   // neighbours there.
@@ -176,12 +185,15 @@ class EventEngine {
   bool isBorderCell(int level, const CellGrid::Coords& c) const {
     return levels_[level].grid.isBorder(c);
   }
-  // Ball i's cell coordinates in larger level `level`.
-  CellGrid::Coords& outerCoords(int i, int level) {
-    return outerCoords_[std::size_t(i) * levels_.size() + level];
+  // Ball i's cell coordinates in another level `level`: each larger one, and the smaller ones it
+  // follows (boxReach), there in the grid's lattice continued beyond it, since a large ball
+  // outside a grid of small ones would otherwise have its box reach from the border cell deep
+  // into it.
+  CellGrid::Coords& levelCoords(int i, int level) {
+    return levelCoords_[std::size_t(i) * levels_.size() + level];
   }
-  const CellGrid::Coords& outerCoords(int i, int level) const {
-    return outerCoords_[std::size_t(i) * levels_.size() + level];
+  const CellGrid::Coords& levelCoords(int i, int level) const {
+    return levelCoords_[std::size_t(i) * levels_.size() + level];
   }
   // Calls f(cell) for the cells of the level `finer` (numbered across levels) that meet the box
   // of level `level`'s cells from `from` to `to` (clamped to its grid), with a cell more on
@@ -189,6 +201,37 @@ class EventEngine {
   template <typename F>
   void forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
                         F&& f) const;
+  // How far, in cells of finer level `finer`, a ball of level `level` finds that level's balls
+  // around its cell there; zero when it finds them under its block instead (too close in size).
+  const CellGrid::Coords& boxReach(int level, int finer) const {
+    return boxReach_[std::size_t(level) * levels_.size() + finer];
+  }
+  bool followsFiner(int level, int finer) const { return boxReach(level, finer)[0] > 0; }
+  // The box of cells in finer level `finer` that ball k, which follows it, finds its balls in:
+  // `boxReach` around `around` (its lattice cell there, or a face of it) clamped into the grid,
+  // so that a box beyond the grid still holds the border cells, which reach to infinity.
+  std::pair<CellGrid::Coords, CellGrid::Coords> followerBox(int k, int finer,
+                                                            const CellGrid::Coords& around) const {
+    const CellGrid::Coords& reach = boxReach(particles_[k].level, finer);
+    const CellGrid::Coords& counts = levels_[finer].grid.counts();
+    CellGrid::Coords from, to;
+    for (int a = 0; a < 3; ++a) {
+      from[a] = std::clamp(around[a] - reach[a], 0, counts[a] - 1);
+      to[a] = std::clamp(around[a] + reach[a], 0, counts[a] - 1);
+    }
+    return {from, to};
+  }
+  // Whether ball i's cell is in the box of larger ball k, which follows i's level.
+  bool inFollowersBox(int i, int k) const {
+    const Particle& p = particles_[i];
+    const auto [from, to] = followerBox(k, p.level, levelCoords(k, p.level));
+    for (int a = 0; a < 3; ++a)
+      if (p.coords[a] < from[a] || p.coords[a] > to[a]) return false;
+    return true;
+  }
+  // Calls f(cell) for the cells of level `level` from `from` to `to`, clamped to its grid.
+  template <typename F>
+  void forEachCellIn(int level, CellGrid::Coords from, CellGrid::Coords to, F&& f) const;
   // Calls f(ball) for every ball, other than i, whose cell in any level is near enough to touch i.
   template <typename F>
   void forEachNeighbourAcrossLevels(int i, F&& f) const;
@@ -430,7 +473,8 @@ class EventEngine {
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
   std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
   std::vector<CellLevel> levels_;
-  std::vector<CellGrid::Coords> outerCoords_;  // per ball and level (only larger levels used)
+  std::vector<CellGrid::Coords> levelCoords_;  // per ball and level (only larger levels used)
+  std::vector<CellGrid::Coords> boxReach_;     // per level and finer level (boxReach)
   bool cellsCrowded_ = false;  // a level's border cells are crowded (rebuildCellsIfCrowded)
   CellMembership members_;
   std::vector<int> staticStart_;  // CSR: static shapes near each cell
@@ -444,6 +488,20 @@ class EventEngine {
   int heldPushesInBurst_ = 0;
   double heldLastPush_ = -std::numeric_limits<double>::infinity();
 };
+
+template <typename F>
+void EventEngine::forEachCellIn(int level, CellGrid::Coords from, CellGrid::Coords to,
+                                F&& f) const {
+  const CellLevel& cells = levels_[level];
+  for (int a = 0; a < 3; ++a) {
+    from[a] = std::max(from[a], 0);
+    to[a] = std::min(to[a], cells.grid.counts()[a] - 1);
+    if (from[a] > to[a]) return;
+  }
+  for (int z = from[2]; z <= to[2]; ++z)
+    for (int y = from[1]; y <= to[1]; ++y)
+      for (int x = from[0]; x <= to[0]; ++x) f(cells.firstCell + cells.grid.index({x, y, z}));
+}
 
 template <typename F>
 void EventEngine::forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
@@ -474,6 +532,11 @@ void EventEngine::forEachNeighbourAcrossLevels(int i, F&& f) const {
   };
   for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
     const CellLevel& level = levels_[l];
+    if (l < p.level && followsFiner(p.level, l)) {
+      const auto [from, to] = followerBox(i, l, levelCoords(i, l));
+      forEachCellIn(l, from, to, visitCell);
+      continue;
+    }
     if (l < p.level) {
       CellGrid::Coords from = p.coords, to = p.coords;
       for (int a = 0; a < 3; ++a) {
@@ -483,7 +546,16 @@ void EventEngine::forEachNeighbourAcrossLevels(int i, F&& f) const {
       forEachFinerCell(l, p.level, from, to, visitCell);
       continue;
     }
-    const CellGrid::Coords& around = l == p.level ? p.coords : outerCoords(i, l);
+    const CellGrid::Coords& around = l == p.level ? p.coords : levelCoords(i, l);
+    if (l > p.level && followsFiner(l, p.level)) {
+      // Those whose boxes hold it: it meets no other.
+      level.grid.forEachNeighbourCell(around, [&](int cell) {
+        members_.forEachIn(level.firstCell + cell, [&](int k) {
+          if (inFollowersBox(i, k)) f(k);
+        });
+      });
+      continue;
+    }
     level.grid.forEachNeighbourCell(around, [&](int cell) { visitCell(level.firstCell + cell); });
   }
 }

@@ -619,11 +619,17 @@ void SceneView::uploadBallPositions() {
   positionsDirty_ = false;
   const std::size_t count =
       scene_ ? std::min(ballPositions_.size(), scene_->ballRadii.size()) : std::size_t{0};
-  std::vector<Float3>& centers = ballCenterScratch_;
-  centers.resize(kVerticesPerBall * count);
-  for (std::size_t i = 0; i < count; ++i)
-    std::fill_n(centers.begin() + kVerticesPerBall * i, kVerticesPerBall,
-                toFloat3(ballPositions_[i]));
+  std::vector<float>& centers = ballCenterScratch_;
+  centers.resize(3 * kVerticesPerBall * count);
+  float* at = centers.data();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Float3 centre = toFloat3(ballPositions_[i]);
+    for (std::size_t corner = 0; corner < kVerticesPerBall; ++corner, at += 3) {
+      at[0] = centre.x;
+      at[1] = centre.y;
+      at[2] = centre.z;
+    }
+  }
   glBindBuffer(GL_ARRAY_BUFFER, ballPositionBuffer_);
   uploadReusingStorage(GL_ARRAY_BUFFER, centers, ballCenterBytes_);
   uploadedBallCount_ = static_cast<int>(count);

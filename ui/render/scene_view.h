@@ -5,7 +5,6 @@
 #include "sim/run_stats.h"
 #include "ui/render/camera.h"
 #include "ui/render/explosion_pool.h"
-#include "ui/render/gl_util.h"
 #include "ui/render/render_scene.h"
 
 #include <Eigen/Geometry>
@@ -265,7 +264,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   float largestPointSize_ = 1.0f;
   // What each frame builds for the balls, kept from frame to frame: a million balls make some
   // 80 MB of them, and fresh memory costs a page fault every 4 KiB (a third of a second here).
-  std::vector<Float3> ballCenterScratch_;
+  std::vector<float> ballCenterScratch_;  // x, y, z of each vertex
   std::vector<std::pair<float, GLuint>> ballOrderScratch_;
   std::vector<std::pair<float, GLuint>> ballSortScratch_;
   std::vector<GLuint> ballIndexScratch_;
