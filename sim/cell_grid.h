@@ -38,15 +38,22 @@ class CellGrid {
   int index(const Coords& c) const { return (c[2] * counts_[1] + c[1]) * counts_[0] + c[0]; }
   Coords coords(int cell) const;
 
-  // The grid's lattice continued beyond it: the cell coordinate at x unclamped (within a range no
-  // sum of coordinates overflows), and the faces of any cell of it. Inside the grid, these are
-  // the cells' own coordinates and faces.
-  int latticeCoordOf(int axis, double x) const {
-    constexpr double kLimit = 1 << 29;
-    return static_cast<int>(
-        std::clamp(std::floor((x - origin_[axis]) / size_[axis]), -kLimit, kLimit));
+  // The grid's lattice continued `margin` cells beyond it on every side: the cell coordinate at x
+  // and the faces of any cell of it. Its outermost cells reach to infinity, as the grid's border
+  // cells do, so that a position however far away is in a cell of it. Inside the grid, these are
+  // the grid's own coordinates and faces.
+  int latticeCoordOf(int axis, double x, int margin) const {
+    const double f = std::floor((x - origin_[axis]) / size_[axis]);
+    return static_cast<int>(std::clamp(f, -double(margin), double(counts_[axis] - 1 + margin)));
   }
-  double latticeFace(int axis, int k) const { return origin_[axis] + k * size_[axis]; }
+  double latticeLowerFace(int axis, int k, int margin) const {
+    return k <= -margin ? -std::numeric_limits<double>::infinity()
+                        : origin_[axis] + k * size_[axis];
+  }
+  double latticeUpperFace(int axis, int k, int margin) const {
+    return k >= counts_[axis] - 1 + margin ? std::numeric_limits<double>::infinity()
+                                           : origin_[axis] + (k + 1) * size_[axis];
+  }
 
   // Coordinates of the cell's faces along an axis; +-infinity for the outer faces of border cells.
   double lowerFace(int axis, int i) const {

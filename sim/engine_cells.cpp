@@ -17,9 +17,13 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // Size classes: a ball's is how many times its radius doubles the smallest one's, so that a
 // class's cells, sized by its largest ball, are at most about twice its smallest balls'
-// diameter.
-int sizeClass(double radius, double smallest) {
-  return static_cast<int>(std::floor(std::log2(radius / smallest)));
+// diameter. Radii may span 80 doublings (tol::kMinRadius to tol::kMaxMagnitude): beyond
+// kMaxSizeClasses a class spans several doublings, so that every ball's coordinates in every
+// class's grid (levelCoords) stay within memory.
+constexpr int kMaxSizeClasses = 12;
+
+int sizeClass(double radius, double smallest, int doublingsPerClass) {
+  return static_cast<int>(std::floor(std::log2(radius / smallest))) / doublingsPerClass;
 }
 
 }  // namespace
@@ -35,11 +39,17 @@ void EventEngine::buildGrid() {
     members_.reset(levels_[0].grid.cellCount(), 0);
     return;
   }
-  double smallest = kNever;
-  for (int i = 0; i < n; ++i) smallest = std::min(smallest, bodies_.radius[i]);
+  double smallest = kNever, largest = 0.0;
+  for (int i = 0; i < n; ++i) {
+    smallest = std::min(smallest, bodies_.radius[i]);
+    largest = std::max(largest, bodies_.radius[i]);
+  }
   smallest = std::max(smallest, std::numeric_limits<double>::min());
+  const int doublings = static_cast<int>(std::floor(std::log2(largest / smallest)));
+  const int doublingsPerClass = std::max(1, doublings / kMaxSizeClasses + 1);
   std::vector<int> classes;
-  for (int i = 0; i < n; ++i) classes.push_back(sizeClass(bodies_.radius[i], smallest));
+  for (int i = 0; i < n; ++i)
+    classes.push_back(sizeClass(bodies_.radius[i], smallest, doublingsPerClass));
   std::vector<int> used = classes;
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
@@ -90,17 +100,27 @@ void EventEngine::buildGrid() {
   // its cell each centre is; the grain's block covers one cell of the larger level, at least 2R,
   // around it, so the box reach of R + r and two of the grains' cells (2r each) more must be
   // within 2R: R at least 7 r. 8 r keeps a margin for rounding.
+  //
+  // Following costs a crossing event each finer cell the ball moves across: past a reach of
+  // kMaxBoxReach cells (radius ratios of some thousands, or a finer grid made coarse by its cell
+  // budget) the ball finds the finer balls under its block instead, where they are few.
   constexpr double kFollowRatio = 8.0;
+  constexpr double kMaxBoxReach = 4096.0;
   const int levelCount = static_cast<int>(levels_.size());
   boxReach_.assign(std::size_t(levelCount) * levelCount, CellGrid::Coords{0, 0, 0});
   for (int l = 0; l < levelCount; ++l)
     for (int finer = 0; finer < l; ++finer) {
       if (levels_[l].minRadius < kFollowRatio * levels_[finer].maxRadius) continue;
-      CellGrid::Coords& reach = boxReach_[std::size_t(l) * levelCount + finer];
-      for (int a = 0; a < 3; ++a)
-        reach[a] = static_cast<int>(std::ceil((levels_[l].maxRadius + levels_[finer].maxRadius) /
-                                              levels_[finer].grid.cellSize(a))) +
-                   1;
+      CellGrid::Coords reach{};
+      bool near = true;
+      for (int a = 0; a < 3; ++a) {
+        const double cells = std::ceil((levels_[l].maxRadius + levels_[finer].maxRadius) /
+                                       levels_[finer].grid.cellSize(a)) +
+                             1.0;
+        near = near && cells <= kMaxBoxReach;
+        reach[a] = near ? static_cast<int>(cells) : 0;
+      }
+      if (near) boxReach_[std::size_t(l) * levelCount + finer] = reach;
     }
   if (levelCount > 1) levelCoords_.resize(std::size_t(n) * levelCount);
   for (int i = 0; i < n; ++i) fileBall(i);
@@ -125,7 +145,8 @@ void EventEngine::noteLevelCoords(int i, const Vec3& at) {
     if (l > own) {
       levelCoords(i, l) = grid.coordsOf(at);
     } else if (l < own && followsFiner(own, l)) {
-      for (int a = 0; a < 3; ++a) levelCoords(i, l)[a] = grid.latticeCoordOf(a, at[a]);
+      for (int a = 0; a < 3; ++a)
+        levelCoords(i, l)[a] = grid.latticeCoordOf(a, at[a], latticeMargin(own, l, a));
     }
   }
 }

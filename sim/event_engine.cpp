@@ -192,13 +192,16 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = predictions_[i].crossing;
   // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
+  const Particle& p = particles_[i];
   const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
     const CellGrid& grid = levels_[l].grid;
     const auto lowerFace = [&](int a) {
-      return lattice ? grid.latticeFace(a, c[a]) : grid.lowerFace(a, c[a]);
+      return lattice ? grid.latticeLowerFace(a, c[a], latticeMargin(p.level, l, a))
+                     : grid.lowerFace(a, c[a]);
     };
     const auto upperFace = [&](int a) {
-      return lattice ? grid.latticeFace(a, c[a] + 1) : grid.upperFace(a, c[a]);
+      return lattice ? grid.latticeUpperFace(a, c[a], latticeMargin(p.level, l, a))
+                     : grid.upperFace(a, c[a]);
     };
     const auto level = static_cast<std::int8_t>(l);
     if (straightPaths_) {
@@ -223,7 +226,6 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
       }
     }
   };
-  const Particle& p = particles_[i];
   findIn(p.level, p.coords, false);
   for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
     if (l > p.level) findIn(l, levelCoords(i, l), false);

@@ -182,9 +182,6 @@ class EventEngine {
   // built (balls spread beyond the region it covers): they would all be one another's
   // neighbours there.
   void rebuildCellsIfCrowded();
-  bool isBorderCell(int level, const CellGrid::Coords& c) const {
-    return levels_[level].grid.isBorder(c);
-  }
   // Ball i's cell coordinates in another level `level`: each larger one, and the smaller ones it
   // follows (boxReach), there in the grid's lattice continued beyond it, since a large ball
   // outside a grid of small ones would otherwise have its box reach from the border cell deep
@@ -207,6 +204,11 @@ class EventEngine {
     return boxReach_[std::size_t(level) * levels_.size() + finer];
   }
   bool followsFiner(int level, int finer) const { return boxReach(level, finer)[0] > 0; }
+  // How far beyond the finer grid the lattice a ball of `level` follows there goes along an
+  // axis: past its box's reach, the box holds no cell of the grid but its border.
+  int latticeMargin(int level, int finer, int axis) const {
+    return boxReach(level, finer)[axis] + 1;
+  }
   // The box of cells in finer level `finer` that ball k, which follows it, finds its balls in:
   // `boxReach` around `around` (its lattice cell there, or a face of it) clamped into the grid,
   // so that a box beyond the grid still holds the border cells, which reach to infinity.

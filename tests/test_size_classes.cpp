@@ -118,6 +118,40 @@ class TestSizeClasses : public QObject {
              qPrintable(QString("off by %1").arg((sim.velocities()[0] - expected).norm())));
   }
 
+  // Radii over 30 doublings, more than the engine gives classes of their own: classes then span
+  // several doublings, and contacts across them are still all found. Pairs of neighbours in a
+  // row, each ball twice the last one's radius, fly at each other.
+  void radiiOverManyDoublings_data() { addMethodRows({Method::Exact, Method::Swept}); }
+  void radiiOverManyDoublings() {
+    QFETCH(int, method);
+    Scene scene;
+    scene.world.gravity = Vec3::Zero();
+    scene.world.method = Method(method);
+    scene.world.timeStep = 0.01;
+    double x = 0.0;
+    for (int k = 0; k < 31; ++k) {
+      const double r = 1e-6 * std::pow(2.0, k);
+      x += r;
+      scene.balls.push_back(makeBall(Vec3(x, 0.0, 0.0), Vec3(k % 2 ? -1.0 : 1.0, 0.1, 0.0) * r, r,
+                                     std::pow(2.0, 3 * k)));
+      x += 2.0 * r;  // a gap of a radius to the next
+    }
+    Simulation sim(scene);
+    QVERIFY2(gridNote(sim).find("ball size classes") != std::string::npos, gridNote(sim).c_str());
+    const double initial = sim.totalEnergy();
+    for (int sample = 0; sample < 20; ++sample) {
+      sim.advance(0.1);
+      const double overlap = deepestOverlap(sim, scene);
+      QVERIFY2(overlap < 1e-9 * 1e-6,
+               qPrintable(QString("t %1: overlap %2 m").arg(sim.time()).arg(overlap)));
+    }
+    // Every ball meets its partner: 15 pairs.
+    QVERIFY2(sim.stats().collisions.ballBall >= 15,
+             qPrintable(QString::number(sim.stats().collisions.ballBall)));
+    QVERIFY2(std::abs(sim.totalEnergy() - initial) <= 1e-9 * initial,
+             qPrintable(QString("energy %1 -> %2").arg(initial).arg(sim.totalEnergy())));
+  }
+
   // A tight cluster let loose in a room a hundred times its size: its grid, built around it,
   // is built again as the balls spread, and no contact is lost on the way.
   void gridsFollowSpreadingBalls_data() { addMethodRows({Method::Exact, Method::Swept}); }
