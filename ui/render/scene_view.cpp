@@ -488,21 +488,23 @@ void SceneView::sortBallsFrontToBack(const QVector3D& eye, double pixelAngle) {
   };
   std::vector<GLuint>& indices = ballIndexScratch_;
   indices.resize(kIndicesPerBall * count);
+  // Squares from the front of the buffer, sprites from its back (they cannot meet: a sprite
+  // takes one index, a square six), then the sprites moved to just after the squares, nearest
+  // first again.
   GLuint* square = indices.data();
+  GLuint* sprite = indices.data() + indices.size();
   squareBallCount_ = spriteBallCount_ = 0;
   for (const auto& [distance2, ball] : order) {
     const auto first = static_cast<GLuint>(kVerticesPerBall * ball);
     if (sprites && fitsSprite(distance2, ball)) {
       ++spriteBallCount_;
+      *--sprite = first;
       continue;
     }
     ++squareBallCount_;
     for (GLuint corner : {0u, 1u, 2u, 2u, 1u, 3u}) *square++ = first + corner;
   }
-  // The sprites after the squares, nearest first too.
-  if (spriteBallCount_ > 0)
-    for (const auto& [distance2, ball] : order)
-      if (fitsSprite(distance2, ball)) *square++ = static_cast<GLuint>(kVerticesPerBall * ball);
+  square = std::reverse_copy(sprite, indices.data() + indices.size(), square);
   indices.resize(static_cast<std::size_t>(square - indices.data()));
   uploadReusingStorage(GL_ELEMENT_ARRAY_BUFFER, indices, ballIndexBytes_);
 }
