@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QSignalSpy>
+#include <QTimer>
 #include <QWheelEvent>
 #include <QtTest>
 
@@ -157,6 +158,7 @@ class TestSceneView : public QObject {
   void renderPictureDrawsAtItsOwnSize();
   void renderPictureWithoutHighlights();
   void crowdsDrawSmallBallsAsSprites();
+  void hugeScenesAreDrawnInPieces();
 
  private:
   struct ShownView {
@@ -939,6 +941,58 @@ void TestSceneView::crowdsDrawSmallBallsAsSprites() {
   QVERIFY2(ballPixels > room.width() * room.height() / 10, qPrintable(figures));
   QVERIFY2(eitherOnly < ballPixels / 20, qPrintable(figures));
   QVERIFY2(unlike < ballPixels / 10, qPrintable(figures));
+}
+
+// A picture of kPiecewiseBalls or more is drawn offscreen in pieces, with events handled between
+// them; the view shows the last whole picture until the next is whole, and that is the picture
+// drawn at once.
+void TestSceneView::hugeScenesAreDrawnInPieces() {
+  carom::Scene crowd = testScene();
+  crowd.balls.clear();
+  const int count = SceneView::kPiecewiseBalls + 2 * SceneView::kMaxPieceBalls;
+  const int side = 78;  // 474,552 places
+  const char* colors[] = {"#d04040", "#40d040", "#4040d0"};
+  for (int i = 0; i < count; ++i) {
+    carom::Ball b =
+        ball(Vec3(i % side, (i / side) % side, i / (side * side)) * 0.05 + Vec3(-1.7, 0.3, -1.7),
+             colors[i % 3]);
+    b.radius = 0.018;
+    crowd.balls.push_back(b);
+  }
+  ShownView shown = showView(crowd);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY_WITH_TIMEOUT(*shown.frames > 0, 60000);
+  view.camera();  // fixes the camera where it framed the crowd
+  const QImage first = view.grabFramebuffer();
+
+  std::vector<Vec3> moved;
+  for (const carom::Ball& b : crowd.balls) moved.push_back(b.position + Vec3(0.6, 0.0, 0.0));
+  int turns = 0;  // of the event loop, while the next picture is drawn
+  QTimer turn;
+  turn.setInterval(0);
+  QObject::connect(&turn, &QTimer::timeout, [&turns] { ++turns; });
+  QObject::connect(&view, &SceneView::frameRendered, &turn, &QTimer::stop);
+  const int before = *shown.frames;
+  view.setBallPositions(moved);
+  turn.start();
+  // Until the moved picture is whole, the one before shows, never a part of the next.
+  QCOMPARE(view.grabFramebuffer(), first);
+  QTRY_VERIFY_WITH_TIMEOUT(*shown.frames > before, 60000);
+  // At least four pieces of balls, the sort before them and the shapes after.
+  QVERIFY2(turns >= 5, qPrintable(QString::number(turns)));
+  const QImage pieces = view.grabFramebuffer();
+  QVERIFY(pieces != first);
+  const QImage atOnce = view.renderPicture(view.picture(), pieces.size());
+  QCOMPARE(atOnce.size(), pieces.size());
+  int unlike = 0, ballPixels = 0;
+  for (int y = 0; y < pieces.height(); ++y)
+    for (int x = 0; x < pieces.width(); ++x) {
+      unlike += pieces.pixel(x, y) != atOnce.pixel(x, y);
+      ballPixels += hasAnyBallHue(pieces.pixel(x, y));
+    }
+  QVERIFY2(ballPixels > pieces.width() * pieces.height() / 10,
+           qPrintable(QString::number(ballPixels)));
+  QCOMPARE(unlike, 0);
 }
 
 QTEST_MAIN(TestSceneView)

@@ -166,6 +166,9 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+  // First, so that a start being made from the document is finished while all is whole, and
+  // restarts nothing of this window from here on.
+  delete sync_;
   // Closing the window moves the focus, which commits a value being typed in a dock: the
   // document takes it, but this half-destroyed window must no longer hear of it. Nor of the
   // undo stack, which announces its texts as it clears itself on the way out.

@@ -40,11 +40,10 @@ constexpr const char* kRecentFilesKey = "files/recent";
 SceneFiles::SceneFiles(editor::SceneDocument* document, QWidget* dialogParent, QObject* parent)
     : QObject(parent), document_(document), dialogParent_(dialogParent) {}
 
-void SceneFiles::openScene(const carom::Scene& scene, const QString& fileName,
-                           const QString& title) {
+void SceneFiles::openScene(carom::Scene scene, const QString& fileName, const QString& title) {
   emit sceneAboutToOpen();
   openedExample_ = -1;
-  document_->reset(scene, fileName, title);
+  document_->reset(std::move(scene), fileName, title);
   emit sceneOpened();
 }
 
@@ -64,13 +63,13 @@ bool SceneFiles::open() {
 
 bool SceneFiles::openFile(const QString& fileName, bool askToSave) {
   if (askToSave && !maybeSave()) return false;
-  const io::SceneLoadResult loaded = io::loadSceneFile(fileName);
+  io::SceneLoadResult loaded = io::loadSceneFile(fileName);
   if (!loaded.scene) {
     // The open scene stays as it was.
     QMessageBox::warning(dialogParent_, tr("Cannot Open Scene"), loaded.error);
     return false;
   }
-  openScene(*loaded.scene, QFileInfo(fileName).absoluteFilePath());
+  openScene(std::move(*loaded.scene), QFileInfo(fileName).absoluteFilePath());
   addRecentFile(document_->fileName());
   return true;
 }

@@ -24,7 +24,7 @@ class SceneFiles : public QObject {
 
   // Shows `scene` (valid) as the document read from `fileName` (empty for a new scene; `title`
   // then names it in the title bar and in Save As). Discards unsaved changes.
-  void openScene(const carom::Scene& scene, const QString& fileName, const QString& title = {});
+  void openScene(carom::Scene scene, const QString& fileName, const QString& title = {});
   // File > New: a new scene, once the user has answered about unsaved changes.
   bool newScene();
   // File > Open: asks about unsaved changes, then for a file.

@@ -4,6 +4,11 @@
 #include "ui/editor/running_state.h"
 #include "ui/editor/scene_document.h"
 #include "ui/simulation_controller.h"
+#include "ui/simulation_snapshot.h"
+
+#include <chrono>
+#include <utility>
+#include <vector>
 
 namespace carom::ui {
 
@@ -11,6 +16,13 @@ SimulationSync::SimulationSync(editor::SceneDocument* document, SimulationContro
                                QObject* parent)
     : QObject(parent), document_(document), simulation_(simulation) {
   connect(document_, &editor::SceneDocument::sceneChanged, this, &SimulationSync::documentChanged);
+  // The thread making a start reads the document: it must not change under it.
+  connect(document_, &editor::SceneDocument::aboutToChange, this, &SimulationSync::finishStart,
+          Qt::DirectConnection);
+}
+
+SimulationSync::~SimulationSync() {
+  if (pendingStart_.valid()) pendingStart_.wait();
 }
 
 void SimulationSync::documentChanged(const editor::SceneChange& change) {
@@ -20,39 +32,76 @@ void SimulationSync::documentChanged(const editor::SceneChange& change) {
     if (change.world) simulation_->setWorld(document_->scene().world);
     return;
   }
+  finishStart();
   const bool keepRunningState = applyToRunningState_ && start_ && !change.replaced;
-  auto start = std::make_shared<const Scene>(keepRunningState ? withRunningState(change)
-                                                              : document_->scene());
-  start_ = start;
-  startNumber_ = simulation_->loadScene(start);
-  emit restarted(start);
+  std::shared_ptr<const Scene> runningFrom = keepRunningState ? start_ : nullptr;
+  // The run's state is of use only if it is of the last start: the worker may not have answered
+  // that restart yet.
+  std::shared_ptr<const SimulationSnapshot> snapshot =
+      keepRunningState ? simulation_->latest() : nullptr;
+  if (snapshot && snapshot->startNumber != startNumber_) snapshot.reset();
+  const Scene& edited = document_->scene();
+  if (edited.balls.size() < kBackgroundBalls) {
+    restart(makeStart(edited, change, runningFrom, snapshot));
+    return;
+  }
+  // The start before goes with the thread, which frees it if it is the last to hold it: a
+  // million balls took 50 ms to free.
+  pendingStart_ = std::async(std::launch::async, [this, &edited, change, runningFrom, snapshot,
+                                                  previous = std::move(start_)]() mutable {
+    Start start = makeStart(edited, change, runningFrom, snapshot);
+    runningFrom.reset();
+    previous.reset();
+    QMetaObject::invokeMethod(this, &SimulationSync::startMade, Qt::QueuedConnection);
+    return start;
+  });
 }
 
-// The edited scene, with every ball the edit left alone where the running simulation has it.
-// When that state would overlap what the edit added, the edited scene as it is.
-Scene SimulationSync::withRunningState(const editor::SceneChange& change) {
-  const Scene& edited = document_->scene();
-  // The run's state in the order of the scene before this change. A snapshot of an older start
-  // (the worker has not yet answered the last restart) is of no use: that start is, then.
-  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
+void SimulationSync::finishStart() {
+  if (pendingStart_.valid()) restart(pendingStart_.get());
+}
+
+void SimulationSync::startMade() {
+  // A later start may be under way by now (the document changed and took the one this notice
+  // is of): that one sends its own notice.
+  if (pendingStart_.valid() &&
+      pendingStart_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    finishStart();
+}
+
+void SimulationSync::restart(Start start) {
+  if (!start.unfitRunningState.empty())
+    emit message(
+        tr("The edit does not fit the running state (%1): restarted from the edited scene.")
+            .arg(QString::fromStdString(start.unfitRunningState)));
+  start_ = std::move(start.scene);
+  startNumber_ = simulation_->loadScene(start_);
+  emit restarted(start_);
+}
+
+// The edited scene, with every ball the edit left alone where the running simulation has it
+// (`snapshot`, or where it started from when there is none yet); when that state would overlap
+// what the edit added, or there is no running state, the edited scene as it is.
+SimulationSync::Start SimulationSync::makeStart(
+    const Scene& edited, const editor::SceneChange& change,
+    const std::shared_ptr<const Scene>& runningFrom,
+    const std::shared_ptr<const SimulationSnapshot>& snapshot) {
+  if (!runningFrom) return {std::make_shared<const Scene>(edited), {}};
+  // The run's state in the order of the scene before this change.
   std::vector<Vec3> positions, velocities;
-  if (snapshot && snapshot->startNumber == startNumber_) {
+  if (snapshot) {
     positions = snapshot->positions;
     velocities = snapshot->velocities;
   } else {
-    for (const Ball& ball : start_->balls) {
+    for (const Ball& ball : runningFrom->balls) {
       positions.push_back(ball.position);
       velocities.push_back(ball.velocity);
     }
   }
-  const Scene start = editor::withRunningBalls(edited, change, positions, velocities);
-  if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty()) {
-    emit message(
-        tr("The edit does not fit the running state (%1): restarted from the edited scene.")
-            .arg(QString::fromStdString(errors.front().text())));
-    return edited;
-  }
-  return start;
+  Scene start = editor::withRunningBalls(edited, change, positions, velocities);
+  if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty())
+    return {std::make_shared<const Scene>(edited), errors.front().text()};
+  return {std::make_shared<const Scene>(std::move(start)), {}};
 }
 
 }  // namespace carom::ui

@@ -60,6 +60,7 @@ class SceneEditCommand : public QUndoCommand {
   std::optional<World> worldAfter;
 
   void redo() override {
+    emit document_->aboutToChange();
     Scene& scene = document_->scene_;
     remove(scene, removed);
     insert(scene, inserted, insertedObjects);
@@ -68,6 +69,7 @@ class SceneEditCommand : public QUndoCommand {
     document_->changed({worldAfter.has_value(), false, removed, inserted, edited}, selectionAfter_);
   }
   void undo() override {
+    emit document_->aboutToChange();
     Scene& scene = document_->scene_;
     assign(scene, edited, editedBefore);
     remove(scene, inserted);
@@ -122,13 +124,18 @@ Scene SceneDocument::newScene() {
   return scene;
 }
 
-void SceneDocument::reset(const Scene& scene, const QString& fileName, const QString& title) {
+SceneDocument::~SceneDocument() {
+  emit aboutToChange();
+}
+
+void SceneDocument::reset(Scene scene, const QString& fileName, const QString& title) {
+  emit aboutToChange();
   undoStack_.clear();
   // clear() leaves an empty stack's clean state alone, and a recovered scene's was unset.
   undoStack_.setClean();
   fileName_ = fileName;
   title_ = title;
-  scene_ = scene;
+  scene_ = std::move(scene);  // a copy of a million balls took a second
   SceneChange change;
   change.world = change.replaced = true;
   changed(change, {});
@@ -151,6 +158,7 @@ QString SceneDocument::editObjects(const Selection& refs, const Scene& values, c
   const Selection local = extractedRefs(sorted);
   if (extract(values, local) == before) return {};  // nothing to do
   // Tried in place, then put back: the command makes the change.
+  emit aboutToChange();
   assign(scene_, sorted, values);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(sorted), 1);
   assign(scene_, sorted, before);
@@ -166,6 +174,7 @@ QString SceneDocument::editObjects(const Selection& refs, const Scene& values, c
 QString SceneDocument::addObjects(const Scene& objects, const QString& text) {
   const std::size_t sizes[kObjectKindCount] = {scene_.balls.size(), scene_.planes.size(),
                                                scene_.cylinders.size(), scene_.boxes.size()};
+  emit aboutToChange();
   const Selection added = append(scene_, objects);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(added), 1);
   scene_.balls.resize(sizes[int(ObjectKind::Ball)]);

@@ -16,6 +16,7 @@ class SceneDocument : public QObject {
   Q_OBJECT
  public:
   explicit SceneDocument(QObject* parent = nullptr);
+  ~SceneDocument() override;
 
   const Scene& scene() const { return scene_; }
   QUndoStack* undoStack() { return &undoStack_; }
@@ -29,7 +30,7 @@ class SceneDocument : public QObject {
 
   // New and Open: `scene` (valid) replaces the document's, unmodified, with an empty history.
   // `title` names a scene that has no file yet.
-  void reset(const Scene& scene, const QString& fileName, const QString& title = {});
+  void reset(Scene scene, const QString& fileName, const QString& title = {});
   // Renames a scene that has no file yet (an example's title in another language).
   void setTitle(const QString& title);
   // What File > New gives: the default world and a floor at y = 0 to build on.
@@ -64,6 +65,9 @@ class SceneDocument : public QObject {
  signals:
   // After every change of the scene: an edit, undo, redo or reset.
   void sceneChanged(const carom::editor::SceneChange& change);
+  // Before the scene is written to in any way, and before it is destroyed: whoever reads it on
+  // another thread finishes here (connect directly).
+  void aboutToChange();
   void selectionChanged();
   // The file name or the title changed, and with them displayName().
   void displayNameChanged();

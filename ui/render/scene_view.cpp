@@ -3,7 +3,9 @@
 #include "ui/render/explosion_renderer.h"
 #include "ui/render/gl_util.h"
 #include "ui/render/line_renderer.h"
-#include "ui/render/multisample_target.h"
+#include "ui/render/render_target.h"
+
+#include "sim/prefault.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -16,6 +18,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -101,7 +104,7 @@ void sortNearestFirst(std::vector<std::pair<float, GLuint>>& order,
                       std::vector<std::pair<float, GLuint>>& scratch) {
   constexpr int kDigitBits = 11;
   constexpr std::uint32_t kDigits = 1u << kDigitBits;
-  scratch.resize(order.size());
+  resizePrefaulted(scratch, order.size());
   std::vector<std::pair<float, GLuint>>* from = &order;
   std::vector<std::pair<float, GLuint>>* to = &scratch;
   for (int shift = 0; shift < 32; shift += kDigitBits) {
@@ -148,6 +151,9 @@ SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
   explosionFrameTimer_.setSingleShot(true);
   explosionFrameTimer_.setInterval(kExplosionFrameMilliseconds);
   connect(&explosionFrameTimer_, &QTimer::timeout, this, qOverload<>(&QWidget::update));
+  pieceTimer_.setSingleShot(true);
+  pieceTimer_.setInterval(0);  // events waiting are handled first
+  connect(&pieceTimer_, &QTimer::timeout, this, &SceneView::drawNextPiece);
 }
 
 SceneView::~SceneView() {
@@ -177,21 +183,39 @@ void SceneView::setDefaultFormat() {
 void SceneView::setScene(std::shared_ptr<const RenderScene> scene) {
   const bool first = scene_ == nullptr;
   scene_ = std::move(scene);
-  ballPositions_ = scene_ ? scene_->initialBallPositions : std::vector<Vec3>();
+  // Into the storage it has: a fresh copy of a million positions faulted in for 0.1 s.
+  if (scene_)
+    ballPositions_.assign(scene_->initialBallPositions.begin(), scene_->initialBallPositions.end());
+  else
+    ballPositions_.clear();
   if (followedBall_ >= static_cast<int>(ballPositions_.size())) setFollowedBall(-1);
   if (scene_ && first) camera_.home(scene_->bounds);
   staticDataDirty_ = true;
+  markBallAttributesDirty();
   positionsDirty_ = true;
   explosions_.clear();  // they belong to the old scene's collisions
+  cancelPicture();      // its sizes and order are the old scene's
   followBall();
-  update();
+  contentChanged();
 }
 
 void SceneView::setBallPositions(const std::vector<Vec3>& positions) {
   ballPositions_.assign(positions.begin(), positions.end());
   positionsDirty_ = true;
   followBall();
+  contentChanged();
+}
+
+void SceneView::contentChanged() {
+  ++contentVersion_;
   update();
+}
+
+QSize SceneView::devicePixelSize() const {
+  const auto devicePixels = [this](int length) {
+    return std::max(1, static_cast<int>(std::lround(length * devicePixelRatioF())));
+  };
+  return QSize(devicePixels(width()), devicePixels(height()));
 }
 
 Camera& SceneView::camera() {
@@ -243,19 +267,19 @@ void SceneView::addExplosions(const std::vector<carom::CollisionRecord>& collisi
   const double now = clockSeconds();
   for (const carom::CollisionRecord& collision : collisions)
     explosions_.add(collision.point, explosionSize(scene_.get(), collision), now);
-  update();
+  contentChanged();
 }
 
 void SceneView::setExplosionsEnabled(bool enabled) {
   if (enabled == explosionsEnabled_) return;
   explosionsEnabled_ = enabled;
   if (!enabled) explosions_.clear();
-  update();
+  contentChanged();
 }
 
 void SceneView::setExplosionLimit(int limit) {
   explosions_.setLimit(limit);
-  update();
+  contentChanged();
 }
 
 void SceneView::frameScene() {
@@ -293,9 +317,11 @@ void SceneView::initializeGL() {
   QOpenGLFunctions_3_3_Core* const gl = this;  // a protected base: make_unique cannot see it
   lineRenderer_ = std::make_unique<LineRenderer>(gl);
   explosionRenderer_ = std::make_unique<ExplosionRenderer>(gl);
-  multisample_ = std::make_unique<MultisampleTarget>(gl, multisamples(gl));
+  multisample_ = std::make_unique<RenderTarget>(gl, multisamples(gl));
+  for (auto& target : pictureTargets_) target = std::make_unique<RenderTarget>(gl, 0);
   glReady_ = true;
   staticDataDirty_ = true;
+  markBallAttributesDirty();
   positionsDirty_ = true;
 }
 
@@ -447,7 +473,10 @@ void SceneView::createBoxBuffers() {
 void SceneView::releaseGl() {
   if (!glReady_) return;
   glReady_ = false;
+  cancelPicture();
+  shownTarget_ = -1;
   multisample_.reset();
+  for (auto& target : pictureTargets_) target.reset();
   ballProgram_.reset();
   planeProgram_.reset();
   cylinderProgram_.reset();
@@ -472,7 +501,7 @@ void SceneView::sortBallsFrontToBack(const QVector3D& eye, double pixelAngle) {
   const std::size_t count = static_cast<std::size_t>(uploadedBallCount_);
   const Vec3 eyePoint(eye.x(), eye.y(), eye.z());
   std::vector<std::pair<float, GLuint>>& order = ballOrderScratch_;
-  order.resize(count);
+  resizePrefaulted(order, count);
   for (std::size_t i = 0; i < count; ++i)
     order[i] = {static_cast<float>((ballPositions_[i] - eyePoint).squaredNorm()),
                 static_cast<GLuint>(i)};
@@ -487,7 +516,7 @@ void SceneView::sortBallsFrontToBack(const QVector3D& eye, double pixelAngle) {
     return beyond2 > 0.0 && 4.0 * r * r < largestDiameter * largestDiameter * beyond2;
   };
   std::vector<GLuint>& indices = ballIndexScratch_;
-  indices.resize(kIndicesPerBall * count);
+  resizePrefaulted(indices, kIndicesPerBall * count);
   // Squares from the front of the buffer, sprites from its back (they cannot meet: a sprite
   // takes one index, a square six), then the sprites moved to just after the squares, nearest
   // first again.
@@ -516,22 +545,22 @@ void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
   highlightedCylinders_ = std::move(cylinders);
   highlightedBoxes_ = std::move(boxes);
   staticDataDirty_ = true;
-  update();
+  contentChanged();
 }
 
 void SceneView::setHandleArrows(std::vector<std::pair<Vec3, Vec3>> arrows) {
   handleArrows_ = std::move(arrows);
-  update();
+  contentChanged();
 }
 
 void SceneView::setTrails(std::vector<Trail> trails) {
   trails_ = std::move(trails);
-  update();
+  contentChanged();
 }
 
 void SceneView::setVelocityArrows(std::vector<Arrow> arrows) {
   velocityArrows_ = std::move(arrows);
-  update();
+  contentChanged();
 }
 
 Eigen::AlignedBox3d SceneView::clipBox() const {
@@ -547,27 +576,19 @@ void SceneView::setAntialiasing(bool on) {
   const bool before = antialiasing();
   antialiasingChoice_ = on;
   if (antialiasing() != before) emit antialiasingChanged(antialiasing());
-  update();
+  contentChanged();
 }
 
 void SceneView::uploadStaticData() {
   staticDataDirty_ = false;
-  std::vector<BallAttributes> balls;
+  uploadBallAttributes(std::numeric_limits<std::size_t>::max());
   std::vector<PlaneVertex> planeVertices;
   std::vector<CylinderInstance> cylinders;
   std::vector<BoxInstance> boxes;
   if (scene_) {
-    const std::vector<bool> selectedBalls = membership(highlightedBalls_, scene_->ballRadii.size());
     const std::vector<bool> selectedPlanes = membership(highlightedPlanes_, scene_->planes.size());
     const std::vector<bool> selectedCylinders =
         membership(highlightedCylinders_, scene_->cylinders.size());
-    for (std::size_t i = 0; i < scene_->ballRadii.size(); ++i) {
-      const QColor color = i < scene_->ballColors.size() ? scene_->ballColors[i] : QColor(Qt::gray);
-      PackedColor packed = pack(color);
-      if (selectedBalls[i]) packed.a = 0;
-      balls.insert(balls.end(), kVerticesPerBall,
-                   {static_cast<float>(scene_->ballRadii[i]), packed});
-    }
     const double spacing = scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0;
     for (std::size_t index = 0; index < scene_->planes.size(); ++index) {
       const RenderPlane& plane = scene_->planes[index];
@@ -608,7 +629,6 @@ void SceneView::uploadStaticData() {
     }
     boxGridSpacing_ = static_cast<float>(scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0);
   }
-  uploadBuffer(this, ballAttributeBuffer_, balls, GL_STATIC_DRAW);
   uploadBuffer(this, planeVertexBuffer_, planeVertices, GL_STATIC_DRAW);
   uploadBuffer(this, cylinderInstanceBuffer_, cylinders, GL_STATIC_DRAW);
   planeVertexCount_ = static_cast<int>(planeVertices.size());
@@ -617,12 +637,68 @@ void SceneView::uploadStaticData() {
   boxInstanceCount_ = static_cast<int>(boxes.size());
 }
 
+void SceneView::markBallAttributesDirty() {
+  ballAttributesDirty_ = true;
+  attributesUploaded_ = 0;
+}
+
+// A ball's radius and colour, with the colour's alpha 0 when it is highlighted, for each of its
+// vertices. When only highlights changed, only their balls are uploaded: the whole buffer of a
+// million balls took 170-270 ms to build and upload at each change of the selection, in one
+// 32 MB array. Whole uploads go through a small array, a piece at a time.
+bool SceneView::uploadBallAttributes(std::size_t mostBalls) {
+  const std::size_t count = scene_ ? scene_->ballRadii.size() : 0;
+  const std::vector<bool> highlighted = membership(highlightedBalls_, count);
+  const auto attributes = [&](std::size_t ball, BallAttributes* vertices) {
+    const QColor color =
+        ball < scene_->ballColors.size() ? scene_->ballColors[ball] : QColor(Qt::gray);
+    PackedColor packed = pack(color);
+    if (highlighted[ball]) packed.a = 0;
+    std::fill_n(vertices, kVerticesPerBall,
+                BallAttributes{static_cast<float>(scene_->ballRadii[ball]), packed});
+    uploadedBallHighlights_[ball] = highlighted[ball];
+  };
+  constexpr auto kBallBytes = static_cast<GLsizeiptr>(kVerticesPerBall * sizeof(BallAttributes));
+  glBindBuffer(GL_ARRAY_BUFFER, ballAttributeBuffer_);
+  if (!ballAttributesDirty_ && uploadedBallHighlights_.size() == count) {
+    std::array<BallAttributes, kVerticesPerBall> vertices;
+    for (std::size_t ball = 0; ball < count; ++ball) {
+      if (highlighted[ball] == uploadedBallHighlights_[ball]) continue;
+      attributes(ball, vertices.data());
+      glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(ball) * kBallBytes, kBallBytes,
+                      vertices.data());
+    }
+    return true;
+  }
+  if (attributesUploaded_ == 0) {
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(count) * kBallBytes, nullptr,
+                 GL_STATIC_DRAW);
+    uploadedBallHighlights_.assign(count, false);
+  }
+  constexpr std::size_t kBallsAtOnce = 16'384;
+  std::vector<BallAttributes> part(kVerticesPerBall * std::min(count, kBallsAtOnce));
+  const std::size_t end =
+      count - attributesUploaded_ > mostBalls ? attributesUploaded_ + mostBalls : count;
+  while (attributesUploaded_ < end) {
+    const std::size_t balls = std::min(kBallsAtOnce, end - attributesUploaded_);
+    for (std::size_t k = 0; k < balls; ++k)
+      attributes(attributesUploaded_ + k, part.data() + kVerticesPerBall * k);
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(attributesUploaded_) * kBallBytes,
+                    static_cast<GLsizeiptr>(balls) * kBallBytes, part.data());
+    attributesUploaded_ += balls;
+  }
+  if (attributesUploaded_ < count) return false;
+  ballAttributesDirty_ = false;
+  attributesUploaded_ = 0;
+  return true;
+}
+
 void SceneView::uploadBallPositions() {
   positionsDirty_ = false;
   const std::size_t count =
       scene_ ? std::min(ballPositions_.size(), scene_->ballRadii.size()) : std::size_t{0};
   std::vector<float>& centers = ballCenterScratch_;
-  centers.resize(3 * kVerticesPerBall * count);
+  resizePrefaulted(centers, 3 * kVerticesPerBall * count);
   float* at = centers.data();
   for (std::size_t i = 0; i < count; ++i) {
     const Float3 centre = toFloat3(ballPositions_[i]);
@@ -638,6 +714,10 @@ void SceneView::uploadBallPositions() {
 }
 
 void SceneView::paintGL() {
+  if (drawsInPieces()) {
+    showLastPicture();
+    return;
+  }
   QElapsedTimer timer;
   timer.start();
   if (staticDataDirty_) uploadStaticData();
@@ -656,31 +736,36 @@ void SceneView::drawPicture(const FrameCamera& frame, double pixelHeight,
   // Balls first: most of the walls and floor behind them then fail the depth test before their
   // shading runs, which is most of the frame on a software renderer.
   drawBalls(frame, pixelHeight);
+  drawAfterBalls(frame, explosions, trails_, velocityArrows_, handleArrows_);
+}
+
+void SceneView::drawAfterBalls(const FrameCamera& frame,
+                               const std::vector<ExplosionPool::Live>& explosions,
+                               const std::vector<Trail>& trails,
+                               const std::vector<Arrow>& velocityArrows,
+                               const std::vector<Arrow>& handleArrows) {
   drawStatics(frame);
   if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
-  for (const Trail& trail : trails_)
+  for (const Trail& trail : trails)
     lineRenderer_->drawPath(frame.viewProjection, trail.points, trail.color);
   explosionRenderer_->draw(frame.viewProjection, frame.eye, explosions);
-  for (const auto& [base, tip] : velocityArrows_)
+  for (const auto& [base, tip] : velocityArrows)
     lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kVelocityColor);
-  for (const auto& [base, tip] : handleArrows_)
+  for (const auto& [base, tip] : handleArrows)
     lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
 }
 
 void SceneView::advanceExplosions() {
   explosions_.update(clockSeconds());
   // Explosions fade with time, so frames must keep coming while any show, even when nothing
-  // else changes (a paused simulation).
-  if (!explosions_.empty() && !explosionFrameTimer_.isActive()) explosionFrameTimer_.start();
+  // else changes (a paused simulation). Pictures drawn in pieces follow each other anyway.
+  if (!explosions_.empty() && !explosionFrameTimer_.isActive() && !drawsInPieces())
+    explosionFrameTimer_.start();
 }
 
 bool SceneView::beginFrame() {
-  const auto devicePixels = [this](int length) {
-    return std::max(1, static_cast<int>(std::lround(length * devicePixelRatioF())));
-  };
   const bool multisampled = antialiasing() && multisample_->samples() > 1 &&
-                            multisample_->bind(QSize(devicePixels(width()), devicePixels(height())),
-                                               defaultFramebufferObject());
+                            multisample_->bind(devicePixelSize(), defaultFramebufferObject());
   clearFrame();
   return multisampled;
 }
@@ -709,30 +794,49 @@ void SceneView::useProgram(QOpenGLShaderProgram& program, const FrameCamera& fra
 }
 
 void SceneView::drawBalls(const FrameCamera& frame, double pixelHeight) {
-  glDisable(GL_CULL_FACE);
-  if (uploadedBallCount_ == 0) return;
-  useProgram(*ballProgram_, frame);
-  // Per device pixel, so that the soft edge is a pixel wide on any screen.
-  const double deviceHeight = std::max(1.0, pixelHeight);
+  drawBallRange(frame, pixelHeight, 0, prepareBalls(frame, pixelHeight));
+}
+
+// Per device pixel, so that the soft edge is a pixel wide on any screen.
+double SceneView::pixelAngle(double pixelHeight) const {
   const double viewHeightAtUnitDistance =
       2.0 * std::tan(0.5 * camera_.verticalFov() * std::numbers::pi / 180.0);
-  const double pixelAngle = viewHeightAtUnitDistance / deviceHeight;
-  ballProgram_->setUniformValue("pixelAngle", static_cast<float>(pixelAngle));
-  ballProgram_->setUniformValue("pointSprites", false);
+  return viewHeightAtUnitDistance / std::max(1.0, pixelHeight);
+}
+
+int SceneView::prepareBalls(const FrameCamera& frame, double pixelHeight) {
+  if (uploadedBallCount_ == 0) return 0;
   glBindVertexArray(ballVao_);
-  sortBallsFrontToBack(frame.eye, pixelAngle);
+  sortBallsFrontToBack(frame.eye, pixelAngle(pixelHeight));
+  return squareBallCount_ + spriteBallCount_;
+}
+
+void SceneView::drawBallRange(const FrameCamera& frame, double pixelHeight, int first, int count) {
+  glDisable(GL_CULL_FACE);
+  if (count <= 0) return;
+  useProgram(*ballProgram_, frame);
+  ballProgram_->setUniformValue("pixelAngle", static_cast<float>(pixelAngle(pixelHeight)));
+  glBindVertexArray(ballVao_);
   // The squares face the camera by construction; alpha-to-coverage gives the impostor outline
   // the same smooth edge multisampling gives triangles. Alpha itself stays 1 in the image.
   glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
-  glDrawElements(GL_TRIANGLES, kIndicesPerBall * squareBallCount_, GL_UNSIGNED_INT, nullptr);
-  if (spriteBallCount_ > 0) {
+  const int end = first + count;
+  const auto offset = [](int index) {
+    return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(index) * sizeof(GLuint));
+  };
+  if (first < squareBallCount_) {
+    ballProgram_->setUniformValue("pointSprites", false);
+    const int squares = std::min(end, squareBallCount_) - first;
+    glDrawElements(GL_TRIANGLES, kIndicesPerBall * squares, GL_UNSIGNED_INT,
+                   offset(kIndicesPerBall * first));
+  }
+  if (end > squareBallCount_) {
     glEnable(GL_PROGRAM_POINT_SIZE);
     ballProgram_->setUniformValue("pointSprites", true);
-    const auto offset =
-        static_cast<std::uintptr_t>(kIndicesPerBall * squareBallCount_) * sizeof(GLuint);
-    glDrawElements(GL_POINTS, spriteBallCount_, GL_UNSIGNED_INT,
-                   reinterpret_cast<const void*>(offset));
+    const int firstSprite = std::max(first, squareBallCount_) - squareBallCount_;
+    glDrawElements(GL_POINTS, end - squareBallCount_ - firstSprite, GL_UNSIGNED_INT,
+                   offset(kIndicesPerBall * squareBallCount_ + firstSprite));
     glDisable(GL_PROGRAM_POINT_SIZE);
   }
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

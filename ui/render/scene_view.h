@@ -1,6 +1,7 @@
 #pragma once
-// The 3D view of a running scene: OpenGL 3.3 core, all balls in one instanced draw call of
-// ray-cast spheres, and additive sparks where they collide.
+// The 3D view of a running scene: OpenGL 3.3 core, the balls as ray-cast impostors nearest
+// first, and additive sparks where they collide. Huge scenes are drawn in pieces
+// (scene_view_pieces.cpp), so that the window stays responsive while a picture is drawn.
 
 #include "sim/run_stats.h"
 #include "ui/render/camera.h"
@@ -19,6 +20,7 @@
 #include <QTimer>
 #include <QVector3D>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -31,7 +33,7 @@ namespace carom::render {
 
 class ExplosionRenderer;
 class LineRenderer;
-class MultisampleTarget;
+class RenderTarget;
 
 class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Q_OBJECT
@@ -63,6 +65,16 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // From this many balls on, those small on the screen are drawn as point sprites (ball.vert):
   // a software renderer spent 1.5 s on the squares of a million balls.
   static constexpr int kPointSpriteBalls = 100'000;
+  // From this many balls on, a picture is drawn offscreen in pieces of at most kMaxPieceBalls
+  // balls, each taking about kPieceMilliseconds, and the GUI thread handles events between
+  // them; the view shows the last whole picture meanwhile. A software renderer takes 0.6 s to
+  // draw a million balls, which would otherwise stall the whole window at every frame.
+  static constexpr int kPiecewiseBalls = 250'000;
+  static constexpr int kMaxPieceBalls = 100'000;
+  static constexpr int kMinPieceBalls = 5'000;
+  static constexpr double kPieceMilliseconds = 25.0;
+  // A new scene's ball radii and colours are uploaded this many at a piece (about 1 us each).
+  static constexpr int kAttributePieceBalls = 25'000;
 
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
@@ -141,7 +153,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void frameScene();
 
  signals:
-  // After each paintGL, with how long it took including the GPU's work.
+  // After each picture, with how long drawing it took including the GPU's work: after each
+  // paintGL, or after the last piece of a picture drawn in pieces (the sum of its pieces).
   void frameRendered(double milliseconds);
   void followedBallChanged(int index);
   void antialiasingChanged(bool on);
@@ -163,6 +176,28 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     QVector3D eye;
     QVector3D light;  // towards the light, unit length
   };
+  // What a picture shows; the view draws a new one in pieces when this differs.
+  struct PictureKey {
+    std::uint64_t content = 0;  // contentVersion_
+    QMatrix4x4 viewProjection;
+    QSize size;
+    bool antialiasing = false;
+    bool operator==(const PictureKey& other) const = default;
+  };
+  // The picture being drawn in pieces: what it was given when its first piece began.
+  struct PiecewisePicture {
+    bool drawing = false;
+    int nextBall = -1;  // in drawing order; -1 before the first piece uploaded and sorted
+    PictureKey key;
+    FrameCamera frame;
+    double pixelHeight = 1.0;
+    bool multisampled = false;
+    std::vector<ExplosionPool::Live> explosions;
+    std::vector<Trail> trails;
+    std::vector<Arrow> velocityArrows;
+    std::vector<Arrow> handleArrows;
+    double workMilliseconds = 0.0;
+  };
 
   void detectSoftwareRenderer();
   void createBallBuffers();
@@ -173,6 +208,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void releaseGl();
   double clockSeconds() const;
   void uploadStaticData();
+  // Uploads at most `mostBalls` balls' attributes when all must be uploaded, and returns
+  // whether they all are; else uploads the highlights that changed.
+  bool uploadBallAttributes(std::size_t mostBalls);
+  void markBallAttributesDirty();
   void uploadBallPositions();
   void advanceExplosions();
   // Binds the framebuffer to draw into and clears it; true if it is the multisampled one.
@@ -183,6 +222,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // Everything after the clear, into the bound framebuffer `pixelHeight` device pixels high.
   void drawPicture(const FrameCamera& frame, double pixelHeight,
                    const std::vector<ExplosionPool::Live>& explosions);
+  // What drawPicture draws after the balls.
+  void drawAfterBalls(const FrameCamera& frame, const std::vector<ExplosionPool::Live>& explosions,
+                      const std::vector<Trail>& trails, const std::vector<Arrow>& velocityArrows,
+                      const std::vector<Arrow>& handleArrows);
   void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
   // Fills the element buffer with the balls nearest first: the squares' triangles, then the
   // point sprites' vertices (in scenes of kPointSpriteBalls or more, the balls whose sprite fits
@@ -202,6 +245,28 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     }
   }
   void drawBalls(const FrameCamera& frame, double pixelHeight);
+  // The angle of one device pixel at the centre of a picture `pixelHeight` pixels high.
+  double pixelAngle(double pixelHeight) const;
+  // Sorts the balls for drawing (sortBallsFrontToBack); returns how many there are to draw.
+  int prepareBalls(const FrameCamera& frame, double pixelHeight);
+  // Balls [first, first + count) in drawing order: the squares, then the sprites.
+  void drawBallRange(const FrameCamera& frame, double pixelHeight, int first, int count);
+  // Marks what the view shows as changed and schedules a repaint.
+  void contentChanged();
+  QSize devicePixelSize() const;
+  // Drawing in pieces (scene_view_pieces.cpp).
+  bool drawsInPieces() const;
+  PictureKey currentPictureKey() const;
+  // paintGL's part when drawing in pieces: shows the last whole picture, and starts the next
+  // when what the view shows has changed since the last one began.
+  void showLastPicture();
+  void drawNextPiece();
+  // Returns true when the picture is whole.
+  bool drawPiece();
+  bool bindPieceTarget();
+  int pieceBalls() const;
+  // Stops the picture being drawn; the next paint starts another.
+  void cancelPicture();
   // Cylinders, boxes and planes, after the balls.
   void drawStatics(const FrameCamera& frame);
   // Leaves the GL state as Qt's compositing expects it, once the GPU is done.
@@ -228,18 +293,30 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   bool softwareRenderer_ = false;
   QElapsedTimer clock_;
   QTimer explosionFrameTimer_;  // keeps frames coming while explosions fade
+  std::uint64_t contentVersion_ = 0;
+
+  // Drawing in pieces: two framebuffers in turn, one drawn while the other is shown.
+  QTimer pieceTimer_;
+  PiecewisePicture piecewise_;
+  std::optional<PictureKey> drawnKey_;  // of the picture shown or being drawn
+  int shownTarget_ = -1;                // into pictureTargets_, -1 before the first picture
+  double ballsPerMillisecond_ = 0.0;    // measured in the last piece of balls
 
   // GL state, valid between initializeGL and releaseGl.
   bool glReady_ = false;
   bool staticDataDirty_ = true;
   bool positionsDirty_ = true;
+  bool ballAttributesDirty_ = true;     // else only highlights that changed are uploaded
+  std::size_t attributesUploaded_ = 0;  // balls, while all are being uploaded
+  std::vector<bool> uploadedBallHighlights_;
   std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
   std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
   std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
   std::unique_ptr<QOpenGLShaderProgram> boxProgram_;
   std::unique_ptr<LineRenderer> lineRenderer_;
   std::unique_ptr<ExplosionRenderer> explosionRenderer_;
-  std::unique_ptr<MultisampleTarget> multisample_;
+  std::unique_ptr<RenderTarget> multisample_;
+  std::array<std::unique_ptr<RenderTarget>, 2> pictureTargets_;
   GLuint ballVao_ = 0;
   GLuint planeVao_ = 0;
   GLuint cylinderVao_ = 0;

@@ -1,7 +1,7 @@
 // SceneView's pictures: what the view shows, drawn offscreen at any size (File > Export Image,
 // Export Video) through the same code that draws the view.
 
-#include "ui/render/multisample_target.h"
+#include "ui/render/render_target.h"
 #include "ui/render/scene_view.h"
 
 #include <QOpenGLFramebufferObject>
@@ -22,6 +22,8 @@ SceneView::Picture SceneView::picture() const {
 QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
   const auto inRange = [](int side) { return side >= kMinPictureSide && side <= kMaxPictureSide; };
   if (!inRange(size.width()) || !inRange(size.height()) || !glReady_) return {};
+  // It uploads into the buffers a picture drawn in pieces is drawn from.
+  if (piecewise_.drawing) cancelPicture();
   makeCurrent();
   // The picture's content stands in for the view's while it is drawn, through the same code
   // that draws the view; the view's own is put back after.
@@ -42,6 +44,7 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
     ownHighlights[2] = std::exchange(highlightedCylinders_, {});
     ownHighlights[3] = std::exchange(highlightedBoxes_, {});
   }
+  if (otherScene) markBallAttributesDirty();
   if (otherScene || staticDataDirty_ || plain) uploadStaticData();
   uploadBallPositions();
 
@@ -79,6 +82,7 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
     highlightedBoxes_ = std::move(ownHighlights[3]);
   }
   if (otherScene || plain) staticDataDirty_ = true;
+  if (otherScene) markBallAttributesDirty();
   positionsDirty_ = true;
   doneCurrent();
   return image;

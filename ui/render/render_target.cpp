@@ -1,4 +1,4 @@
-#include "ui/render/multisample_target.h"
+#include "ui/render/render_target.h"
 
 #include <QtGlobal>
 
@@ -6,14 +6,18 @@
 
 namespace carom::render {
 
-MultisampleTarget::MultisampleTarget(QOpenGLFunctions_3_3_Core* gl, GLint samples)
+RenderTarget::RenderTarget(QOpenGLFunctions_3_3_Core* gl, GLint samples)
     : gl_(gl), samples_(samples) {}
 
-MultisampleTarget::~MultisampleTarget() {
+RenderTarget::~RenderTarget() {
   release();
 }
 
-bool MultisampleTarget::bind(const QSize& size, GLuint fallback) {
+bool RenderTarget::bind(const QSize& size, GLuint fallback) {
+  if (failed_) {
+    gl_->glBindFramebuffer(GL_FRAMEBUFFER, fallback);
+    return false;
+  }
   if (framebuffer_ == 0 || size != size_) {
     release();
     gl_->glGenFramebuffers(1, &framebuffer_);
@@ -33,9 +37,10 @@ bool MultisampleTarget::bind(const QSize& size, GLuint fallback) {
     gl_->glBindRenderbuffer(GL_RENDERBUFFER, 0);
     size_ = size;
     if (gl_->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      qWarning("SceneView: no multisampled framebuffer; drawing without antialiasing");
+      qWarning(samples_ > 0 ? "SceneView: no multisampled framebuffer; drawing without antialiasing"
+                            : "SceneView: no framebuffer for drawing in pieces; drawing at once");
       release();
-      samples_ = 0;
+      failed_ = true;
       gl_->glBindFramebuffer(GL_FRAMEBUFFER, fallback);
       return false;
     }
@@ -44,15 +49,19 @@ bool MultisampleTarget::bind(const QSize& size, GLuint fallback) {
   return true;
 }
 
-void MultisampleTarget::blitTo(GLuint target) {
+void RenderTarget::blitTo(GLuint target, QSize targetSize) {
+  if (targetSize.isEmpty()) targetSize = size_;
   gl_->glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   gl_->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-  gl_->glBlitFramebuffer(0, 0, size_.width(), size_.height(), 0, 0, size_.width(), size_.height(),
-                         GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  // A multisampled source must be resolved at its own size; only a plain one is scaled.
+  const GLenum filter = targetSize == size_ || samples_ > 0 ? GL_NEAREST : GL_LINEAR;
+  if (samples_ > 0) targetSize = size_;
+  gl_->glBlitFramebuffer(0, 0, size_.width(), size_.height(), 0, 0, targetSize.width(),
+                         targetSize.height(), GL_COLOR_BUFFER_BIT, filter);
   gl_->glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 
-void MultisampleTarget::release() {
+void RenderTarget::release() {
   if (framebuffer_ == 0) return;
   gl_->glDeleteFramebuffers(1, &framebuffer_);
   const std::array<GLuint, 2> buffers = {color_, depth_};
