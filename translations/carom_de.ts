@@ -509,12 +509,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="106"/>
+        <location filename="../ui/editor/scene_document.cpp" line="108"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="120"/>
+        <location filename="../ui/editor/scene_document.cpp" line="122"/>
         <source>floor</source>
         <translation>Boden</translation>
     </message>
@@ -1379,416 +1379,335 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="565"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="509"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="562"/>
+        <location filename="../ui/main_window.cpp" line="483"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="564"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
-        <source>Gravity</source>
-        <translation>Schwerkraft</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
-        <source>Gravity %1</source>
-        <translation>Schwerkraft %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="534"/>
-        <source>Gravity %1 (m/s²)</source>
-        <translation>Schwerkraft %1 (m/s²)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
-        <source>Change Gravity</source>
-        <translation>Schwerkraft ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="536"/>
-        <source>Step</source>
-        <translation>Schritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
-        <source>Time step</source>
-        <translation>Zeitschritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="538"/>
-        <source>Time step in seconds (+ and - keys)</source>
-        <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="304"/>
-        <source>Change Time Step</source>
-        <translation>Zeitschritt ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
-        <source>Change Method</source>
-        <translation>Methode ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="547"/>
-        <source>Integrator of the swept and discrete methods</source>
-        <translation>Integrator der Methoden swept und discrete</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="343"/>
-        <source>Change Integrator</source>
-        <translation>Integrator ändern</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="516"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="690"/>
+        <location filename="../ui/main_window.cpp" line="584"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="314"/>
-        <source>Auto: piloting the scene under 13 settings…</source>
-        <translation>Auto: Vorlauf der Szene mit 13 Einstellungen …</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="403"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>Export &amp;Video…</source>
         <translation>&amp;Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="517"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="518"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
-        <source>World</source>
-        <translation>Welt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="540"/>
-        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
-        <translation>Exakt (ereignisgesteuert), überstrichene oder diskrete Schritte; auto: die günstigste, die die Genauigkeit erreicht, per kurzem Vorlauf ermittelt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
-        <location filename="../ui/main_window.cpp" line="543"/>
-        <source>Accuracy</source>
-        <translation>Genauigkeit</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
-        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
-        <translation>Toleranz von auto: der relative Energiefehler je simulierter Sekunde (und ein Eindringen von höchstens 5 % des Radius)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="569"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="570"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="778"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="519"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="866"/>
+        <location filename="../ui/main_window.cpp" line="760"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="554"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="566"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1849,82 +1768,82 @@
         <translation>Murmelbahn</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="60"/>
+        <location filename="../ui/scene_files.cpp" line="59"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="61"/>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Carom-Szenen (*.carom *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="70"/>
+        <location filename="../ui/scene_files.cpp" line="69"/>
         <source>Cannot Open Scene</source>
         <translation>Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="107"/>
+        <location filename="../ui/scene_files.cpp" line="106"/>
         <source>an unsaved scene</source>
         <translation>eine ungespeicherte Szene</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="109"/>
+        <location filename="../ui/scene_files.cpp" line="108"/>
         <source>Recover Scene</source>
         <translation>Szene wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="110"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom wurde nicht richtig beendet, während %1 ungespeicherte Änderungen hatte. Die um %2 gesicherte Kopie kann wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="115"/>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="117"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="118"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>Not &amp;Now</source>
         <translation>&amp;Später</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="126"/>
+        <location filename="../ui/scene_files.cpp" line="125"/>
         <source>Cannot Recover Scene</source>
         <translation>Szene kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="150"/>
+        <location filename="../ui/scene_files.cpp" line="149"/>
         <source>Save Scene</source>
         <translation>Szene speichern</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="151"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Carom-Szenen (*.carom);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="162"/>
+        <location filename="../ui/scene_files.cpp" line="161"/>
         <source>Cannot Save Scene</source>
         <translation>Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="167"/>
+        <location filename="../ui/scene_files.cpp" line="166"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="175"/>
+        <location filename="../ui/scene_files.cpp" line="174"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="176"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -1932,7 +1851,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="51"/>
+        <location filename="../ui/simulation_sync.cpp" line="75"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
     </message>
@@ -2349,6 +2268,90 @@
         <location filename="../ui/watch_tolerance_dialog.cpp" line="41"/>
         <source>Penetration:</source>
         <translation>Eindringtiefe:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WorldToolBar</name>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="126"/>
+        <source>Gravity</source>
+        <translation>Schwerkraft</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="129"/>
+        <source>Gravity %1</source>
+        <translation>Schwerkraft %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="130"/>
+        <source>Gravity %1 (m/s²)</source>
+        <translation>Schwerkraft %1 (m/s²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="49"/>
+        <source>Change Gravity</source>
+        <translation>Schwerkraft ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="132"/>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="133"/>
+        <source>Time step</source>
+        <translation>Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="134"/>
+        <source>Time step in seconds (+ and - keys)</source>
+        <translation>Zeitschritt in Sekunden (Tasten + und -)</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="26"/>
+        <source>Change Time Step</source>
+        <translation>Zeitschritt ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="71"/>
+        <source>Change Method</source>
+        <translation>Methode ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="143"/>
+        <source>Integrator of the swept and discrete methods</source>
+        <translation>Integrator der Methoden swept und discrete</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="33"/>
+        <source>Change Integrator</source>
+        <translation>Integrator ändern</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="63"/>
+        <source>Auto: piloting the scene under 13 settings…</source>
+        <translation>Auto: Vorlauf der Szene mit 13 Einstellungen …</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="125"/>
+        <source>World</source>
+        <translation>Welt</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="136"/>
+        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
+        <translation>Exakt (ereignisgesteuert), überstrichene oder diskrete Schritte; auto: die günstigste, die die Genauigkeit erreicht, per kurzem Vorlauf ermittelt</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="138"/>
+        <location filename="../ui/world_tool_bar.cpp" line="139"/>
+        <source>Accuracy</source>
+        <translation>Genauigkeit</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="141"/>
+        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
+        <translation>Toleranz von auto: der relative Energiefehler je simulierter Sekunde (und ein Eindringen von höchstens 5 % des Radius)</translation>
     </message>
 </context>
 <context>

@@ -511,12 +511,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="106"/>
+        <location filename="../ui/editor/scene_document.cpp" line="108"/>
         <source>untitled</source>
         <translation>без имени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="120"/>
+        <location filename="../ui/editor/scene_document.cpp" line="122"/>
         <source>floor</source>
         <translation>пол</translation>
     </message>
@@ -1383,416 +1383,335 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="565"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="509"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="198"/>
-        <location filename="../ui/main_window.cpp" line="508"/>
+        <location filename="../ui/main_window.cpp" line="200"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="510"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="511"/>
+        <location filename="../ui/main_window.cpp" line="451"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="512"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="513"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="561"/>
+        <location filename="../ui/main_window.cpp" line="482"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="560"/>
+        <location filename="../ui/main_window.cpp" line="481"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="562"/>
+        <location filename="../ui/main_window.cpp" line="483"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="563"/>
+        <location filename="../ui/main_window.cpp" line="484"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="564"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="514"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="515"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="525"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="526"/>
-        <location filename="../ui/main_window.cpp" line="527"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="528"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="530"/>
-        <source>Gravity</source>
-        <translation>Гравитация</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="533"/>
-        <source>Gravity %1</source>
-        <translation>Гравитация %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="534"/>
-        <source>Gravity %1 (m/s²)</source>
-        <translation>Гравитация %1 (m/s²)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="293"/>
-        <source>Change Gravity</source>
-        <translation>Изменить гравитацию</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="536"/>
-        <source>Step</source>
-        <translation>Шаг</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="537"/>
-        <source>Time step</source>
-        <translation>Шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="538"/>
-        <source>Time step in seconds (+ and - keys)</source>
-        <translation>Шаг по времени в секундах (клавиши + и -)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="304"/>
-        <source>Change Time Step</source>
-        <translation>Изменить шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="322"/>
-        <source>Change Method</source>
-        <translation>Изменить метод</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="547"/>
-        <source>Integrator of the swept and discrete methods</source>
-        <translation>Интегратор для методов swept и discrete</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="343"/>
-        <source>Change Integrator</source>
-        <translation>Изменить интегратор</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="516"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="435"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
+        <location filename="../ui/main_window.cpp" line="443"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="663"/>
+        <location filename="../ui/main_window.cpp" line="557"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="690"/>
+        <location filename="../ui/main_window.cpp" line="584"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="476"/>
+        <location filename="../ui/main_window.cpp" line="416"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="401"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="314"/>
-        <source>Auto: piloting the scene under 13 settings…</source>
-        <translation>Auto: пробный прогон сцены с 13 настройками…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="403"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="477"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>Export &amp;Image…</source>
         <translation>Экспорт &amp;изображения…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="479"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>Export &amp;Video…</source>
         <translation>Экспорт ви&amp;део…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="517"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="518"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="529"/>
-        <source>World</source>
-        <translation>Мир</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="540"/>
-        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
-        <translation>Точный (по событиям), заметающие или дискретные шаги; auto: самый дешёвый из дающих нужную точность, по короткому пробному прогону</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="542"/>
-        <location filename="../ui/main_window.cpp" line="543"/>
-        <source>Accuracy</source>
-        <translation>Точность</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="545"/>
-        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
-        <translation>Допуск auto: относительная ошибка энергии за секунду моделирования (и проникновение не более 5% радиуса)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="569"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="570"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="571"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="572"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="778"/>
+        <location filename="../ui/main_window.cpp" line="672"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="400"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="402"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="519"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="520"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="522"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="489"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="866"/>
+        <location filename="../ui/main_window.cpp" line="760"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="554"/>
+        <location filename="../ui/main_window.cpp" line="475"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="559"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="566"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1853,82 +1772,82 @@
         <translation>Трасса для шариков</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="60"/>
+        <location filename="../ui/scene_files.cpp" line="59"/>
         <source>Open Scene</source>
         <translation>Открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="61"/>
+        <location filename="../ui/scene_files.cpp" line="60"/>
         <source>Carom scenes (*.carom *.json);;All files (*)</source>
         <translation>Сцены Carom (*.carom *.json);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="70"/>
+        <location filename="../ui/scene_files.cpp" line="69"/>
         <source>Cannot Open Scene</source>
         <translation>Не удаётся открыть сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="107"/>
+        <location filename="../ui/scene_files.cpp" line="106"/>
         <source>an unsaved scene</source>
         <translation>несохранённая сцена</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="109"/>
+        <location filename="../ui/scene_files.cpp" line="108"/>
         <source>Recover Scene</source>
         <translation>Восстановление сцены</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="110"/>
+        <location filename="../ui/scene_files.cpp" line="109"/>
         <source>Carom did not close properly while %1 had unsaved changes. The copy saved at %2 can be recovered.</source>
         <translation>Carom завершился некорректно, когда в «%1» были несохранённые изменения. Копию, сохранённую %2, можно восстановить.</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="116"/>
+        <location filename="../ui/scene_files.cpp" line="115"/>
         <source>&amp;Recover</source>
         <translation>&amp;Восстановить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="117"/>
+        <location filename="../ui/scene_files.cpp" line="116"/>
         <source>&amp;Discard</source>
         <translation>&amp;Отбросить</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="118"/>
+        <location filename="../ui/scene_files.cpp" line="117"/>
         <source>Not &amp;Now</source>
         <translation>Не &amp;сейчас</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="126"/>
+        <location filename="../ui/scene_files.cpp" line="125"/>
         <source>Cannot Recover Scene</source>
         <translation>Не удаётся восстановить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="150"/>
+        <location filename="../ui/scene_files.cpp" line="149"/>
         <source>Save Scene</source>
         <translation>Сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="151"/>
+        <location filename="../ui/scene_files.cpp" line="150"/>
         <source>Carom scenes (*.carom);;All files (*)</source>
         <translation>Сцены Carom (*.carom);;Все файлы (*)</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="162"/>
+        <location filename="../ui/scene_files.cpp" line="161"/>
         <source>Cannot Save Scene</source>
         <translation>Не удаётся сохранить сцену</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="167"/>
+        <location filename="../ui/scene_files.cpp" line="166"/>
         <source>Saved %1</source>
         <translation>Сохранено: %1</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="175"/>
+        <location filename="../ui/scene_files.cpp" line="174"/>
         <source>Unsaved Changes</source>
         <translation>Несохранённые изменения</translation>
     </message>
     <message>
-        <location filename="../ui/scene_files.cpp" line="176"/>
+        <location filename="../ui/scene_files.cpp" line="175"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>
@@ -1936,7 +1855,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="51"/>
+        <location filename="../ui/simulation_sync.cpp" line="75"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
@@ -2360,6 +2279,90 @@
         <location filename="../ui/watch_tolerance_dialog.cpp" line="41"/>
         <source>Penetration:</source>
         <translation>Проникновение:</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::WorldToolBar</name>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="126"/>
+        <source>Gravity</source>
+        <translation>Гравитация</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="129"/>
+        <source>Gravity %1</source>
+        <translation>Гравитация %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="130"/>
+        <source>Gravity %1 (m/s²)</source>
+        <translation>Гравитация %1 (m/s²)</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="49"/>
+        <source>Change Gravity</source>
+        <translation>Изменить гравитацию</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="132"/>
+        <source>Step</source>
+        <translation>Шаг</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="133"/>
+        <source>Time step</source>
+        <translation>Шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="134"/>
+        <source>Time step in seconds (+ and - keys)</source>
+        <translation>Шаг по времени в секундах (клавиши + и -)</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="26"/>
+        <source>Change Time Step</source>
+        <translation>Изменить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="71"/>
+        <source>Change Method</source>
+        <translation>Изменить метод</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="143"/>
+        <source>Integrator of the swept and discrete methods</source>
+        <translation>Интегратор для методов swept и discrete</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="33"/>
+        <source>Change Integrator</source>
+        <translation>Изменить интегратор</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="63"/>
+        <source>Auto: piloting the scene under 13 settings…</source>
+        <translation>Auto: пробный прогон сцены с 13 настройками…</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="125"/>
+        <source>World</source>
+        <translation>Мир</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="136"/>
+        <source>Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the accuracy, found by a short pilot</source>
+        <translation>Точный (по событиям), заметающие или дискретные шаги; auto: самый дешёвый из дающих нужную точность, по короткому пробному прогону</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="138"/>
+        <location filename="../ui/world_tool_bar.cpp" line="139"/>
+        <source>Accuracy</source>
+        <translation>Точность</translation>
+    </message>
+    <message>
+        <location filename="../ui/world_tool_bar.cpp" line="141"/>
+        <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
+        <translation>Допуск auto: относительная ошибка энергии за секунду моделирования (и проникновение не более 5% радиуса)</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,6 @@
 #include "ui/main_window.h"
 
 #include "ui/accuracy_window.h"
-#include "ui/auto_method.h"
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
@@ -16,7 +15,6 @@
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
 
-#include "sim/tolerances.h"
 #include "sim/validation.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/scene_recovery.h"
@@ -30,11 +28,11 @@
 #include "ui/video_export.h"
 #include "ui/watch_alert.h"
 #include "ui/watch_menu.h"
+#include "ui/world_tool_bar.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -44,6 +42,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -150,7 +149,7 @@ MainWindow::MainWindow(QWidget* parent)
   buildMenus();
   connect(document_, &editor::SceneDocument::sceneChanged, this,
           [this](const editor::SceneChange& change) {
-            if (change.world) showWorld();
+            if (change.world) worldBar_->showWorld();
           });
   connect(document_, &editor::SceneDocument::displayNameChanged, this, &MainWindow::updateTitle);
   connect(document_, &editor::SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -282,71 +281,9 @@ void MainWindow::buildToolBar() {
   simulationBar_->addWidget(speed_);
 
   addToolBarBreak();
-  worldBar_ = addToolBar(QString());
-  worldBar_->setObjectName("world");
-  gravityLabel_ = new QLabel;
-  worldBar_->addWidget(gravityLabel_);
-  const char* axes[3] = {"x", "y", "z"};
-  for (int a = 0; a < 3; ++a) {
-    gravity_[a] =
-        new NumberBox(QString(), -tolerance::kMaxMagnitude, tolerance::kMaxMagnitude, 0.5);
-    gravity_[a]->setObjectName(QString("gravity") + QChar(axes[a][0]).toUpper());
-    connect(gravity_[a], &NumberBox::refused, this, &MainWindow::showMessage);
-    connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, [this, a](double value) {
-      editWorld(tr("Change Gravity"), [a, value](World& world) { world.gravity[a] = value; });
-    });
-    worldBar_->addWidget(gravity_[a]);
-  }
-
-  timeStepLabel_ = new QLabel;
-  worldBar_->addWidget(timeStepLabel_);
-  timeStep_ = new NumberBox(QString(), tolerance::kMinTimeStep, tolerance::kMaxTimeStep, 0.001);
-  timeStep_->setObjectName("timeStep");
-  connect(timeStep_, &NumberBox::refused, this, &MainWindow::showMessage);
-  connect(timeStep_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
-    editWorld(tr("Change Time Step"), [value](World& world) { world.timeStep = value; });
-  });
-  worldBar_->addWidget(timeStep_);
-
-  method_ = new QComboBox;
-  method_->setObjectName("worldMethod");
-  for (std::string_view name : methodNames()) method_->addItem(QString::fromUtf8(name));
-  method_->addItem(QStringLiteral("auto"));  // a key like the methods' names, not translated
-  autoMethod_ = new AutoMethod(document_, this);
-  connect(autoMethod_, &AutoMethod::choosingStarted, this,
-          [this] { showMessage(tr("Auto: piloting the scene under 13 settings…")); });
-  connect(autoMethod_, &AutoMethod::finished, this, &MainWindow::showMessage);
-  connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    const bool automatic = index == int(methodNames().size());
-    accuracyLabelAction_->setVisible(automatic);
-    accuracyBoxAction_->setVisible(automatic);
-    autoMethod_->setActive(automatic);
-    if (!automatic)
-      editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
-  });
-  worldBar_->addWidget(method_);
-  accuracyLabel_ = new QLabel;
-  accuracyLabelAction_ = worldBar_->addWidget(accuracyLabel_);
-  accuracy_ = new NumberBox(QString(), 1e-30, 10.0, 1e-3);
-  accuracy_->setObjectName("accuracy");
-  accuracy_->setValue(autoMethod_->tolerance().energyPerSecond);
-  connect(accuracy_, &NumberBox::refused, this, &MainWindow::showMessage);
-  connect(accuracy_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
-    AccuracyTolerance tolerance = autoMethod_->tolerance();
-    tolerance.energyPerSecond = value;
-    autoMethod_->setTolerance(tolerance);
-  });
-  accuracyBoxAction_ = worldBar_->addWidget(accuracy_);
-  accuracyLabelAction_->setVisible(false);
-  accuracyBoxAction_->setVisible(false);
-
-  integrator_ = new QComboBox;
-  for (std::string_view name : integratorNames()) integrator_->addItem(QString::fromUtf8(name));
-  connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    editWorld(tr("Change Integrator"),
-              [index](World& world) { world.integrator = Integrator(index); });
-  });
-  worldBar_->addWidget(integrator_);
+  worldBar_ = new WorldToolBar(document_, this);
+  addToolBar(worldBar_);
+  connect(worldBar_, &WorldToolBar::message, this, &MainWindow::showMessage);
 }
 
 void MainWindow::buildMenus() {
@@ -529,30 +466,11 @@ void MainWindow::retranslate() {
   speedLabel_->setText(tr("Speed"));
   speed_->setName(tr("Speed"));
   speed_->setToolTip(tr("Simulated seconds per real second"));
-  worldBar_->setWindowTitle(tr("World"));
-  gravityLabel_->setText(tr("Gravity"));
-  const char* axes[3] = {"x", "y", "z"};
-  for (int a = 0; a < 3; ++a) {
-    gravity_[a]->setName(tr("Gravity %1").arg(axes[a]));
-    gravity_[a]->setToolTip(tr("Gravity %1 (m/s²)").arg(axes[a]));
+  {
+    const QSignalBlocker blocker(speed_);  // shown in the language's number format
+    speed_->setValue(speed_->value());
   }
-  timeStepLabel_->setText(tr("Step"));
-  timeStep_->setName(tr("Time step"));
-  timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
-  method_->setToolTip(
-      tr("Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the "
-         "accuracy, found by a short pilot"));
-  accuracyLabel_->setText(tr("Accuracy"));
-  accuracy_->setName(tr("Accuracy"));
-  accuracy_->setToolTip(
-      tr("Auto's tolerance: the relative energy error per simulated second (and a penetration of "
-         "at most 5% of the radius)"));
-  integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
-  // The boxes show their values in the language's number format.
-  for (NumberBox* box : {speed_, gravity_[0], gravity_[1], gravity_[2], timeStep_, accuracy_}) {
-    const QSignalBlocker blocker(box);
-    box->setValue(box->value());
-  }
+  worldBar_->retranslate();
 
   examplesMenu_->setTitle(tr("&Examples"));
   const QList<QAction*> examples = examplesMenu_->actions();
@@ -580,33 +498,6 @@ void MainWindow::retranslate() {
 void MainWindow::openScene(const carom::Scene& scene, const QString& fileName,
                            const QString& title) {
   files_->openScene(scene, fileName, title);
-}
-
-void MainWindow::showWorld() {
-  // The toolbar mirrors the world settings without echoing them back as edits.
-  const World& world = document_->scene().world;
-  const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
-                                     QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
-                                     QSignalBlocker(method_),     QSignalBlocker(integrator_)};
-  for (int a = 0; a < 3; ++a) gravity_[a]->setValue(world.gravity[a]);
-  timeStep_->setValue(world.timeStep);
-  // Under auto the world holds what auto chose; the box says auto, and what that is.
-  const int automatic = int(methodNames().size());
-  const std::string_view name = methodName(world.method);
-  method_->setItemText(automatic,
-                       QString("auto (%1)").arg(QString::fromUtf8(name.data(), name.size())));
-  method_->setCurrentIndex(autoMethod_->active() ? automatic : int(world.method));
-  integrator_->setCurrentIndex(int(world.integrator));
-}
-
-void MainWindow::editWorld(const QString& text, const std::function<void(World&)>& change) {
-  World world = document_->scene().world;
-  change(world);
-  const QString error = document_->editWorld(world, text);
-  if (!error.isEmpty()) {
-    showMessage(error);
-    showWorld();  // puts the toolbar back
-  }
 }
 
 void MainWindow::showSelection() {
@@ -681,7 +572,7 @@ AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
   auto* window = new AccuracyWindow(document_->scene(), this);
   window->setAttribute(Qt::WA_DeleteOnClose);
   window->setDuration(duration);
-  window->setTolerance(autoMethod_->tolerance());  // the accuracy auto aims at
+  window->setTolerance(worldBar_->autoTolerance());  // the accuracy auto aims at
   connect(window, &AccuracyWindow::settingsChosen, this, &MainWindow::applySettings);
   window->show();
   window->start();
@@ -690,7 +581,7 @@ AccuracyWindow* MainWindow::openAccuracyWindow(double duration) {
 
 void MainWindow::applySettings(carom::Method method, carom::Integrator integrator,
                                double timeStep) {
-  editWorld(tr("Apply Settings"), [=](World& world) {
+  worldBar_->editWorld(tr("Apply Settings"), [=](World& world) {
     world.method = method;
     world.integrator = integrator;
     world.timeStep = timeStep;
@@ -698,7 +589,7 @@ void MainWindow::applySettings(carom::Method method, carom::Integrator integrato
 }
 
 void MainWindow::changeTimeStep(double factor) {
-  timeStep_->setValue(timeStep_->value() * factor);
+  worldBar_->changeTimeStep(factor);
 }
 
 void MainWindow::showSnapshot() {

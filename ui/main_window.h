@@ -9,11 +9,9 @@
 #include <QMainWindow>
 #include <QString>
 
-#include <functional>
 #include <memory>
 
 class QAction;
-class QComboBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
@@ -29,8 +27,6 @@ class SceneRecovery;
 }  // namespace carom::editor
 namespace carom::ui {
 
-class AutoMethod;
-
 class AccuracyWindow;
 class BallStoryDock;
 class ImageExport;
@@ -43,6 +39,7 @@ class TimelineBar;
 class GrabControl;
 class WatchAlert;
 class WatchMenu;
+class WorldToolBar;
 class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
@@ -126,8 +123,6 @@ class MainWindow : public QMainWindow {
   void buildToolActions();
   void showSelection();
   void fillRecentMenu();
-  void showWorld();
-  void editWorld(const QString& text, const std::function<void(World&)>& change);
   void updateTitle();
   int followTarget() const;
   void useCurrentState();
@@ -203,20 +198,9 @@ class MainWindow : public QMainWindow {
   QAction* followAction_ = nullptr;
   QToolBar* toolsBar_ = nullptr;
   QToolBar* simulationBar_ = nullptr;
-  QToolBar* worldBar_ = nullptr;
+  WorldToolBar* worldBar_ = nullptr;  // gravity, time step, method (auto), integrator
   QLabel* speedLabel_ = nullptr;
-  QLabel* gravityLabel_ = nullptr;
-  QLabel* timeStepLabel_ = nullptr;
   NumberBox* speed_ = nullptr;
-  NumberBox* gravity_[3] = {};
-  NumberBox* timeStep_ = nullptr;
-  QComboBox* method_ = nullptr;  // the methods, then "auto"
-  QLabel* accuracyLabel_ = nullptr;
-  NumberBox* accuracy_ = nullptr;  // auto's energy error per simulated second
-  QAction* accuracyLabelAction_ = nullptr;
-  QAction* accuracyBoxAction_ = nullptr;
-  AutoMethod* autoMethod_ = nullptr;
-  QComboBox* integrator_ = nullptr;
   StatusReadout* status_ = nullptr;
   TimelineBar* timeline_ = nullptr;
   GrabControl* grab_ = nullptr;

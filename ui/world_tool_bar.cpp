@@ -1,0 +1,151 @@
+#include "ui/world_tool_bar.h"
+
+#include "sim/tolerances.h"
+#include "ui/auto_method.h"
+#include "ui/editor/scene_document.h"
+#include "ui/number_box.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QSignalBlocker>
+
+#include <string_view>
+
+namespace carom::ui {
+
+WorldToolBar::WorldToolBar(editor::SceneDocument* document, QWidget* parent)
+    : QToolBar(parent), document_(document) {
+  setObjectName("world");
+  addGravity();
+  timeStepLabel_ = new QLabel;
+  addWidget(timeStepLabel_);
+  timeStep_ = new NumberBox(QString(), tolerance::kMinTimeStep, tolerance::kMaxTimeStep, 0.001);
+  timeStep_->setObjectName("timeStep");
+  connect(timeStep_, &NumberBox::refused, this, &WorldToolBar::message);
+  connect(timeStep_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+    editWorld(tr("Change Time Step"), [value](World& world) { world.timeStep = value; });
+  });
+  addWidget(timeStep_);
+  addMethod();
+  integrator_ = new QComboBox;
+  for (std::string_view name : integratorNames()) integrator_->addItem(QString::fromUtf8(name));
+  connect(integrator_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    editWorld(tr("Change Integrator"),
+              [index](World& world) { world.integrator = Integrator(index); });
+  });
+  addWidget(integrator_);
+}
+
+void WorldToolBar::addGravity() {
+  gravityLabel_ = new QLabel;
+  addWidget(gravityLabel_);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    gravity_[a] =
+        new NumberBox(QString(), -tolerance::kMaxMagnitude, tolerance::kMaxMagnitude, 0.5);
+    gravity_[a]->setObjectName(QString("gravity") + QChar(axes[a][0]).toUpper());
+    connect(gravity_[a], &NumberBox::refused, this, &WorldToolBar::message);
+    connect(gravity_[a], &QDoubleSpinBox::valueChanged, this, [this, a](double value) {
+      editWorld(tr("Change Gravity"), [a, value](World& world) { world.gravity[a] = value; });
+    });
+    addWidget(gravity_[a]);
+  }
+}
+
+// The methods, then auto, whose accuracy shows beside it only while it is chosen.
+void WorldToolBar::addMethod() {
+  method_ = new QComboBox;
+  method_->setObjectName("worldMethod");
+  for (std::string_view name : methodNames()) method_->addItem(QString::fromUtf8(name));
+  method_->addItem(QStringLiteral("auto"));  // a key like the methods' names, not translated
+  autoMethod_ = new AutoMethod(document_, this);
+  connect(autoMethod_, &AutoMethod::choosingStarted, this,
+          [this] { emit message(tr("Auto: piloting the scene under 13 settings…")); });
+  connect(autoMethod_, &AutoMethod::finished, this, &WorldToolBar::message);
+  connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
+    const bool automatic = index == int(methodNames().size());
+    accuracyLabelAction_->setVisible(automatic);
+    accuracyBoxAction_->setVisible(automatic);
+    autoMethod_->setActive(automatic);
+    if (!automatic)
+      editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
+  });
+  addWidget(method_);
+  accuracyLabel_ = new QLabel;
+  accuracyLabelAction_ = addWidget(accuracyLabel_);
+  accuracy_ = new NumberBox(QString(), 1e-30, 10.0, 1e-3);
+  accuracy_->setObjectName("accuracy");
+  accuracy_->setValue(autoMethod_->tolerance().energyPerSecond);
+  connect(accuracy_, &NumberBox::refused, this, &WorldToolBar::message);
+  connect(accuracy_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+    AccuracyTolerance tolerance = autoMethod_->tolerance();
+    tolerance.energyPerSecond = value;
+    autoMethod_->setTolerance(tolerance);
+  });
+  accuracyBoxAction_ = addWidget(accuracy_);
+  accuracyLabelAction_->setVisible(false);
+  accuracyBoxAction_->setVisible(false);
+}
+
+const AccuracyTolerance& WorldToolBar::autoTolerance() const {
+  return autoMethod_->tolerance();
+}
+
+void WorldToolBar::showWorld() {
+  const World& world = document_->scene().world;
+  const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
+                                     QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
+                                     QSignalBlocker(method_),     QSignalBlocker(integrator_)};
+  for (int a = 0; a < 3; ++a) gravity_[a]->setValue(world.gravity[a]);
+  timeStep_->setValue(world.timeStep);
+  // Under auto the world holds what auto chose; the box says auto, and what that is.
+  const int automatic = int(methodNames().size());
+  const std::string_view name = methodName(world.method);
+  method_->setItemText(automatic,
+                       QString("auto (%1)").arg(QString::fromUtf8(name.data(), name.size())));
+  method_->setCurrentIndex(autoMethod_->active() ? automatic : int(world.method));
+  integrator_->setCurrentIndex(int(world.integrator));
+}
+
+void WorldToolBar::editWorld(const QString& text, const std::function<void(World&)>& change) {
+  World world = document_->scene().world;
+  change(world);
+  const QString error = document_->editWorld(world, text);
+  if (!error.isEmpty()) {
+    emit message(error);
+    showWorld();  // puts the bar back
+  }
+}
+
+void WorldToolBar::changeTimeStep(double factor) {
+  timeStep_->setValue(timeStep_->value() * factor);
+}
+
+void WorldToolBar::retranslate() {
+  setWindowTitle(tr("World"));
+  gravityLabel_->setText(tr("Gravity"));
+  const char* axes[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    gravity_[a]->setName(tr("Gravity %1").arg(axes[a]));
+    gravity_[a]->setToolTip(tr("Gravity %1 (m/s²)").arg(axes[a]));
+  }
+  timeStepLabel_->setText(tr("Step"));
+  timeStep_->setName(tr("Time step"));
+  timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
+  method_->setToolTip(
+      tr("Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the "
+         "accuracy, found by a short pilot"));
+  accuracyLabel_->setText(tr("Accuracy"));
+  accuracy_->setName(tr("Accuracy"));
+  accuracy_->setToolTip(
+      tr("Auto's tolerance: the relative energy error per simulated second (and a penetration of "
+         "at most 5% of the radius)"));
+  integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
+  // The boxes show their values in the language's number format.
+  for (NumberBox* box : {gravity_[0], gravity_[1], gravity_[2], timeStep_, accuracy_}) {
+    const QSignalBlocker blocker(box);
+    box->setValue(box->value());
+  }
+}
+
+}  // namespace carom::ui
