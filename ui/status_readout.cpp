@@ -12,6 +12,7 @@ namespace carom::ui {
 StatusReadout::StatusReadout(const SoundThread* sound, QWidget* parent)
     : QLabel(parent), sound_(sound) {
   fpsClock_.start();
+  rateClock_.start();
   refreshTimer_.setSingleShot(true);
   refreshTimer_.setInterval(kRefreshMilliseconds);
   connect(&refreshTimer_, &QTimer::timeout, this, &StatusReadout::refresh);
@@ -33,6 +34,7 @@ void StatusReadout::countFrame() {
 }
 
 void StatusReadout::restart() {
+  rateClock_.restart();
   lastCollisionCount_ = 0;
   lastCollisionTime_ = 0.0;
   collisionsPerSecond_ = 0.0;
@@ -50,11 +52,14 @@ void StatusReadout::refresh() {
   if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
     lastCollisionTime_ = snapshot->time;  // after a reset
     lastCollisionCount_ = collisions;
-  } else if (snapshot->time - lastCollisionTime_ >= kRateSeconds) {
-    collisionsPerSecond_ =
-        double(collisions - lastCollisionCount_) / (snapshot->time - lastCollisionTime_);
+    rateClock_.restart();
+  } else if (const double simulated = snapshot->time - lastCollisionTime_;
+             simulated >= kRateSeconds ||
+             (simulated > 0.0 && rateClock_.elapsed() >= kRateMilliseconds)) {
+    collisionsPerSecond_ = double(collisions - lastCollisionCount_) / simulated;
     lastCollisionTime_ = snapshot->time;
     lastCollisionCount_ = collisions;
+    rateClock_.restart();
   }
   const double energy = snapshot->kineticEnergy + snapshot->potentialEnergy;
   const double drift = snapshot->initialEnergy != 0.0
@@ -65,7 +70,7 @@ void StatusReadout::refresh() {
                     nullptr, static_cast<int>(snapshot->positions.size()))
                      .arg(snapshot->time, 0, 'f', 3)
                      .arg(snapshot->realTimeFactor, 0, 'f', 2)
-                     .arg(framesPerSecond_, 0, 'f', 0)
+                     .arg(framesPerSecond_, 0, 'f', framesPerSecond_ < 10.0 ? 1 : 0)
                      .arg(collisionsPerSecond_, 0, 'f', 0)
                      .arg(energy, 0, 'g', 6)
                      .arg(drift, 0, 'e', 1);

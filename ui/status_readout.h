@@ -37,8 +37,10 @@ class StatusReadout : public QLabel {
   // Numbers changing sixty times a second cannot be read, and laying out the status bar each
   // frame costs the GUI thread.
   static constexpr int kRefreshMilliseconds = 200;
-  // The collision rate is taken over at least this much simulated time.
+  // The collision rate is taken over at least this much simulated time, or of real time when
+  // the run is slower (a million balls simulate 0.01 s in a few seconds).
   static constexpr double kRateSeconds = 0.5;
+  static constexpr qint64 kRateMilliseconds = 2000;
 
   const SoundThread* sound_;
   QTimer refreshTimer_;
@@ -48,6 +50,7 @@ class StatusReadout : public QLabel {
   QElapsedTimer fpsClock_;
   double framesPerSecond_ = 0.0;
   double lastCollisionTime_ = 0.0;
+  QElapsedTimer rateClock_;  // since the collision rate's last sample
   std::uint64_t lastCollisionCount_ = 0;
   double collisionsPerSecond_ = 0.0;
 };
