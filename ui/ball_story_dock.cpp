@@ -146,7 +146,7 @@ void BallStoryDock::watchSelection() {
 }
 
 void BallStoryDock::add(std::shared_ptr<const SimulationSnapshot> snapshot) {
-  if (!snapshot) return;
+  if (!snapshot || (staleStartsUpTo_ && snapshot->startNumber <= *staleStartsUpTo_)) return;
   if (startNumber_ != snapshot->startNumber) {
     story_.clear();
     startNumber_ = snapshot->startNumber;
@@ -182,6 +182,7 @@ void BallStoryDock::truncateAfter(double time) {
 }
 
 void BallStoryDock::restart() {
+  if (startNumber_) staleStartsUpTo_ = startNumber_;
   story_.clear();
   pinnedTime_.reset();
   // Its positions belong to the start before: balls selected now wait for the new start's.

@@ -95,6 +95,9 @@ class BallStoryDock : public QDockWidget {
   render::SceneView* view_;
   BallStory story_;
   std::optional<std::uint64_t> startNumber_;
+  // Starts are numbered up: after a restart, a snapshot of this start or an older one still on
+  // its way to the window is of the run before, and is not recorded.
+  std::optional<std::uint64_t> staleStartsUpTo_;
   std::optional<double> pinnedTime_;
   std::shared_ptr<const SimulationSnapshot> latest_;
   Vec3 gravity_ = Vec3::Zero();
