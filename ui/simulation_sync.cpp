@@ -1,6 +1,7 @@
 #include "ui/simulation_sync.h"
 
 #include "sim/validation.h"
+#include "ui/call_queue.h"
 #include "ui/editor/running_state.h"
 #include "ui/editor/scene_document.h"
 #include "ui/simulation_controller.h"
@@ -14,7 +15,7 @@ namespace carom::ui {
 
 SimulationSync::SimulationSync(editor::SceneDocument* document, SimulationController* simulation,
                                QObject* parent)
-    : QObject(parent), document_(document), simulation_(simulation) {
+    : QObject(parent), document_(document), simulation_(simulation), calls_(new CallQueue(this)) {
   connect(document_, &editor::SceneDocument::sceneChanged, this, &SimulationSync::documentChanged);
   // The thread making a start reads the document: it must not change under it.
   connect(document_, &editor::SceneDocument::aboutToChange, this, &SimulationSync::finishStart,
@@ -52,7 +53,7 @@ void SimulationSync::documentChanged(const editor::SceneChange& change) {
     Start start = makeStart(edited, change, runningFrom, snapshot);
     runningFrom.reset();
     previous.reset();
-    QMetaObject::invokeMethod(this, &SimulationSync::startMade, Qt::QueuedConnection);
+    calls_->post([this] { startMade(); });
     return start;
   });
 }

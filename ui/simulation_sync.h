@@ -21,6 +21,7 @@ struct SceneChange;
 }  // namespace carom::editor
 namespace carom::ui {
 
+class CallQueue;
 class SimulationController;
 struct SimulationSnapshot;
 
@@ -67,6 +68,7 @@ class SimulationSync : public QObject {
   std::shared_ptr<const Scene> start_;  // the scene the simulation last started from
   std::uint64_t startNumber_ = 0;       // the controller's number for start_
   std::future<Start> pendingStart_;     // being made from the document, on its own thread
+  CallQueue* calls_;                    // a child: the thread's notice that its start is made
 };
 
 }  // namespace carom::ui
