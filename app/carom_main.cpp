@@ -1,10 +1,13 @@
 #include "app/window_arguments.h"
 #include "app/window_benchmarks.h"
+#include "sim/io/atomic_file.h"
+#include "sim/io/file_names.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QCommandLineParser>
 #include <QIcon>
 #include <QTimer>
@@ -38,11 +41,18 @@ int answerWithoutWindow(const carom::app::WindowArguments& arguments) {
   return 0;
 }
 
+// The command line with file names as the bytes given (sim/io/file_names.h); not
+// QApplication::arguments(), which turns bytes that are not UTF-8 into U+FFFD.
+QStringList decodedArguments(int argc, char** argv) {
+  QStringList arguments;
+  for (int i = 0; i < argc; ++i) arguments << carom::io::decodeFileName(argv[i]);
+  return arguments;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  QStringList commandLine;
-  for (int i = 0; i < argc; ++i) commandLine << QString::fromLocal8Bit(argv[i]);
+  const QStringList commandLine = decodedArguments(argc, argv);
   const carom::app::WindowArguments early = carom::app::parseWindowArguments(commandLine);
   // Answered without a window, so without a display (a terminal over ssh, a package build).
   // A refusal waits for QApplication when Qt's own options are there, which it removes first.
@@ -78,7 +88,7 @@ int main(int argc, char** argv) {
 
   // Parsed again now that QApplication has taken out its own options.
   const carom::app::WindowArguments arguments =
-      carom::app::parseWindowArguments(QApplication::arguments());
+      carom::app::parseWindowArguments(decodedArguments(qtArgc, qtArgv.data()));
   if (arguments.version || arguments.help || !arguments.error.isEmpty())
     return answerWithoutWindow(arguments);
   if (arguments.helpAll) {
@@ -104,8 +114,14 @@ int main(int argc, char** argv) {
     const double seconds = arguments.runForSeconds;
     window.setRunning(seconds > 0);
     QTimer::singleShot(static_cast<int>(seconds * 1000) + 500, &window, [&window, path] {
-      const bool saved = window.grab().save(path);
-      if (!saved) std::fprintf(stderr, "carom: cannot save %s\n", qPrintable(path));
+      // A PNG written whole or not at all.
+      QBuffer png;
+      png.open(QIODevice::WriteOnly);
+      QString error;
+      const bool saved = window.grab().save(&png, "png") &&
+                         carom::io::writeFileAtomically(path, png.data(), &error);
+      if (!saved) std::fprintf(stderr, "carom: cannot save %s: %s\n", qPrintable(path),
+                               qPrintable(error));
       QApplication::exit(saved ? 0 : 1);
     });
   }

@@ -517,12 +517,18 @@ void checkBalls(const Scene& scene, const StaticShapes& shapes, ErrorList& error
   }
 }
 
-bool checkCounts(const Scene& scene, ErrorList& errors) {
-  bool countsOk = checkCount("planes", scene.planes.size(), tol::kMaxPlanes, errors);
-  countsOk &= checkCount("cylinders", scene.cylinders.size(), tol::kMaxCylinders, errors);
-  countsOk &= checkCount("boxes", scene.boxes.size(), tol::kMaxBoxes, errors);
-  countsOk &= checkCount("balls", scene.balls.size(), tol::kMaxBalls, errors);
+bool checkCounts(const SceneCounts& counts, ErrorList& errors) {
+  bool countsOk = checkCount("planes", counts.planes, tol::kMaxPlanes, errors);
+  countsOk &= checkCount("cylinders", counts.cylinders, tol::kMaxCylinders, errors);
+  countsOk &= checkCount("boxes", counts.boxes, tol::kMaxBoxes, errors);
+  countsOk &= checkCount("balls", counts.balls, tol::kMaxBalls, errors);
   return countsOk;
+}
+
+bool checkCounts(const Scene& scene, ErrorList& errors) {
+  return checkCounts(SceneCounts{scene.planes.size(), scene.cylinders.size(), scene.boxes.size(),
+                                 scene.balls.size()},
+                     errors);
 }
 
 // An edit of more balls than this is checked as a whole scene: a ball set against every other
@@ -534,6 +540,12 @@ bool contains(const std::vector<std::size_t>& sorted, std::size_t index) {
 }
 
 }  // namespace
+
+std::vector<ValidationError> validateCounts(const SceneCounts& counts) {
+  ErrorList errors(4);
+  checkCounts(counts, errors);
+  return errors.take();
+}
 
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors) {
   ErrorList errors(maxErrors);

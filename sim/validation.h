@@ -33,6 +33,15 @@ struct SceneObjectIndices {
 };
 std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,
                                              std::size_t maxErrors = 20);
+// The lists' lengths alone, as validateScene checks them first: for readers that count a file's
+// objects before they build any.
+struct SceneCounts {
+  std::size_t planes = 0;
+  std::size_t cylinders = 0;
+  std::size_t boxes = 0;
+  std::size_t balls = 0;
+};
+std::vector<ValidationError> validateCounts(const SceneCounts& counts);
 // The world's settings alone (gravity, time step, restitution).
 std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors = 20);
 

@@ -20,8 +20,11 @@
 #include <cmath>
 #include <csignal>
 
+#include "small_filesystem.h"
+
 #include <fcntl.h>
 #include <pty.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -108,6 +111,11 @@ QString magicRoom() {
 QByteArray sceneText(const QByteArray& fields, int version = 1) {
   return R"({"format": "carom-scene", "version": )" + QByteArray::number(version) +
          (fields.isEmpty() ? QByteArray() : ", " + fields) + "}\n";
+}
+
+QByteArray fileBytes(const QString& fileName) {
+  QFile file(fileName);
+  return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 QJsonObject readJsonObject(const QString& fileName) {
@@ -1221,6 +1229,152 @@ class TestCli : public QObject {
     const CliRun device = runCli({command, "/dev/null"}, 10000);
     VERIFY_REFUSED(device);
     QVERIFY2(device.err.contains("/dev/null: not a regular file"), qPrintable(device.describe()));
+  }
+
+  // --- issue 33: no lost work under faults ---
+
+  // `--trajectory x.json` on the scene x.json replaced the scene with CSV and exited 0.
+  void trajectoryThatIsTheSceneIsRefused() {
+    const QByteArray text = fileBytes(magicRoom());
+    const QString scene = writeFile("own-trajectory.json", text);
+    const QString link = dir_.filePath("own-trajectory-link.json");
+    const QString hardLink = dir_.filePath("own-trajectory-hard.json");
+    QVERIFY(QFile::link(scene, link));
+    QCOMPARE(::link(QFile::encodeName(scene).constData(), QFile::encodeName(hardLink).constData()),
+             0);
+    for (const QString& output : {scene, link, hardLink}) {
+      const CliRun run = runCli({"run", scene, "--duration", "0.1", "--trajectory", output});
+      VERIFY_REFUSED(run);
+      QVERIFY2(run.err.contains("is the scene file"), qPrintable(run.describe()));
+      QCOMPARE(fileBytes(scene), text);
+    }
+  }
+
+  // On a full disk the trajectory fails with the reason, leaves no partial file and keeps the
+  // one that was there; with room it is written whole.
+  void trajectoryOnAFullDisk() {
+    SmallFilesystem disk(200 * 1024);
+    if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+    const QString kept = disk.filePath("kept.csv");
+    const QString fresh = disk.filePath("fresh.csv");
+    {
+      QFile file(kept);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      QCOMPARE(file.write("old\n"), qint64(4));
+    }
+    QVERIFY(disk.fill(4096));
+    for (const QString& csv : {kept, fresh}) {
+      const CliRun run = runCli({"run", magicRoom(), "--duration", "2", "--trajectory", csv});
+      VERIFY_EXIT(run, 1);
+      QVERIFY2(run.err.contains("No space left on device"), qPrintable(run.describe()));
+      QVERIFY2(!run.err.contains("Unknown error"), qPrintable(run.describe()));
+    }
+    QCOMPARE(fileBytes(kept), QByteArray("old\n"));
+    QVERIFY(!QFileInfo::exists(fresh));
+    QCOMPARE(QDir(disk.path()).entryList(QDir::Files), QStringList{"kept.csv"});
+    QVERIFY(disk.unfill());
+    const CliRun run = runCli({"run", magicRoom(), "--duration", "2", "--trajectory", kept});
+    VERIFY_EXIT(run, 0);
+    QVERIFY(fileBytes(kept).startsWith("time,ball,"));
+  }
+
+  // A name in Latin-1 bytes was "No such file or directory", and a trajectory so named was
+  // written under another name. The shell passes the bytes as a user's would.
+  void fileNamesInLatin1() {
+    const QByteArray folder = QFile::encodeName(dir_.path());
+    const QByteArray scene = folder + "/lat\xe9.json";
+    QVERIFY(QFile::copy(magicRoom(), QFile::decodeName(folder + "/latin1-source.json")));
+    QCOMPARE(::rename((folder + "/latin1-source.json").constData(), scene.constData()), 0);
+    const auto runRaw = [&](const QByteArray& command) {
+      QProcess shell;
+      shell.setProgram("/bin/sh");
+      // $1 is the program, the rest is printf'd bytes: \351 is é in Latin-1.
+      shell.setArguments(
+          {"-c", QString::fromLatin1(command), "sh", CAROM_CLI_PATH, QFile::decodeName(folder)});
+      shell.start();
+      shell.waitForFinished(kTimeoutMs);
+      return std::make_pair(shell.exitCode(),
+                            shell.readAllStandardOutput() + shell.readAllStandardError());
+    };
+    auto [validated, said] = runRaw(R"sh("$1" validate "$2/$(printf 'lat\351.json')")sh");
+    QCOMPARE(validated, 0);
+    QCOMPARE(said, QByteArray("ok\n"));
+    auto [ran, report] = runRaw(
+        R"sh("$1" run "$2/$(printf 'lat\351.json')" --duration 0.1 --trajectory "$2/$(printf 'tr\351.csv')")sh");
+    QVERIFY2(ran == 0, report.constData());
+    QCOMPARE(::access((folder + "/tr\xe9.csv").constData(), R_OK), 0);
+    QVERIFY(!QFileInfo::exists(dir_.filePath(QString::fromUtf8("tr\uFFFD.csv"))));
+  }
+
+  // The loader mapped the file: cut short under it, the process died of SIGBUS. Cut at several
+  // moments of a validation, it now always answers.
+  void aFileThatShrinksWhileItIsValidated() {
+    QByteArray text = sceneText("\"balls\": [");
+    text.chop(2);  // "}\n"
+    for (int i = 0; i < 300'000; ++i)
+      text += QString("%1{\"position\": [%2, %3, %4], \"radius\": 0.01}")
+                  .arg(i ? ", " : "")
+                  .arg(0.1 * (i % 100))
+                  .arg(0.1 * ((i / 100) % 100))
+                  .arg(0.1 * (i / 10'000))
+                  .toUtf8();
+    text += "]}\n";
+    const QString scene = dir_.filePath("shrinking.json");
+    for (int delayMs : {0, 5, 20, 60, 150, 400}) {
+      QVERIFY(!writeFile("shrinking.json", text).isEmpty());
+      QProcess process;
+      process.setProgram(QStringLiteral(CAROM_CLI_PATH));
+      process.setArguments({"validate", scene});
+      process.setStandardInputFile(QProcess::nullDevice());
+      process.start();
+      QVERIFY(process.waitForStarted());
+      QThread::msleep(delayMs);
+      QVERIFY(QFile::resize(scene, 1000));
+      QVERIFY(process.waitForFinished(kTimeoutMs));
+      const QByteArray err = process.readAllStandardError();
+      QVERIFY2(process.exitStatus() == QProcess::NormalExit,
+               qPrintable(QString("crashed after %1 ms: %2").arg(delayMs).arg(QString(err))));
+      QVERIFY2(process.exitCode() == 0 ||
+                   (process.exitCode() == 2 && err.startsWith(scene.toUtf8() + ": ")),
+               err.constData());
+    }
+  }
+
+  // Under a memory limit the load ran out and aborted with std::bad_alloc (SIGABRT).
+  void runningOutOfMemoryIsAMessage() {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    QSKIP("the sanitizers reserve more address space than the limit allows");
+#else
+    QByteArray text = sceneText("\"balls\": [");
+    text.chop(2);
+    for (int i = 0; i < 400'000; ++i)
+      text += QString("%1{\"position\": [%2, %3, %4], \"radius\": 0.01, \"name\": \"ball %5\"}")
+                  .arg(i ? ", " : "")
+                  .arg(0.1 * (i % 100))
+                  .arg(0.1 * ((i / 100) % 100))
+                  .arg(0.1 * (i / 10'000))
+                  .arg(i)
+                  .toUtf8();
+    text += "]}\n";
+    const QString scene = writeFile("memory.json", text);
+    QVERIFY(!scene.isEmpty());
+    // Room for the program and the file, not for the scene built from it.
+    const rlim_t limit = rlim_t(QFileInfo(scene).size()) + (rlim_t(160) << 20);
+    QProcess process;
+    process.setProgram(QStringLiteral(CAROM_CLI_PATH));
+    process.setArguments({"run", scene, "--duration", "0"});
+    process.setStandardInputFile(QProcess::nullDevice());
+    process.setChildProcessModifier([limit] {
+      const struct rlimit memory { limit, limit };
+      ::setrlimit(RLIMIT_AS, &memory);
+    });
+    process.start();
+    QVERIFY(process.waitForFinished(kTimeoutMs));
+    const QByteArray err = process.readAllStandardError();
+    QVERIFY2(process.exitStatus() == QProcess::NormalExit, err.constData());
+    QVERIFY2(process.exitCode() != 0, err.constData());
+    QVERIFY2(err.contains("not enough memory"), err.constData());
+#endif
   }
 };
 

@@ -1,12 +1,15 @@
 // Scene files: every refusal with its exact message, defaults, unknown keys, exact round trips
 // of numbers and of the bundled scenes, and saving that never damages an existing file.
 
+#include "sim/io/atomic_file.h"
+#include "sim/io/file_names.h"
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_stream_reader.h"
 #include "sim/measures.h"
 #include "sim/simulation.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
+#include "small_filesystem.h"
 
 #include <QDir>
 #include <QFile>
@@ -17,6 +20,7 @@
 
 #include <grp.h>
 #include <pwd.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -1079,6 +1083,178 @@ class SceneFileTest : public QObject {
     QCOMPARE(error, QString());
     QCOMPARE(readAll(fileName), carom::io::serializeScene(scene));
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"scene.json"});
+  }
+
+  // Issue 33: on a full disk the save failed, yet Qt 6.4's QSaveFile renamed an empty file over
+  // the scene and reported success. Now the save fails, says why, and the old file stays whole.
+  void saveOnAFullDiskKeepsTheOldFile_data() {
+    QTest::addColumn<qint64>("leave");    // bytes left free
+    QTest::addColumn<bool>("otherFile");  // Save As over another file rather than Save
+    QTest::newRow("no room, save") << qint64(0) << false;
+    QTest::newRow("4 KiB left, save") << qint64(4096) << false;
+    QTest::newRow("no room, save as over another file") << qint64(0) << true;
+  }
+  void saveOnAFullDiskKeepsTheOldFile() {
+    QFETCH(qint64, leave);
+    QFETCH(bool, otherFile);
+    SmallFilesystem disk(200 * 1024);
+    if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+    const carom::io::SceneLoadResult room = carom::io::loadSceneFile(
+        qEnvironmentVariable("CAROM_SOURCE_DIR") + "/resources/scenes/magic-room.json");
+    QVERIFY2(room.scene, qPrintable(room.error));
+    const QString fileName = disk.filePath(otherFile ? "other.json" : "scene.json");
+    const QByteArray old = otherFile ? QByteArray("{\"another\": \"file\"}\n")
+                                     : carom::io::serializeScene(*room.scene);
+    QVERIFY(writeAll(fileName, old));
+    // An edit that makes the text longer than what is free: 6.5 KB against 4 KiB.
+    Scene edited = *room.scene;
+    for (int i = 0; i < 40; ++i) {
+      carom::Ball ball = edited.balls.front();
+      ball.position = carom::Vec3(0.03 * i, 2.5, 0.0);
+      ball.radius = 0.01;
+      edited.balls.push_back(ball);
+    }
+    QVERIFY(carom::io::serializeScene(edited).size() > 6000);
+    QVERIFY(disk.fill(leave));
+    QString error;
+    QVERIFY(!carom::io::saveSceneFile(edited, fileName, &error));
+    QCOMPARE(error, fileName + ": cannot save: No space left on device");
+    QCOMPARE(readAll(fileName), old);
+    // Nothing of the failed save is left beside it.
+    QCOMPARE(QDir(disk.path()).entryList(QDir::Files | QDir::Hidden),
+             QStringList({".filler", QFileInfo(fileName).fileName()}));
+    // With room again, the same save goes through whole.
+    QVERIFY(disk.unfill());
+    QVERIFY2(carom::io::saveSceneFile(edited, fileName, &error), qPrintable(error));
+    QCOMPARE(readAll(fileName), carom::io::serializeScene(edited));
+  }
+
+  // The last write's failure is found however the text is cut into writes: a file of every
+  // size near the room left fails whole or succeeds whole.
+  void atomicWritesNearTheRoomLeft() {
+    SmallFilesystem disk(64 * 1024);
+    if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+    QVERIFY(disk.fill(8192));
+    const qint64 room = disk.freeBytes();
+    const QString fileName = disk.filePath("data");
+    QVERIFY(writeAll(fileName, "old"));  // takes a page of the room
+    for (qint64 size : {room - 4096 - 1, room - 4096, room - 4096 + 1, room, room + 1}) {
+      const QByteArray contents(size, 'x');
+      QString error;
+      const bool written = carom::io::writeFileAtomically(fileName, contents, &error);
+      QCOMPARE(readAll(fileName), written ? contents : QByteArray("old"));
+      if (!written) QCOMPARE(error, QString("No space left on device"));
+      QVERIFY(writeAll(fileName, "old"));
+      QCOMPARE(QDir(disk.path()).entryList(QDir::Files).size(), 1);
+    }
+  }
+
+  // A link stays a link: the file it names is replaced. A device is written in place.
+  void atomicWritesFollowLinksAndWriteDevicesInPlace() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir("real"));
+    const QString target = dir.filePath("real/scene.json");
+    QVERIFY(writeAll(target, "old"));
+    const QString link = dir.filePath("link.json");
+    QVERIFY(QFile::link("real/scene.json", link));
+    QString error;
+    QVERIFY2(carom::io::writeFileAtomically(link, "new", &error), qPrintable(error));
+    QVERIFY(QFileInfo(link).isSymLink());
+    QCOMPARE(readAll(target), QByteArray("new"));
+    QVERIFY2(carom::io::writeFileAtomically("/dev/null", "gone", &error), qPrintable(error));
+    // Permissions are kept.
+    const QByteArray targetBytes = QFile::encodeName(target);
+    QCOMPARE(::chmod(targetBytes.constData(), 0640), 0);
+    QVERIFY(carom::io::writeFileAtomically(target, "newer", &error));
+    struct stat info;
+    QCOMPARE(::stat(targetBytes.constData(), &info), 0);
+    QCOMPARE(info.st_mode & 07777, mode_t(0640));
+  }
+
+  // Issue 33: a file named in Latin-1 bytes exists, yet Qt's name for it (U+FFFD for the byte)
+  // named no file. The bytes round-trip through the program's names.
+  void fileNamesKeepTheirBytes() {
+    std::mt19937 random(33);
+    for (int trial = 0; trial < 2000; ++trial) {
+      QByteArray bytes(1 + trial % 12, '\0');
+      for (char& c : bytes) c = char(1 + random() % 255);
+      QCOMPARE(carom::io::encodeFileName(carom::io::decodeFileName(bytes)), bytes);
+    }
+    const QString utf8 = QString::fromUtf8("сцена-🎱.json");
+    QCOMPARE(carom::io::decodeFileName(utf8.toUtf8()), utf8);
+    QCOMPARE(carom::io::encodeFileName(utf8), utf8.toUtf8());
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QByteArray latin1 = QFile::encodeName(dir.path()) + "/lat\xe9.json";
+    const QString name = carom::io::decodeFileName(latin1);
+    QString error;
+    QVERIFY2(carom::io::saveSceneFile(Scene(), name, &error), qPrintable(error));
+    QCOMPARE(::access(latin1.constData(), R_OK), 0);  // exactly those bytes
+    const carom::io::SceneLoadResult loaded = carom::io::loadSceneFile(name);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QVERIFY(carom::io::isSameFile(name, name));
+    QVERIFY(!carom::io::isSameFile(name, dir.path()));
+    QCOMPARE(::unlink(latin1.constData()), 0);  // QTemporaryDir cannot name it
+  }
+
+  // Issue 33: a file of 5 million balls was refused only after its tree of 2.5 GB was built;
+  // the count is now found before.
+  void tooManyBallsAreRefusedBeforeTheTree() {
+    QByteArray text = "{\"format\": \"carom-scene\", \"version\": 1, \"balls\": [";
+    const QByteArray ball = "{\"position\": [0, 0, 0], \"radius\": 1, \"velocity\": \"x\"}";
+    text.reserve(1'000'005 * (ball.size() + 2));
+    for (int i = 0; i < 1'000'001; ++i) text += (i ? ", " : "") + ball;
+    text += "]}";
+    // The streaming reader gives up on the string velocity; the reader that names errors counts.
+    const carom::io::SceneLoadResult result = carom::io::parseSceneNamingErrors(text, kSource);
+    QCOMPARE(result.error, kSource + ": balls: must have at most 1000000 entries (got 1000001)");
+    // A version 1 file's "boxes" is an unknown key, kept as it is: not counted as boxes.
+    QByteArray boxes = "\"boxes\": [0";
+    for (std::size_t i = 0; i < carom::tolerance::kMaxBoxes; ++i) boxes += ", 0";
+    const carom::io::SceneLoadResult unknown = parse(document(boxes + "]"));
+    QVERIFY2(unknown.scene, qPrintable(unknown.error));
+    const carom::io::SceneLoadResult counted = parse(documentVersion2(boxes + "]"));
+    QVERIFY(!counted.scene);
+  }
+
+  // Issue 33: the loader mapped the file, and a file cut short under it killed the process
+  // with SIGBUS. It reads the file, and a change while it reads is a message.
+  void aFileThatShrinksWhileItLoadsIsAMessageOrAScene() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString fileName = dir.filePath("shrinking.json");
+    Scene scene;
+    for (int i = 0; i < 200'000; ++i) {
+      carom::Ball ball;
+      ball.position = carom::Vec3(i % 100, (i / 100) % 100, i / 10'000) * 0.1;
+      ball.radius = 0.01;
+      scene.balls.push_back(ball);
+    }
+    QString error;
+    QVERIFY(carom::io::saveSceneFile(scene, fileName, &error));
+    const qint64 size = QFileInfo(fileName).size();
+    // In a child, so that a SIGBUS fails the test rather than ending it. Each try cuts the
+    // file at another moment of the load.
+    for (int delayUs : {0, 2000, 10000, 40000, 150000}) {
+      QVERIFY(carom::io::saveSceneFile(scene, fileName, &error));
+      const pid_t child = ::fork();
+      if (child == 0) {
+        const carom::io::SceneLoadResult loaded = carom::io::loadSceneFile(fileName);
+        const bool answered = loaded.scene ? loaded.scene->balls.size() == scene.balls.size()
+                                           : loaded.error.startsWith(fileName + ": ");
+        ::_exit(answered ? 0 : 1);
+      }
+      ::usleep(useconds_t(delayUs));
+      QVERIFY(::truncate(QFile::encodeName(fileName).constData(), size / 7) == 0);
+      int status = 0;
+      QCOMPARE(::waitpid(child, &status, 0), child);
+      QVERIFY2(WIFEXITED(status),
+               qPrintable(
+                   QString("killed by signal %1 after %2 us").arg(WTERMSIG(status)).arg(delayUs)));
+      QCOMPARE(WEXITSTATUS(status), 0);
+    }
   }
 };
 

@@ -1,7 +1,9 @@
 #include "ui/image_export.h"
 
+#include "sim/io/atomic_file.h"
 #include "ui/render/scene_view.h"
 
+#include <QBuffer>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -133,11 +135,18 @@ QString ImageExport::write(const QString& fileName, const QSize& size) {
     return tr("The graphics driver could not draw a %1×%2 picture.")
         .arg(size.width())
         .arg(size.height());
-  QImageWriter writer(fileName, "png");
-  if (!writer.write(image))
-    return tr("Could not write %1: %2")
-        .arg(QDir::toNativeSeparators(fileName), writer.errorString());
-  return {};
+  return writePng(image, fileName);
+}
+
+QString ImageExport::writePng(const QImage& image, const QString& fileName) {
+  QBuffer encoded;
+  encoded.open(QIODevice::WriteOnly);
+  QImageWriter writer(&encoded, "png");
+  QString error;
+  if (writer.write(image) ? io::writeFileAtomically(fileName, encoded.data(), &error)
+                          : (error = writer.errorString(), false))
+    return {};
+  return tr("Could not write %1: %2").arg(QDir::toNativeSeparators(fileName), error);
 }
 
 }  // namespace carom::ui

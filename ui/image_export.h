@@ -7,6 +7,7 @@
 #include <QSize>
 #include <QString>
 
+class QImage;
 class QLabel;
 class QLineEdit;
 
@@ -48,6 +49,9 @@ class ImageExport : public QObject {
   // Renders the view's current picture at `size` and writes it to `fileName` as a PNG; empty
   // when done, otherwise the reason.
   QString write(const QString& fileName, const QSize& size);
+  // Writes `image` to `fileName` as a PNG, whole or not at all (a full disk leaves no cut file);
+  // empty when done, otherwise the reason.
+  static QString writePng(const QImage& image, const QString& fileName);
 
  signals:
   void message(const QString& text);

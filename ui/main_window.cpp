@@ -119,6 +119,11 @@ MainWindow::MainWindow(QWidget* parent)
   connect(propertiesDock_, &editor::PropertiesDock::refused, this, &MainWindow::showMessage);
   resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   recovery_ = new editor::SceneRecovery(document_, this);
+  connect(recovery_, &editor::SceneRecovery::autosaveFailed, this, [this](const QString& reason) {
+    showMessage(tr("The recovery copy could not be written (%1); the last one is kept. Save "
+                   "the scene elsewhere to be safe.")
+                    .arg(reason));
+  });
   files_ = new SceneFiles(document_, this, this);
   connect(files_, &SceneFiles::message, this, &MainWindow::showMessage);
   connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] { playAction_->setChecked(false); });

@@ -11,7 +11,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QImageWriter>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -430,10 +429,7 @@ QString VideoExport::writeFrame(const VideoFrame& frame) {
     const QString file =
         QDir(settings_.path)
             .filePath(QString("frame_%1.png").arg(frame.index + 1, 6, 10, QLatin1Char('0')));
-    QImageWriter writer(file, "png");
-    if (!writer.write(image))
-      return tr("Could not write %1: %2").arg(QDir::toNativeSeparators(file), writer.errorString());
-    return {};
+    return ImageExport::writePng(image, file);
   }
   // Byte order R, G, B, A whatever the machine's, and rows without padding.
   const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888);

@@ -8,6 +8,7 @@
 #include "app/cli/size_bench.h"
 #include "app/cli/study.h"
 #include "app/cli/timeline_bench.h"
+#include "sim/io/file_names.h"
 #include "sim/io/scene_file.h"
 #include "sim/validation.h"
 
@@ -16,6 +17,7 @@
 #include <QJsonDocument>
 
 #include <exception>
+#include <new>
 
 namespace carom::cli {
 namespace {
@@ -109,6 +111,12 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
     case Command::Run: {
       QElapsedTimer started;  // the report's wall time includes loading and checking the scene
       started.start();
+      const RunOptions& run = command.run;
+      if (run.trajectoryPath && io::isSameFile(*run.trajectoryPath, run.scenePath)) {
+        err << "carom-cli: --trajectory " << *run.trajectoryPath << " is the scene file "
+            << run.scenePath << " itself; give the trajectory another file\n";
+        return kBadInput;
+      }
       const std::optional<Scene> scene = prepareScene(command.run, err);
       if (!scene) return kBadInput;
       if (command.run.autoMethod) return runAuto(*scene, command.run, started, out, err);
@@ -140,6 +148,9 @@ int runCli(const QStringList& arguments, QTextStream& out, QTextStream& err) {
   }
   try {
     return dispatch(*parsed.command, out, err);
+  } catch (const std::bad_alloc&) {
+    err << "carom-cli: not enough memory for this scene\n";
+    return kInternalError;
   } catch (const std::exception& e) {
     err << "carom-cli: internal error: " << e.what() << "\n";
     return kInternalError;

@@ -3,12 +3,12 @@
 #include "app/cli/method_report.h"
 
 #include "app/cli/cli.h"
+#include "sim/io/atomic_file.h"
 #include "sim/measures.h"
 #include "sim/run_watch.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -171,7 +171,7 @@ QString ballText(int ball, const QString& name) {
   return text;
 }
 
-bool writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>& state) {
+bool writeTrajectoryRows(io::AtomicFile& file, double time, const std::vector<BallState>& state) {
   QByteArray rows;
   for (int i = 0; i < static_cast<int>(state.size()); ++i) {
     const Vec3& p = state[i].position;
@@ -181,11 +181,12 @@ bool writeTrajectoryRows(QFile& file, double time, const std::vector<BallState>&
       rows += ',' + QByteArray::number(x, 'g', 17);
     rows += '\n';
   }
-  return file.write(rows) == rows.size();
+  return file.write(rows);
 }
 
-int trajectoryFailed(const QFile& file, QTextStream& err) {
-  err << "carom-cli: writing " << file.fileName() << " failed: " << file.errorString() << "\n";
+int trajectoryFailed(const io::AtomicFile& file, QTextStream& err) {
+  err << "carom-cli: writing the trajectory " << file.fileName()
+      << " failed: " << file.errorString() << "; no file was written (one there before is kept)\n";
   return kInternalError;
 }
 
@@ -307,14 +308,12 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
           ? std::max<std::uint64_t>(1, std::uint64_t(std::ceil(options.duration / tick - 1e-9)))
           : 0;
 
-  QFile trajectory;
-  if (options.trajectoryPath) {
-    trajectory.setFileName(*options.trajectoryPath);
-    if (!trajectory.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-      err << "carom-cli: cannot write trajectory file " << *options.trajectoryPath << ": "
-          << trajectory.errorString() << "\n";
-      return kBadInput;
-    }
+  // Written to a new file renamed into place at the end: a run that fails leaves no half file.
+  io::AtomicFile trajectory(options.trajectoryPath.value_or(QString()));
+  if (options.trajectoryPath && !trajectory.open()) {
+    err << "carom-cli: cannot write trajectory file " << *options.trajectoryPath << ": "
+        << trajectory.errorString() << "\n";
+    return kBadInput;
   }
 
   const InterruptCatcher interruptCatcher;
@@ -335,7 +334,7 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
   QElapsedTimer measuring;
   measuring.start();
   result.initialEnergy = sim.totalEnergy();
-  if (trajectory.isOpen() && (trajectory.write("time,ball,x,y,z,vx,vy,vz\n") < 0 ||
+  if (trajectory.isOpen() && (!trajectory.write(QByteArray("time,ball,x,y,z,vx,vy,vz\n")) ||
                               !writeTrajectoryRows(trajectory, 0.0, sim.state())))
     return trajectoryFailed(trajectory, err);
   result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
@@ -409,7 +408,8 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
   result.escaped = final.escaped;
   result.finalEnergy = sim.totalEnergy();
   for (const BallState& s : sim.state()) result.resting += s.resting ? 1 : 0;
-  if (trajectory.isOpen() && !trajectory.flush()) return trajectoryFailed(trajectory, err);
+  // Also after Ctrl+C or the watch: the file holds the run so far, as the report does.
+  if (trajectory.isOpen() && !trajectory.commit()) return trajectoryFailed(trajectory, err);
   result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
   result.wallSeconds = started.nsecsElapsed() * 1e-9;
 

@@ -1,22 +1,31 @@
 #include "sim/io/scene_file.h"
 
+#include "sim/io/atomic_file.h"
+#include "sim/io/file_names.h"
 #include "sim/io/scene_format.h"
 #include "sim/io/scene_stream_reader.h"
 #include "sim/tolerances.h"
 #include "sim/validation.h"
 
 #include <QFile>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <QJsonValue>
-#include <QSaveFile>
+#include <QScopeGuard>
 #include <QSet>
 #include <QStringList>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -435,26 +444,64 @@ QByteArray listText(const QByteArrayList& items) {
   return "[\n    " + items.join(",\n    ") + "\n  ]";
 }
 
-// An upper bound on the values a JSON document holds: one more than its commas outside strings.
-qint64 valueBound(const QByteArray& json) {
-  qint64 commas = 0;
-  bool inString = false;
-  bool escaped = false;
-  for (const char c : json) {
-    if (inString) {
-      if (escaped)
-        escaped = false;
-      else if (c == '\\')
-        escaped = true;
-      else if (c == '"')
-        inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == ',') {
-      ++commas;
+// What a document holds, counted before it is parsed: an upper bound on its values (one more
+// than its commas outside strings) and the elements of each list at the top, so that a document
+// beyond the limits is refused before its tree, tens of bytes a value, is built.
+struct DocumentCounts {
+  qint64 values = 1;
+  SceneCounts lists;
+};
+
+DocumentCounts countDocument(const QByteArray& json) {
+  DocumentCounts counts;
+  std::size_t* list = nullptr;  // the top-level list being counted
+  int depth = 0;
+  bool expectingElement = false;
+  QString key;  // the last string at depth 1: the key of the value that follows it
+  bool versionOne = false;
+  char previous = 0;  // the last character outside strings and white space
+  for (qsizetype i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
+    if (depth == 2 && list && expectingElement && c != ']') {
+      ++*list;
+      expectingElement = false;
     }
+    if (c == '"') {
+      const qsizetype start = i;
+      for (++i; i < json.size() && json[i] != '"'; ++i)
+        if (json[i] == '\\') ++i;
+      previous = '"';
+      if (depth != 1) continue;
+      const QByteArray token = json.mid(start, i - start + 1);
+      key = token.contains('\\')
+                ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
+                : QString::fromUtf8(token.mid(1, token.size() - 2));
+    } else if (c == ',') {
+      ++counts.values;
+      if (depth == 2) expectingElement = true;
+    } else if (c == '{' || c == '[') {
+      ++depth;
+      if (depth == 2 && c == '[') {
+        list = key == "balls"       ? &counts.lists.balls
+               : key == "planes"    ? &counts.lists.planes
+               : key == "cylinders" ? &counts.lists.cylinders
+               : key == "boxes"     ? &counts.lists.boxes
+                                    : nullptr;
+        expectingElement = true;
+      }
+    } else if (c == '}' || c == ']') {
+      if (depth == 2) list = nullptr;
+      --depth;
+    } else if (depth == 1 && key == "version" && previous == ':' && c == '1' &&
+               (i + 1 == json.size() || !std::isdigit(static_cast<unsigned char>(json[i + 1])))) {
+      versionOne = true;
+    }
+    previous = c;
   }
-  return commas + 1;
+  // Version 1 had no boxes: there "boxes" is a key it does not know, kept as it is.
+  if (versionOne) counts.lists.boxes = 0;
+  return counts;
 }
 
 // The path of the first key that appears twice in one object, such as "balls[2].radius".
@@ -526,10 +573,13 @@ SceneLoadResult validated(Scene scene, const QString& sourceName) {
 }  // namespace
 
 SceneLoadResult parseSceneNamingErrors(const QByteArray& json, const QString& sourceName) {
-  if (valueBound(json) > kMaxSceneValues)
+  const DocumentCounts counts = countDocument(json);
+  if (counts.values > kMaxSceneValues)
     return {std::nullopt, sourceName + QString(": the document holds more than %1 values, the "
                                                "limit for scene files")
                                            .arg(kMaxSceneValues)};
+  if (const auto errors = validateCounts(counts.lists); !errors.empty())
+    return {std::nullopt, sourceName + ": " + QString::fromStdString(errors.front().text())};
   QJsonParseError parseError;
   const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
   if (parseError.error != QJsonParseError::NoError) {
@@ -566,44 +616,101 @@ SceneLoadResult parseText(std::string_view json, const QString& sourceName) {
 }  // namespace
 
 SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName) {
-  return parseText(std::string_view(json.constData(), static_cast<std::size_t>(json.size())),
-                   sourceName);
+  try {
+    return parseText(std::string_view(json.constData(), static_cast<std::size_t>(json.size())),
+                     sourceName);
+  } catch (const std::bad_alloc&) {
+    return {std::nullopt, sourceName + ": not enough memory to load the scene"};
+  }
 }
 
-SceneLoadResult loadSceneFile(const QString& fileName) {
-  // Reading a FIFO with no writer, or a terminal, would wait forever: only regular files are
-  // opened. A directory keeps the message opening it gives.
-  const QFileInfo info(fileName);
-  if (info.exists() && !info.isFile() && !info.isDir())
-    return {std::nullopt, fileName +
-                              ": not a regular file (a FIFO, device or socket); scene "
-                              "files are read from regular files only"};
-  QFile file(fileName);
-  if (!file.open(QIODevice::ReadOnly))
-    return {std::nullopt, fileName + ": cannot open the file: " + file.errorString()};
+namespace {
+
+// What a refused load may have built (a document tree, a million balls) goes back to the
+// system rather than stay with the process: the window lives on after the refusal.
+void releaseFreeMemory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
+struct FileText {
+  QByteArray text;
+  QString error;  // set when it could not be read whole
+};
+
+// The file's bytes, read into memory. Mapped instead, it killed the process with SIGBUS when it
+// shrank under the reader; read, a change while it is read is found and said.
+FileText readSceneText(const QString& fileName) {
+  // The bundled examples are Qt resources (":/scenes/..."), in the program's memory.
+  if (fileName.startsWith(":/")) {
+    QFile resource(fileName);
+    if (!resource.open(QIODevice::ReadOnly))
+      return {{}, fileName + ": cannot open the file: " + resource.errorString()};
+    return {resource.readAll(), {}};
+  }
+  // O_NONBLOCK: opening a FIFO with no writer would wait forever. Only regular files are read.
+  const int descriptor =
+      ::open(encodeFileName(fileName).constData(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (descriptor < 0) return {{}, fileName + ": cannot open the file: " + qt_error_string(errno)};
+  const auto closeAfter = qScopeGuard([descriptor] { ::close(descriptor); });
+  struct stat before;
+  if (::fstat(descriptor, &before) != 0)
+    return {{}, fileName + ": cannot read the file: " + qt_error_string(errno)};
+  if (S_ISDIR(before.st_mode))
+    return {{}, fileName + ": cannot open the file: file to open is a directory"};
+  if (!S_ISREG(before.st_mode))
+    return {{},
+            fileName +
+                ": not a regular file (a FIFO, device or socket); scene files are read "
+                "from regular files only"};
   const QString tooLarge =
       fileName + QString(": the file is larger than the limit of %1 MiB for scene files")
                      .arg(kMaxSceneFileBytes / (1024 * 1024));
-  // The size check comes before reading; reading at most one byte more also catches files that
-  // grow meanwhile or report no size.
-  const qint64 size = file.size();
-  if (size > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
-  // Mapped rather than read when it can be: the pages come from the file cache as they are
-  // parsed, and no copy of a large file is made.
-  if (size > 0) {
-    if (const uchar* mapped = file.map(0, size)) {
-      SceneLoadResult result = parseText(
-          std::string_view(reinterpret_cast<const char*>(mapped), static_cast<std::size_t>(size)),
-          fileName);
-      file.unmap(const_cast<uchar*>(mapped));
-      return result;
+  if (before.st_size > kMaxSceneFileBytes) return {{}, tooLarge};
+  QByteArray text;
+  // One byte more than the size: a file that grows while it is read shows as a longer read.
+  text.resize(qsizetype(before.st_size) + 1);
+  qsizetype length = 0;
+  while (true) {
+    if (length == text.size()) {
+      if (text.size() > kMaxSceneFileBytes) return {{}, tooLarge};
+      text.resize(std::min<qsizetype>(2 * text.size() + 4096, kMaxSceneFileBytes + 1));
     }
+    const ssize_t got = ::read(descriptor, text.data() + length, std::size_t(text.size() - length));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) return {{}, fileName + ": cannot read the file: " + qt_error_string(errno)};
+    if (got == 0) break;
+    length += got;
   }
-  const QByteArray json = file.read(kMaxSceneFileBytes + 1);
-  if (file.error() != QFileDevice::NoError)
-    return {std::nullopt, fileName + ": cannot read the file: " + file.errorString()};
-  if (json.size() > kMaxSceneFileBytes) return {std::nullopt, tooLarge};
-  return parseScene(json, fileName);
+  text.truncate(length);
+  struct stat after;
+  const bool changed = ::fstat(descriptor, &after) != 0 || after.st_size != before.st_size ||
+                       after.st_mtim.tv_sec != before.st_mtim.tv_sec ||
+                       after.st_mtim.tv_nsec != before.st_mtim.tv_nsec ||
+                       (before.st_size > 0 && length != before.st_size);
+  if (changed)
+    return {{},
+            fileName + QString(": the file changed while it was read (it had %1 bytes, %2 "
+                               "were read); open it again once it is written")
+                           .arg(before.st_size)
+                           .arg(length)};
+  return {std::move(text), {}};
+}
+
+}  // namespace
+
+SceneLoadResult loadSceneFile(const QString& fileName) {
+  SceneLoadResult result;
+  try {
+    FileText file = readSceneText(fileName);
+    if (!file.error.isEmpty()) return {std::nullopt, file.error};
+    result = parseScene(file.text, fileName);
+  } catch (const std::bad_alloc&) {
+    result = {std::nullopt, fileName + ": not enough memory to load the scene"};
+  }
+  if (!result.scene) releaseFreeMemory();
+  return result;
 }
 
 namespace {
@@ -769,25 +876,16 @@ QByteArray serializeScene(const Scene& scene) {
 }
 
 bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) {
-  const auto failWith = [&](const QString& reason) {
-    if (error) *error = fileName + ": cannot save: " + reason;
-    return false;
-  };
-  QSaveFile file(fileName);
-  if (!file.open(QIODevice::WriteOnly)) return failWith(file.errorString());
-  bool written = true;
-  writeScene(scene, [&](const char* data, std::size_t size) {
-    written = written && file.write(data, static_cast<qint64>(size)) == static_cast<qint64>(size);
-  });
-  if (!written) {
-    const QString reason = file.errorString();
-    file.cancelWriting();
-    return failWith(reason);
+  AtomicFile file(fileName);
+  bool written = file.open();
+  if (written) {
+    writeScene(scene, [&](const char* data, std::size_t size) {
+      written = written && file.write(data, size);
+    });
+    written = written && file.commit();
   }
-  // Until commit() the old file stays as it was; commit renames the new one over it.
-  if (!file.commit()) return failWith(file.errorString());
-  if (error) error->clear();
-  return true;
+  if (error) *error = written ? QString() : fileName + ": cannot save: " + file.errorString();
+  return written;
 }
 
 }  // namespace carom::io

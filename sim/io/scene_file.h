@@ -18,6 +18,9 @@ struct SceneLoadResult {
 // Reads a scene from JSON text; `sourceName` starts every error message. The scene is validated
 // (validateScene), so a returned scene is ready to simulate.
 SceneLoadResult parseScene(const QByteArray& json, const QString& sourceName);
+// Reads the file into memory (a file that changes while it is read is refused with a message),
+// then as parseScene. Names go to the system as decodeFileName's bytes (file_names.h). Running
+// out of memory is a message too.
 SceneLoadResult loadSceneFile(const QString& fileName);
 // The reader behind parseScene's messages: Qt's JSON parser (line and column of a syntax
 // error), then each field by its path. parseScene turns to it whenever the streaming reader
@@ -28,8 +31,8 @@ SceneLoadResult parseSceneNamingErrors(const QByteArray& json, const QString& so
 // Indented JSON of format version 1; unknown keys kept in the scene's `extra` fields are written
 // back, so that saving what was loaded loses nothing.
 QByteArray serializeScene(const Scene& scene);
-// Replaces `fileName` atomically: on failure the old file is untouched and `*error` (when given)
-// says why.
+// Replaces `fileName` whole (atomic_file.h): on failure the old file is untouched and `*error`
+// (when given) says why.
 bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error);
 
 // Files larger than this are refused unread.

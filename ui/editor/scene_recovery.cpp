@@ -1,5 +1,6 @@
 #include "ui/editor/scene_recovery.h"
 
+#include "sim/io/atomic_file.h"
 #include "sim/io/scene_file.h"
 #include "ui/editor/scene_document.h"
 
@@ -8,7 +9,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -75,11 +75,19 @@ QString SceneRecovery::copyFile() const {
 
 bool SceneRecovery::autosave() {
   if (!document_->isModified() || !changedSinceCopy_) return true;
-  if (!io::saveSceneFile(document_->scene(), copyFile(), nullptr)) return false;
-  QSaveFile note(pathOf(id_, kNoteSuffix));
-  if (!note.open(QIODevice::WriteOnly)) return false;
-  note.write(QJsonDocument(QJsonObject{{"original", document_->fileName()}}).toJson());
-  if (!note.commit()) return false;
+  // Each file is replaced whole or not at all: on a full disk the last copy stays recoverable.
+  QString error;
+  const bool written =
+      io::saveSceneFile(document_->scene(), copyFile(), &error) &&
+      io::writeFileAtomically(
+          pathOf(id_, kNoteSuffix),
+          QJsonDocument(QJsonObject{{"original", document_->fileName()}}).toJson(), &error);
+  if (!written) {
+    // The system's reason alone, the part after the file's name: the copy's path means nothing
+    // to the user.
+    emit autosaveFailed(error.mid(error.lastIndexOf(": ") + 2));
+    return false;
+  }
   changedSinceCopy_ = false;
   emit autosaved(copyFile());
   return true;

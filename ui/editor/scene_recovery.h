@@ -50,6 +50,8 @@ class SceneRecovery : public QObject {
 
  signals:
   void autosaved(const QString& file);
+  // The copy could not be written (a full disk); the last one written, if any, is kept whole.
+  void autosaveFailed(const QString& reason);
 
  private:
   void removeCopy();

@@ -1,0 +1,203 @@
+// The window under faults (issue 33), driven as a user would with keys and dialogs: a scene
+// saved to a full disk, Save As over a file on it, the crash-recovery copy when the disk fills,
+// and a file named in bytes that are not UTF-8. The disk is a real small tmpfs; where mounting
+// is not allowed (not root), those cases skip with the reason.
+
+#include "sim/io/file_names.h"
+#include "sim/io/scene_file.h"
+#include "tests/editor_fixture.h"
+#include "tests/small_filesystem.h"
+#include "ui/editor/scene_recovery.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <unistd.h>
+
+#include <memory>
+
+using carom::editor::SceneRecovery;
+using carom::testing::ModalAnswerer;
+
+namespace {
+
+QByteArray bytesOf(const QString& fileName) {
+  QFile file(fileName);
+  return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// Answers every message box while it lives: Yes to "replace?", otherwise OK or the given button,
+// noting each text. The window's questions come one after another, from inside one key press.
+class MessageBoxes {
+ public:
+  explicit MessageBoxes(QMessageBox::StandardButton otherwise = QMessageBox::Ok)
+      : otherwise_(otherwise) {
+    timer_.setInterval(10);
+    QObject::connect(&timer_, &QTimer::timeout, [this] { answer(); });
+    timer_.start();
+  }
+  const QStringList& texts() const { return texts_; }
+
+ private:
+  void answer() {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box || !box->isVisible()) return;
+    texts_ << box->text();
+    QAbstractButton* button = box->button(QMessageBox::Yes);
+    if (!button || !box->text().contains("already exists")) button = box->button(otherwise_);
+    if (!button) button = box->buttons().value(0);
+    button->click();
+  }
+  QMessageBox::StandardButton otherwise_;
+  QTimer timer_;
+  QStringList texts_;
+};
+
+}  // namespace
+
+class TestFaults : public carom::testing::EditorFixture {
+  Q_OBJECT
+ private slots:
+  void init() { openWindow(); }
+  void cleanup() { window_.reset(); }
+  void saveOnAFullDiskKeepsTheFileAndTheEdits();
+  void saveAsOverAFileOnAFullDisk();
+  void recoveryCopyOnAFullDiskKeepsTheLastOne();
+  void aFileNamedInLatin1OpensAndSaves();
+
+ private:
+  // Deletes the selected first ball with the key: one edit.
+  void deleteTheFirstBall() {
+    document().setSelection({{carom::editor::ObjectKind::Ball, 0}});
+    QTest::keyClick(window_.get(), Qt::Key_Delete);
+    QVERIFY(window_->isWindowModified());
+  }
+};
+
+// Issue 33: the status bar said "Saved", the file was 0 bytes, the title lost its '*' and
+// Ctrl+Q quit without asking.
+void TestFaults::saveOnAFullDiskKeepsTheFileAndTheEdits() {
+  SmallFilesystem disk(200 * 1024);
+  if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+  const QString file = disk.filePath("magic-room.json");
+  QVERIFY(QFile::copy(
+      qEnvironmentVariable("CAROM_SOURCE_DIR") + "/resources/scenes/magic-room.json", file));
+  const QByteArray before = bytesOf(file);
+  QVERIFY(window_->openFile(file, false));
+  deleteTheFirstBall();
+  const carom::Scene edited = document().scene();
+  QVERIFY(disk.fill());
+  {
+    MessageBoxes boxes;
+    QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+    QTRY_COMPARE(boxes.texts().size(), 1);
+    QVERIFY2(boxes.texts().first().contains("No space left on device"),
+             qPrintable(boxes.texts().first()));
+  }
+  QCOMPARE(bytesOf(file), before);
+  QVERIFY(window_->isWindowModified());
+  QVERIFY(!window_->statusMessage().startsWith("Saved"));
+  // Ctrl+Q asks about the unsaved changes; Cancel keeps the window.
+  {
+    MessageBoxes boxes(QMessageBox::Cancel);
+    QTest::keyClick(window_.get(), Qt::Key_Q, Qt::ControlModifier);
+    QTRY_COMPARE(boxes.texts().size(), 1);
+    QVERIFY2(boxes.texts().first().contains("unsaved changes"), qPrintable(boxes.texts().first()));
+  }
+  QVERIFY(window_->isVisible());
+  QVERIFY(document().scene() == edited);
+  // Room again: the same key saves the edits whole.
+  QVERIFY(disk.unfill());
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+  QTRY_VERIFY(!window_->isWindowModified());
+  QVERIFY2(window_->statusMessage().startsWith("Saved"), qPrintable(window_->statusMessage()));
+  QVERIFY(carom::io::loadSceneFile(file).scene == edited);
+}
+
+// Issue 33: Save As over an existing file on a full disk left that file 0 bytes.
+void TestFaults::saveAsOverAFileOnAFullDisk() {
+  SmallFilesystem disk(200 * 1024);
+  if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+  const QString other = disk.filePath("other.carom");
+  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), other, nullptr));
+  const QByteArray before = bytesOf(other);
+  deleteTheFirstBall();
+  QVERIFY(disk.fill());
+  ModalAnswerer<QFileDialog> chooseFile([&](QFileDialog* dialog) {
+    dialog->selectFile(other);
+    QMetaObject::invokeMethod(dialog, "accept");
+  });
+  MessageBoxes boxes;
+  QVERIFY(!window_->saveAs());
+  QVERIFY(chooseFile.answered());
+  QTRY_VERIFY(!boxes.texts().isEmpty());
+  QVERIFY2(boxes.texts().last().contains("No space left on device"),
+           qPrintable(boxes.texts().join(" | ")));
+  QCOMPARE(bytesOf(other), before);
+  QVERIFY(window_->isWindowModified());
+  QVERIFY(document().fileName().isEmpty());
+}
+
+// Issue 33: on a full disk the copy was written empty, and after a crash it could not be
+// recovered. The last whole copy stays, and the status bar says the new one failed.
+void TestFaults::recoveryCopyOnAFullDiskKeepsTheLastOne() {
+  window_.reset();
+  QDir(SceneRecovery::folder()).removeRecursively();
+  SmallFilesystem disk(200 * 1024, SceneRecovery::folder());
+  if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
+  openWindow();
+  SceneRecovery* recovery = window_->recovery();
+  deleteTheFirstBall();
+  QVERIFY(recovery->autosave());
+  const carom::Scene copied = document().scene();
+  QVERIFY(carom::io::loadSceneFile(recovery->copyFile()).scene == copied);
+  document().setSelection({{carom::editor::ObjectKind::Plane, 0}});
+  QTest::keyClick(window_.get(), Qt::Key_Delete);
+  QVERIFY(!(document().scene() == copied));
+  QVERIFY(disk.fill());
+  QSignalSpy failed(recovery, &SceneRecovery::autosaveFailed);
+  QVERIFY(!recovery->autosave());
+  QCOMPARE(failed.size(), 1);
+  QCOMPARE(failed.first().first().toString(), QString("No space left on device"));
+  QVERIFY2(window_->statusMessage().contains("recovery copy could not be written"),
+           qPrintable(window_->statusMessage()));
+  QVERIFY(carom::io::loadSceneFile(recovery->copyFile()).scene == copied);
+  QVERIFY(disk.unfill());
+  QVERIFY(recovery->autosave());
+  QVERIFY(carom::io::loadSceneFile(recovery->copyFile()).scene == document().scene());
+  // The window ends cleanly on the mounted folder before it is unmounted.
+  MessageBoxes discard(QMessageBox::Discard);
+  QVERIFY(window_->close());
+  window_.reset();
+}
+
+// Issue 33: a scene file named in Latin-1 bytes was "No such file or directory".
+void TestFaults::aFileNamedInLatin1OpensAndSaves() {
+  QTemporaryDir dir;
+  QVERIFY(dir.isValid());
+  const QByteArray bytes = QFile::encodeName(dir.path()) + "/lat\xe9.carom";
+  const QString name = carom::io::decodeFileName(bytes);
+  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), name, nullptr));
+  QVERIFY(window_->openFile(name, false));
+  QCOMPARE(document().scene().balls.size(), std::size_t{1});
+  deleteTheFirstBall();
+  QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
+  QTRY_VERIFY(!window_->isWindowModified());
+  const carom::io::SceneLoadResult saved = carom::io::loadSceneFile(name);
+  QVERIFY2(saved.scene, qPrintable(saved.error));
+  QCOMPARE(saved.scene->balls.size(), std::size_t{0});
+  QCOMPARE(::access(bytes.constData(), R_OK), 0);
+  QCOMPARE(::unlink(bytes.constData()), 0);  // QTemporaryDir cannot name it
+}
+
+int main(int argc, char** argv) {
+  carom::testing::EditorFixture::initMain();
+  QApplication app(argc, argv);
+  TestFaults test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_faults.moc"
