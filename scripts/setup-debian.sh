@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ qt6-base-dev libqt6opengl6-dev qt6-charts-dev qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
   qt6-tools-dev-tools libeigen3-dev
-  qt6-multimedia-dev pulseaudio pulseaudio-utils xvfb xauth libgl1-mesa-dri libglx-mesa0
+  qt6-multimedia-dev pulseaudio pulseaudio-utils xvfb xauth xdotool libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev libtsan2 python3 ffmpeg
   dpkg-dev desktop-file-utils appstream shared-mime-info xdg-utils libglib2.0-bin groff-base man-db)
 missing=()

@@ -1256,6 +1256,41 @@ class SceneFileTest : public QObject {
       QCOMPARE(WEXITSTATUS(status), 0);
     }
   }
+
+  // Issue 33: after a refusal the window still held 2.39 GB. A refused load gives back what it
+  // built: here a tree of 300,000 balls that the reader naming errors builds before it finds
+  // the last ball's velocity is text.
+  void memoryIsGivenBackAfterARefusal() {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QByteArray text = "{\"format\": \"carom-scene\", \"version\": 1, \"balls\": [";
+    for (int i = 0; i < 300'000; ++i)
+      text += QString("%1{\"position\": [%2, %3, %4], \"radius\": 0.01, \"name\": \"b%5\"}")
+                  .arg(i ? ", " : "")
+                  .arg(0.1 * (i % 100))
+                  .arg(0.1 * ((i / 100) % 100))
+                  .arg(0.1 * (i / 10'000))
+                  .arg(i)
+                  .toUtf8();
+    text += ", {\"position\": [0, 0, 9], \"radius\": 0.01, \"velocity\": \"fast\"}]}";
+    const QString fileName = dir.filePath("refused.json");
+    QVERIFY(writeAll(fileName, text));
+    text.clear();
+    text.squeeze();
+    const auto residentBytes = [] {
+      QFile statm("/proc/self/statm");
+      if (!statm.open(QIODevice::ReadOnly)) return qint64(-1);
+      return statm.readAll().split(' ').value(1).toLongLong() * ::sysconf(_SC_PAGESIZE);
+    };
+    const qint64 before = residentBytes();
+    const carom::io::SceneLoadResult result = carom::io::loadSceneFile(fileName);
+    QVERIFY(!result.scene);
+    QVERIFY2(result.error.contains("balls[300000].velocity"), qPrintable(result.error));
+    const qint64 after = residentBytes();
+    QVERIFY(before > 0);
+    QVERIFY2(after - before < 32 << 20, qPrintable(QString("%1 MiB more resident after the refusal")
+                                                          .arg((after - before) >> 20)));
+  }
 };
 
 QTEST_APPLESS_MAIN(SceneFileTest)
