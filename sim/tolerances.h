@@ -54,6 +54,11 @@ inline constexpr std::size_t kMaxBalls = 1'000'000;
 inline constexpr std::size_t kMaxPlanes = 10'000;
 inline constexpr std::size_t kMaxCylinders = 10'000;
 inline constexpr std::size_t kMaxBoxes = 10'000;
+// Characters (Unicode code points) of an object's name. A name is a label (the outline, the
+// Ball story's legend, messages): 256 holds any a user would type, and bounds what showing one
+// costs; Qt Charts' legend shortens a name in memory growing with its square, and a ball named
+// with 30,000 characters took the window 1 GB when selected (docs/scene-format.md).
+inline constexpr std::size_t kMaxNameCharacters = 256;
 
 }  // namespace carom::tolerance
 

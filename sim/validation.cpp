@@ -135,9 +135,13 @@ class FieldChecker {
   }
 
   void info(const ObjectInfo& info) {
+    const std::size_t nameLength = characterCount(info.name);
+    if (nameLength > tol::kMaxNameCharacters)
+      fail(".name", "must be at most " + std::to_string(tol::kMaxNameCharacters) +
+                        " characters (got " + std::to_string(nameLength) + ")");
     restitution(".restitution", info.restitution);
     if (!isColor(info.color))
-      fail(".color", "must be empty or \"#rrggbb\" (got \"" + info.color + "\")");
+      fail(".color", "must be empty or \"#rrggbb\" (got \"" + excerpt(info.color) + "\")");
   }
 
  private:
@@ -545,6 +549,24 @@ std::vector<ValidationError> validateCounts(const SceneCounts& counts) {
   ErrorList errors(4);
   checkCounts(counts, errors);
   return errors.take();
+}
+
+std::size_t characterCount(std::string_view utf8) {
+  // Every character has one byte that is not a continuation byte (10xxxxxx).
+  return static_cast<std::size_t>(std::count_if(utf8.begin(), utf8.end(), [](char byte) {
+    return (static_cast<unsigned char>(byte) & 0xC0) != 0x80;
+  }));
+}
+
+std::string excerpt(std::string_view utf8) {
+  // As much as a message can quote and still read as one line.
+  constexpr std::size_t kQuotedCharacters = 32;
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < utf8.size(); ++i) {
+    if ((static_cast<unsigned char>(utf8[i]) & 0xC0) == 0x80) continue;
+    if (characters++ == kQuotedCharacters) return std::string(utf8.substr(0, i)) + "\u2026";
+  }
+  return std::string(utf8);
 }
 
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors) {

@@ -4,6 +4,7 @@
 #include "sim/scene.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace carom {
@@ -17,8 +18,9 @@ struct ValidationError {
 // All problems of the scene, in file order (at most `maxErrors`); empty when the scene is valid.
 // Checks every number is finite and within the limits of tolerances.h, radii and masses are
 // positive, as are a box's half extents, restitution is in [0, 1], normals and axes (also a
-// box's rotation axis) are not zero-length, colours are "#rrggbb", and that no ball overlaps
-// another ball, a plane, a cylinder or a box (touching is fine).
+// box's rotation axis) are not zero-length, names are at most kMaxNameCharacters long, colours
+// are "#rrggbb", and that no ball overlaps another ball, a plane, a cylinder or a box (touching
+// is fine).
 std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors = 20);
 
 // The same rules for an edit, without looking at the whole scene again: `scene` was valid
@@ -44,5 +46,12 @@ struct SceneCounts {
 std::vector<ValidationError> validateCounts(const SceneCounts& counts);
 // The world's settings alone (gravity, time step, restitution).
 std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors = 20);
+
+// Characters (Unicode code points) of UTF-8 text: the unit of the names' limit.
+std::size_t characterCount(std::string_view utf8);
+
+// Text from a scene file as a message quotes it: whole when short, else its first characters
+// and "…", so that a message about a huge string (a colour, a method, a key) stays one line.
+std::string excerpt(std::string_view utf8);
 
 }  // namespace carom

@@ -8,16 +8,23 @@
 #include "sim/shapes.h"
 #include "tests/editor_fixture.h"
 #include "tests/scene_helpers.h"
+#include "ui/ball_story_dock.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 
+#include <QChartView>
+#include <QClipboard>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QLineEdit>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QTreeView>
@@ -74,6 +81,9 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void fieldsShowSixDigitsAndEditAllOfThem();
   void fieldsLeftAsTheyWereKeepExactValues();
   void refusalGoesOnceTheFieldIsValidAgain();
+  void refusesNamesOverTheLimit();
+  void outlineRefusesNamesOverTheLimit();
+  void longNamesAreElided();
 
  private:
   QTreeView& tree() { return *window_->outlineDock()->tree(); }
@@ -1162,6 +1172,110 @@ void TestEditorDocks::refusalGoesOnceTheFieldIsValidAgain() {
   document().undoStack()->undo();
   QVERIFY(properties().message().isEmpty());
   QCOMPARE(field("ballRadius")->text(), QString("0.5"));
+}
+
+// A name longer than the scene format allows, typed or pasted into the Name field, is refused
+// by the validation with its message and changes nothing.
+void TestEditorDocks::refusesNamesOverTheLimit() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  const carom::Scene before = document().scene();
+  type("name", QString(257, 'n'));
+  const QString typed = "balls[0].name: must be at most 256 characters (got 257)";
+  QVERIFY2(properties().message().contains(typed), qPrintable(properties().message()));
+  QVERIFY2(window_->statusMessage().contains(typed), qPrintable(window_->statusMessage()));
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), 0);
+  QCOMPARE(field("name")->text(), QString("first"));
+  // Pasted: 30,000 characters in one go.
+  QLineEdit* name = field("name");
+  QApplication::clipboard()->setText(QString(30'000, 'p'));
+  QTest::mouseClick(name, Qt::LeftButton);
+  QTest::keyClick(name, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(name, Qt::Key_V, Qt::ControlModifier);
+  QCOMPARE(name->text().size(), 30'000);
+  QTest::keyClick(name, Qt::Key_Return);
+  const QString pasted = "balls[0].name: must be at most 256 characters (got 30000)";
+  QVERIFY2(properties().message().contains(pasted), qPrintable(properties().message()));
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), 0);
+  QCOMPARE(name->text(), QString("first"));
+  // At the limit it is taken.
+  type("name", QString(256, 'n'));
+  QCOMPARE(document().scene().balls[0].name, std::string(256, 'n'));
+  QVERIFY(properties().message().isEmpty());
+}
+
+void TestEditorDocks::outlineRefusesNamesOverTheLimit() {
+  const QModelIndex floor = outline().index(0, 0, outline().groupIndex(ObjectKind::Plane));
+  clickRow(floor);
+  const carom::Scene before = document().scene();
+  QTest::keyClick(&tree(), Qt::Key_F2);
+  auto* editor = tree().viewport()->findChild<QLineEdit*>();
+  QTRY_VERIFY(editor && editor->isVisible());
+  QApplication::clipboard()->setText(QString(300, QChar(0x00e9)));
+  QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClick(editor, Qt::Key_V, Qt::ControlModifier);
+  QTest::keyClick(editor, Qt::Key_Return);
+  const QString refusal = "planes[0].name: must be at most 256 characters (got 300)";
+  QTRY_VERIFY2(window_->statusMessage().contains(refusal), qPrintable(window_->statusMessage()));
+  QVERIFY(document().scene() == before);
+  QCOMPARE(document().undoStack()->count(), 0);
+  QCOMPARE(floor.data().toString(), QString("floor"));
+}
+
+// Names as long as the format allows, of wide letters, are shown elided: the Properties dock's
+// heading fits the dock with no sideways scrolling, and the Ball story's legend and the outline
+// take no more than a short label's room.
+void TestEditorDocks::longNamesAreElided() {
+  carom::Scene scene = carom::testing::floorScene();
+  const QString ballName(256, 'W');
+  scene.balls[0].name = ballName.toStdString();
+  scene.planes[0].name.clear();
+  for (int i = 0; i < 256; ++i) scene.planes[0].name += "\u00c9";
+  window_->openScene(scene, {}, "long names");
+  const QModelIndex ball = outline().index(0, 0, outline().groupIndex(ObjectKind::Ball));
+  tree().expandAll();
+  clickRow(ball);
+  QCOMPARE(document().selection(), (Selection{{ObjectKind::Ball, 0}}));
+
+  // The outline holds the whole name and elides it to its width.
+  QCOMPARE(ball.data().toString(), ballName);
+  QCOMPARE(tree().horizontalScrollBar()->maximum(), 0);
+
+  // A short label is at most this wide, in average characters of the font it is shown in.
+  const auto shortLabelWidth = [](const QFont& font) {
+    return 40 * QFontMetrics(font).averageCharWidth();
+  };
+  auto* heading = properties().findChild<QLabel*>("propertiesHeading");
+  QVERIFY(heading);
+  QVERIFY2(heading->text().startsWith("Ball: WWW") && heading->text().contains("\u2026"),
+           qPrintable(heading->text()));
+  QVERIFY(heading->sizeHint().width() <= shortLabelWidth(heading->font()));
+  auto* scroll = properties().findChild<QScrollArea*>();
+  QTRY_VERIFY(scroll->widget()->width() <= scroll->viewport()->width());
+  QVERIFY(!scroll->horizontalScrollBar()->isVisible());
+  // The full name is in the Name field, whose width does not follow its text.
+  QCOMPARE(field("name")->text(), ballName);
+  QVERIFY(field("name")->sizeHint().width() <= shortLabelWidth(field("name")->font()));
+
+  // The Ball story follows the ball under an elided name.
+  auto* chart = window_->ballStoryDock()->findChild<QChartView*>()->chart();
+  const auto ballMarker = [chart]() -> QLegendMarker* {
+    for (QLegendMarker* marker : chart->legend()->markers())
+      if (marker->isVisible() && marker->label().startsWith("WWW")) return marker;
+    return nullptr;
+  };
+  QTRY_VERIFY(ballMarker());
+  const QString legend = ballMarker()->label();
+  QVERIFY2(legend.contains("\u2026"), qPrintable(legend));
+  QVERIFY(QFontMetrics(chart->legend()->font()).horizontalAdvance(legend) <=
+          shortLabelWidth(chart->legend()->font()));
+
+  // The plane too.
+  clickRow(outline().index(0, 0, outline().groupIndex(ObjectKind::Plane)));
+  QVERIFY2(heading->text().startsWith("Plane: \u00c9") && heading->text().contains("\u2026"),
+           qPrintable(heading->text()));
+  QVERIFY(heading->sizeHint().width() <= shortLabelWidth(heading->font()));
 }
 
 QTEST_MAIN(TestEditorDocks)

@@ -404,6 +404,84 @@ class SceneFileTest : public QObject {
     QCOMPARE(result.error, kSource + ": planes: must have at most 10000 entries (got 10001)");
   }
 
+  // A name longer than the limit is refused with its path, by both readers, however long it is
+  // (the loader must not choke on it first); escapes and multi-byte text count as characters.
+  void longNamesAreRefused_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error");
+    const auto ball = [](const QByteArray& name) {
+      return document("\"balls\": [{\"position\": [0,0,0], \"radius\": 0.5}, {\"name\": \"" + name +
+                      "\", \"position\": [2,0,0], \"radius\": 0.5}]");
+    };
+    QTest::newRow("30,000 characters")
+        << ball(QByteArray(30'000, 'a'))
+        << kSource + ": balls[1].name: must be at most 256 characters (got 30000)";
+    QTest::newRow("10 million characters")
+        << ball(QByteArray(10'000'000, 'a'))
+        << kSource + ": balls[1].name: must be at most 256 characters (got 10000000)";
+    QTest::newRow("257 escaped characters")
+        << ball(QByteArray("\\u00e9").repeated(257))
+        << kSource + ": balls[1].name: must be at most 256 characters (got 257)";
+    QTest::newRow("a plane's") << document("\"planes\": [{\"name\": \"" +
+                                           QByteArray("\xc3\xa9").repeated(300) +
+                                           "\", \"point\": [0,0,0], \"normal\": [0,1,0]}]")
+                               << kSource +
+                                      ": planes[0].name: must be at most 256 characters (got 300)";
+  }
+
+  void longNamesAreRefused() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    // parse() takes the streaming reader, which reads these; the other names errors itself.
+    QVERIFY(carom::io::readSceneStreaming(std::string_view(json.constData(), json.size())));
+    const SceneLoadResult result = parse(json);
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error, error);
+    const SceneLoadResult named = carom::io::parseSceneNamingErrors(json, kSource);
+    QVERIFY(!named.scene);
+    QCOMPARE(named.error, error);
+  }
+
+  void namesAtTheLimitLoad() {
+    // 256 characters of four bytes each.
+    const QByteArray name = QByteArray("\xf0\x9f\x8e\xb1").repeated(256);
+    const SceneLoadResult result = parse(document("\"balls\": [{\"name\": \"" + name +
+                                                  "\", \"position\": [0,0,0], \"radius\": 1}]"));
+    QVERIFY2(result.scene, qPrintable(result.error));
+    QCOMPARE(QString::fromStdString(result.scene->balls[0].name).size(), 512);  // UTF-16 units
+  }
+
+  // Text a message quotes from the file (a method, the format, a key) is cut short when long, so
+  // that a file of one huge string gives a message of one line, not of megabytes.
+  void longTextsAreQuotedInPart_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("error");
+    const QByteArray huge(10'000'000, 'z');
+    const QString shown = QString(32, 'z') + "\u2026";
+    QTest::newRow("method") << document("\"world\": {\"method\": \"" + huge + "\"}")
+                            << "world.method: unknown method \"" + shown +
+                                   "\"; use one of: exact, swept, discrete";
+    QTest::newRow("format") << "{\"format\": \"" + huge + "\", \"version\": 1}"
+                            << "format: expected \"carom-scene\", got \"" + shown + "\"";
+    QTest::newRow("colour")
+        << document("\"balls\": [{\"position\": [0,0,0], \"radius\": 1, \"color\": \"" + huge +
+                    "\"}]")
+        << "balls[0].color: must be empty or \"#rrggbb\" (got \"" + shown + "\")";
+    QTest::newRow("duplicate key") << document("\"" + huge + "\": 1, \"" + huge + "\": 2")
+                                   << shown + ": duplicate key: a key may appear once in an object";
+    QTest::newRow("duplicate key below a long one")
+        << document("\"" + huge + "\": {\"a\": 1, \"a\": 2}")
+        << shown + ".a: duplicate key: a key may appear once in an object";
+  }
+
+  void longTextsAreQuotedInPart() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, error);
+    const SceneLoadResult result = parse(json);
+    QVERIFY(!result.scene);
+    QCOMPARE(result.error, kSource + ": " + error);
+  }
+
   void defaultsAreApplied() {
     const carom::io::SceneLoadResult empty = parse(document(""));
     QVERIFY2(empty.scene, qPrintable(empty.error));

@@ -389,6 +389,70 @@ class ValidationTest : public QObject {
     QVERIFY(carom::validateScene(scene).empty());
   }
 
+  // A name is limited in characters (code points of its UTF-8), for every kind of object, with
+  // the field's path; the same from the check of an edit's objects alone.
+  void namesOverTheLimitAreRefused_data() {
+    QTest::addColumn<SceneEdit>("edit");
+    QTest::addColumn<QString>("error");
+    const std::string tooLong(carom::tolerance::kMaxNameCharacters + 1, 'n');
+    QTest::newRow("plane") << SceneEdit([tooLong](Scene& s) { s.planes[0].name = tooLong; })
+                           << "planes[0].name: must be at most 256 characters (got 257)";
+    QTest::newRow("cylinder") << SceneEdit([tooLong](Scene& s) { s.cylinders[0].name = tooLong; })
+                              << "cylinders[0].name: must be at most 256 characters (got 257)";
+    QTest::newRow("box") << SceneEdit([tooLong](Scene& s) { s.boxes[0].name = tooLong; })
+                         << "boxes[0].name: must be at most 256 characters (got 257)";
+    QTest::newRow("ball") << SceneEdit([tooLong](Scene& s) { s.balls[1].name = tooLong; })
+                          << "balls[1].name: must be at most 256 characters (got 257)";
+    QTest::newRow("30,000 characters")
+        << SceneEdit([](Scene& s) { s.balls[0].name = std::string(30'000, 'x'); })
+        << "balls[0].name: must be at most 256 characters (got 30000)";
+    // "é" is two bytes: 257 of them are 514 bytes, counted as 257 characters.
+    QTest::newRow("two-byte characters") << SceneEdit([](Scene& s) {
+      for (int i = 0; i < 257; ++i) s.balls[1].name += "\u00e9";
+    }) << "balls[1].name: must be at most 256 characters (got 257)";
+    QTest::newRow("four-byte characters") << SceneEdit([](Scene& s) {
+      for (int i = 0; i < 300; ++i) s.planes[0].name += "\U0001F3B1";
+    }) << "planes[0].name: must be at most 256 characters (got 300)";
+  }
+
+  void namesOverTheLimitAreRefused() {
+    QFETCH(SceneEdit, edit);
+    QFETCH(QString, error);
+    Scene scene = baseScene();
+    edit(scene);
+    QCOMPARE(texts(carom::validateScene(scene)), QStringList{error});
+    const carom::SceneObjectIndices all{{0}, {0}, {0}, {0, 1}};
+    QCOMPARE(texts(carom::validateObjects(scene, all)), QStringList{error});
+  }
+
+  void namesAtTheLimitAreAccepted() {
+    Scene scene = baseScene();
+    const std::size_t limit = carom::tolerance::kMaxNameCharacters;
+    scene.planes[0].name = std::string(limit, 'p');
+    scene.cylinders[0].name = std::string(limit, 'c');
+    for (std::size_t i = 0; i < limit; ++i) scene.boxes[0].name += "\u00e9";      // 512 bytes
+    for (std::size_t i = 0; i < limit; ++i) scene.balls[0].name += "\u4e2d";      // 768 bytes
+    for (std::size_t i = 0; i < limit; ++i) scene.balls[1].name += "\U0001F3B1";  // 1,024 bytes
+    QCOMPARE(texts(carom::validateScene(scene)), QStringList());
+    QCOMPARE(texts(carom::validateObjects(scene, {{0}, {0}, {0}, {0, 1}})), QStringList());
+  }
+
+  // A wrong colour is quoted in its message, but a long one only in part: the message stays a
+  // line whatever the file holds.
+  void longColoursAreQuotedInPart() {
+    Scene scene = baseScene();
+    scene.balls[1].color = "#" + std::string(10'000'000, 'z');
+    QCOMPARE(texts(carom::validateScene(scene)),
+             QStringList{"balls[1].color: must be empty or \"#rrggbb\" (got \"#" +
+                         QString(31, 'z') + "\u2026\")"});
+    // Cut between characters, never inside one.
+    scene.balls[1].color = std::string(31, '#');
+    for (int i = 0; i < 40; ++i) scene.balls[1].color += "\u00e9";
+    QCOMPARE(texts(carom::validateScene(scene)),
+             QStringList{"balls[1].color: must be empty or \"#rrggbb\" (got \"" + QString(31, '#') +
+                         "\u00e9\u2026\")"});
+  }
+
   void errorsComeInFileOrder() {
     Scene scene = baseScene();
     scene.balls.push_back(makeBall(Vec3(2.5, 1, 0), 0.5));  // overlaps balls[1]

@@ -86,6 +86,24 @@ class TestWatchWindow : public carom::testing::EditorFixture {
     QVERIFY(!window_->watchDialog());
   }
 
+  // A name as long as the format allows is elided in the dialog and the status bar, which then
+  // keep to a sentence's length.
+  void longNamesAreElided() {
+    carom::Scene scene = crushScene();
+    scene.balls[1].name = "nut " + std::string(252, 'N');
+    scene.boxes[0].name = std::string(256, 'B');
+    window_->openScene(scene, {}, "crush");
+    QTRY_VERIFY(latest() && latest()->positions.size() == 2);
+    carom::testing::DialogAnswerer answer(QMessageBox::Ok);
+    window_->setRunning(true);
+    QTRY_VERIFY(answer.answered());
+    for (const QString& text : {answer.text(), window_->statusMessage()}) {
+      QVERIFY2(text.contains("ball 1 (nut NNN") && text.contains("box 0 (BBB"), qPrintable(text));
+      QCOMPARE(text.count("\u2026"), 2);
+      QVERIFY2(text.size() < 200, qPrintable(text));
+    }
+  }
+
   // The dialog offers the last frame that passed the watch, from the timeline.
   void offersTheMomentBefore() {
     window_->setRunning(true);

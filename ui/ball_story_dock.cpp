@@ -12,6 +12,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLegend>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QPen>
@@ -264,7 +265,9 @@ void BallStoryDock::plot() {
       series->clear();
       continue;
     }
-    series->setName(editor::objectLabel(scene, {editor::ObjectKind::Ball, ball}));
+    // Elided here: the legend's own shortening of a long name costs memory as its square.
+    series->setName(editor::elidedName(editor::objectLabel(scene, {editor::ObjectKind::Ball, ball}),
+                                       chart_->legend()->font()));
     series->setColor(ballColor(scene, ball));
     const std::deque<BallStory::Sample>& samples = story_.samples(ball);
     QList<QPointF> points;

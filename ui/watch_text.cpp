@@ -1,8 +1,11 @@
 #include "ui/watch_text.h"
 
 #include "ui/editor/number_text.h"
+#include "ui/editor/object_ref.h"
 
 #include <QCoreApplication>
+#include <QFont>
+#include <QGuiApplication>
 
 namespace carom::ui {
 namespace {
@@ -11,15 +14,20 @@ QString tr(const char* text) {
   return QCoreApplication::translate("WatchText", text);
 }
 
+// The status bar and the dialog show these in the application's font.
+QString shownName(const std::string& name) {
+  return editor::elidedName(QString::fromStdString(name), QGuiApplication::font());
+}
+
 QString ballName(int ball, const Scene& scene) {
   if (ball >= 0 && ball < int(scene.balls.size()) && !scene.balls[ball].name.empty())
-    return tr("ball %1 (%2)").arg(ball).arg(QString::fromStdString(scene.balls[ball].name));
+    return tr("ball %1 (%2)").arg(ball).arg(shownName(scene.balls[ball].name));
   return tr("ball %1").arg(ball);
 }
 
 QString otherName(const WatchEvent& event, const Scene& scene) {
   const auto named = [](const QString& plain, const std::string& name) {
-    return name.empty() ? plain : plain + QString(" (%1)").arg(QString::fromStdString(name));
+    return name.empty() ? plain : plain + QString(" (%1)").arg(shownName(name));
   };
   const int i = event.other;
   switch (event.otherKind) {

@@ -143,6 +143,11 @@ QString quoted(const QString& text) {
   return '"' + text + '"';
 }
 
+// Text of the file as a message shows it: its start only when it is long (validation.h).
+QString shortened(const QString& text) {
+  return QString::fromStdString(excerpt(text.toStdString()));
+}
+
 QString member(const QString& path, const QString& key) {
   return path.isEmpty() ? key : path + '.' + key;
 }
@@ -263,8 +268,9 @@ void readInfo(const ObjectReader& reader, ObjectInfo& info) {
 int checkFormatAndVersion(const ObjectReader& top) {
   const QJsonValue format = top.required("format");
   if (format.toString() != kFormatName)
-    fail("format", "expected " + quoted(kFormatName) + ", got " +
-                       (format.isString() ? quoted(format.toString()) : describeType(format)));
+    fail("format",
+         "expected " + quoted(kFormatName) + ", got " +
+             (format.isString() ? quoted(shortened(format.toString())) : describeType(format)));
 
   const QJsonValue version = top.required("version");
   if (!version.isDouble()) fail("version", "expected an integer, got " + describeType(version));
@@ -290,7 +296,7 @@ Value readName(const ObjectReader& reader, const QString& key, Value fallback,
   for (std::string_view entry : allNames())
     valid << QString::fromUtf8(entry.data(), static_cast<qsizetype>(entry.size()));
   fail(reader.pathOf(key),
-       "unknown " + what + ' ' + quoted(name) + "; use one of: " + valid.join(", "));
+       "unknown " + what + ' ' + quoted(shortened(name)) + "; use one of: " + valid.join(", "));
 }
 
 World readWorld(const QJsonObject& object) {
@@ -521,7 +527,7 @@ std::optional<QString> duplicateKeyPath(const QByteArray& json) {
   const auto pathTo = [&open](std::size_t depth) {
     QString path;
     for (std::size_t d = 0; d < depth; ++d)
-      path = open[d].object ? member(path, open[d].key) : element(path, open[d].index);
+      path = open[d].object ? member(path, shortened(open[d].key)) : element(path, open[d].index);
     return path;
   };
   for (qsizetype i = 0; i < json.size(); ++i) {
@@ -555,7 +561,7 @@ std::optional<QString> duplicateKeyPath(const QByteArray& json) {
                               ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
                               : QString::fromUtf8(token.mid(1, token.size() - 2));
       Container& object = open.back();
-      if (object.keys.contains(key)) return member(pathTo(open.size() - 1), key);
+      if (object.keys.contains(key)) return member(pathTo(open.size() - 1), shortened(key));
       object.keys.insert(key);
       object.key = key;
     }

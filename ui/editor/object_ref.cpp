@@ -1,6 +1,7 @@
 #include "ui/editor/object_ref.h"
 
 #include <QCoreApplication>
+#include <QFontMetrics>
 
 #include <algorithm>
 #include <utility>
@@ -70,6 +71,11 @@ QString objectLabel(const Scene& scene, const ObjectRef& ref) {
   if (!name.empty()) return QString::fromStdString(name);
   // Numbered as in the validation's messages ("balls[3].radius").
   return QCoreApplication::translate("ObjectRef", "%1 %2").arg(kindName(ref.kind)).arg(ref.index);
+}
+
+QString elidedName(const QString& name, const QFont& font) {
+  const QFontMetrics metrics(font);
+  return metrics.elidedText(name, Qt::ElideMiddle, kShownNameWidth * metrics.averageCharWidth());
 }
 
 Vec3 objectPosition(const Scene& scene, const ObjectRef& ref) {

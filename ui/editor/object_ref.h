@@ -8,6 +8,8 @@
 #include <compare>
 #include <vector>
 
+class QFont;
+
 namespace carom::editor {
 
 enum class ObjectKind { Ball, Plane, Cylinder, Box };
@@ -42,6 +44,11 @@ QString kindName(ObjectKind kind);
 QString kindPluralName(ObjectKind kind);
 // What the editor calls an object: its name, or its kind and index ("Ball 3") when it has none.
 QString objectLabel(const Scene& scene, const ObjectRef& ref);
+// A name (or label) as headings, legends and messages show it in `font`: elided in its middle,
+// which keeps its start and a numbered end, to at most kShownNameWidth average characters, so
+// that no name, even of the longest the format allows in wide letters, widens what shows it.
+inline constexpr int kShownNameWidth = 24;
+QString elidedName(const QString& name, const QFont& font);
 
 // The selected objects copied into a scene of their own (world settings kept), and the reverse:
 // `objects`' planes, cylinders, boxes and balls appended to `scene`, returning the new references.

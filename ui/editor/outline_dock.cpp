@@ -196,6 +196,8 @@ OutlineDock::OutlineDock(SceneDocument* document, QWidget* parent)
   tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
   // Every row is one line: the view need not measure 100,000 of them.
   tree_->setUniformRowHeights(true);
+  // Long names keep their start and their end, where names of a series differ ("post 12").
+  tree_->setTextElideMode(Qt::ElideMiddle);
   tree_->expandAll();
   setWidget(tree_);
   tree_->installEventFilter(this);

@@ -384,10 +384,11 @@ void PropertiesDock::refresh() {
     heading_->setText(tr("World (nothing selected)"));
   } else if (selection.size() == 1) {
     const ObjectRef& ref = selection.front();
-    // "Ball: first", or just "Ball 3" when it has no name.
+    // "Ball: first", or just "Ball 3" when it has no name; the Name field below holds it whole.
     heading_->setText(objectInfo(scene, ref).name.empty()
                           ? objectLabel(scene, ref)
-                          : tr("%1: %2").arg(kindName(ref.kind), objectLabel(scene, ref)));
+                          : tr("%1: %2").arg(kindName(ref.kind), elidedName(objectLabel(scene, ref),
+                                                                            heading_->font())));
   } else if (std::has_single_bit(static_cast<unsigned>(kinds))) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
                           .arg(kindPluralName(kindOfFlag(kinds))));
