@@ -334,6 +334,13 @@ int benchmarkStress(int seconds) {
   int dropped = window.sound().droppedCount();
   int mostExplosions = 0;
   QElapsedTimer run;
+  // The sound server going and coming back (scripts/faults.sh kills and restarts it), on the
+  // table's clock.
+  QObject::connect(
+      &window.sound(), &ui::SoundThread::availabilityChanged, &window, [&run](bool available) {
+        std::printf("sound %s at %.1f s\n", available ? "back" : "lost", run.nsecsElapsed() * 1e-9);
+        std::fflush(stdout);
+      });
   run.start();
   for (int elapsed = 0; elapsed < seconds; elapsed += kStressReportSeconds) {
     const int slice = std::min(kStressReportSeconds, seconds - elapsed);

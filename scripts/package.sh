@@ -46,7 +46,7 @@ desktop=/usr/share/applications/$app_id.desktop
 metainfo=/usr/share/metainfo/$app_id.metainfo.xml
 mime=/usr/share/mime/packages/carom.xml
 scenes=/usr/share/carom/scenes
-for file in /usr/bin/carom /usr/bin/carom-cli "$desktop" "$metainfo" "$mime" \
+for file in /usr/bin/carom /usr/bin/carom-cli /usr/libexec/carom/carom-sound "$desktop" "$metainfo" "$mime" \
     /usr/share/icons/hicolor/scalable/apps/$app_id.svg \
     /usr/share/man/man1/carom.1.gz /usr/share/man/man1/carom-cli.1.gz; do
   [ -f "$file" ] || fail "$file was not installed"
@@ -82,6 +82,8 @@ screenshot="$work/galton-board.png"
 PULSE_SERVER=unix:/nonexistent/carom-no-audio xvfb-run -a -s "-screen 0 1280x1024x24" \
   /usr/bin/carom "$scenes/galton-board.json" --run-for 1 --screenshot "$screenshot" \
   2>"$work/carom.log" || { cat "$work/carom.log"; fail "carom --screenshot failed"; }
+# The window's sound player is found where it was installed (ui/sound_thread.cpp).
+! grep -q "no sound: .* not found" "$work/carom.log" || fail "$(cat "$work/carom.log")"
 # Non-trivial: a window's size, and more than a blank or one-coloured picture compresses to.
 python3 - "$screenshot" <<'EOF' || fail "the screenshot is not a picture of the window"
 import struct, sys, zlib

@@ -1,8 +1,12 @@
-// SoundBoard against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
+// The collision sounds (SoundBoard, and the window's SoundThread with its player process)
+// against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
 
+#include "ui/simulation_snapshot.h"
 #include "ui/sound/sound_board.h"
 #include "ui/sound_thread.h"
+#include "ui/status_readout.h"
 
+#include <QApplication>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QtTest>
@@ -11,6 +15,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 
 using carom::CollisionRecord;
 using carom::ContactKind;
@@ -91,6 +96,40 @@ class Recorder {
 constexpr int kSilencePeak = 200;
 constexpr int kSoundPeak = 1000;
 
+// This test's own server, through scripts/with-pulseaudio.sh: "--kill" takes it away as a crash
+// would, "--start" brings it back on the same socket with the same null sink.
+bool controlServer(const char* command) {
+  const QString control = qEnvironmentVariable("CAROM_PULSE_CONTROL");
+  const QString dir = qEnvironmentVariable("CAROM_PULSE_DIR");
+  if (control.isEmpty() || dir.isEmpty()) return false;
+  return QProcess::execute(control, {QString::fromLatin1(command), dir}) == 0;
+}
+
+// carom-sound, as the window starts it: its input stays open until closed.
+void startPlayer(QProcess& player) {
+  player.setProgram(QDir(QCoreApplication::applicationDirPath())
+                        .absoluteFilePath(QStringLiteral(CAROM_SOUND_PLAYER_FROM_BINDIR)));
+  player.setProcessChannelMode(QProcess::SeparateChannels);
+  player.start();
+}
+
+// The player's next line, waiting for it at most `ms`; empty if none came.
+QByteArray nextLine(QProcess& player, int ms = 5000) {
+  QElapsedTimer waited;
+  waited.start();
+  while (!player.canReadLine() && waited.elapsed() < ms) player.waitForReadyRead(100);
+  return player.canReadLine() ? player.readLine().trimmed() : QByteArray();
+}
+
+// Restarts the server when a test that killed it ends early, so the tests after it have one.
+class ServerBack {
+ public:
+  ~ServerBack() {
+    if (killed) controlServer("--start");
+  }
+  bool killed = false;
+};
+
 }  // namespace
 
 class TestSound : public QObject {
@@ -120,9 +159,13 @@ class TestSound : public QObject {
     QVERIFY(carom::sound::volumeForSpeed(1.0, 4.0) < carom::sound::volumeForSpeed(1.0, 1.0));
   }
 
+  // Once both sounds are loaded, which takes a turn of the event loop.
   void availableWithServer() {
     SoundBoard board;
-    QVERIFY(board.available());
+    QSignalSpy changed(&board, &SoundBoard::availabilityChanged);
+    QTRY_VERIFY(board.available());
+    QVERIFY(!board.failed());
+    QCOMPARE(changed.count(), 1);
   }
 
   void silentWithoutPlay() {
@@ -137,7 +180,7 @@ class TestSound : public QObject {
 
   void playReachesTheServer() {
     SoundBoard board;
-    QVERIFY(board.available());
+    QTRY_VERIFY(board.available());
     Recorder recorder;
     QVERIFY(recorder.start());
     board.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallPlane, 3.0)});
@@ -164,6 +207,7 @@ class TestSound : public QObject {
     QVERIFY(filePeak > 10000);
 
     SoundBoard board;
+    QTRY_VERIFY(board.available());
     const double speed = board.settings().referenceSpeed;
     const double expected = filePeak * board.settings().masterVolume *
                             carom::sound::volumeForSpeed(speed, board.settings().referenceSpeed);
@@ -185,7 +229,7 @@ class TestSound : public QObject {
     SoundBoard::Settings settings;
     settings.voicesPerSound = 1;
     SoundBoard board(settings);
-    QVERIFY(board.available());
+    QTRY_VERIFY(board.available());
     Recorder recorder;
     QVERIFY(recorder.start());
     constexpr int kPlays = 12;
@@ -200,11 +244,11 @@ class TestSound : public QObject {
     QCOMPARE(recorder.onsets(kSoundPeak, 44100 * 150 / 1000), kPlays);
   }
 
-  // As the window plays them: from the GUI thread, posted to the board on its own thread,
-  // which opens the streams and feeds them while the GUI thread is busy elsewhere.
+  // As the window plays them: from the GUI thread, posted to the sound thread, which hands them
+  // to the player process while the GUI thread is busy elsewhere.
   void soundThreadPlaysWhileTheGuiIsBusy() {
     carom::ui::SoundThread sound;
-    QTRY_VERIFY(sound.available());  // once the board, made on its thread, has an output
+    QTRY_VERIFY_WITH_TIMEOUT(sound.available(), 10000);  // once its player can play
     QVERIFY(!sound.muted());
     Recorder recorder;
     QVERIFY(recorder.start());
@@ -225,20 +269,22 @@ class TestSound : public QObject {
   }
 
   void mutedPlaysNothing() {
-    SoundBoard board;
-    board.setMuted(true);
-    QVERIFY(board.muted());
+    carom::ui::SoundThread sound;
+    QTRY_VERIFY_WITH_TIMEOUT(sound.available(), 10000);
+    sound.setMuted(true);
     Recorder recorder;
     QVERIFY(recorder.start());
-    board.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallCylinder, 3.0)});
+    sound.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallCylinder, 3.0)});
     QTest::qWait(1000);
     recorder.stop();
-    QCOMPARE(board.playedCount(), 0);
+    QCOMPARE(sound.playedCount(), 0);
+    QCOMPARE(sound.droppedCount(), 0);
     QVERIFY2(recorder.peak() <= kSilencePeak, qPrintable(QString::number(recorder.peak())));
   }
 
   void thousandInOneFrameAreLimited() {
     SoundBoard board;
+    QTRY_VERIFY(board.available());
     std::vector<CollisionRecord> frame;
     for (int i = 0; i < 1000; ++i)
       frame.push_back(hit(i % 3 == 0 ? ContactKind::BallBall : ContactKind::BallPlane, 1.0 + i));
@@ -254,7 +300,7 @@ class TestSound : public QObject {
     settings.minimumGapMs = 15;
     settings.voicesPerSound = 40;  // enough that voices never run out before the limit
     SoundBoard board(settings);
-    QVERIFY(board.available());
+    QTRY_VERIFY(board.available());
     // One collision a millisecond for a second of board time, alternating kinds.
     for (int t = 0; t < 1000; ++t)
       board.playAt({hit(t % 2 ? ContactKind::BallBall : ContactKind::BallPlane, 2.0)}, t);
@@ -267,6 +313,7 @@ class TestSound : public QObject {
 
   void sameSoundKeepsAGap() {
     SoundBoard board;
+    QTRY_VERIFY(board.available());
     board.playAt({hit(ContactKind::BallBall, 2.0)}, 100);
     board.playAt({hit(ContactKind::BallBall, 2.0)}, 105);   // too soon after the last clack
     board.playAt({hit(ContactKind::BallPlane, 2.0)}, 106);  // another sound: allowed
@@ -278,9 +325,101 @@ class TestSound : public QObject {
 
   void tooSoftIsSilent() {
     SoundBoard board;
+    QTRY_VERIFY(board.available());
     board.play({hit(ContactKind::BallBall, board.settings().minimumSpeed / 2)});
     QCOMPARE(board.playedCount(), 0);
     QCOMPARE(board.droppedCount(), 1);
+  }
+
+  // The player process on its own: ready, an answer with its totals to each frame, a clear
+  // message and no answer for a line that is not one, and an exit once its input ends.
+  void playerAnswersFrames() {
+    QProcess player;
+    startPlayer(player);
+    QVERIFY2(player.waitForStarted(5000), qPrintable(player.program()));
+    QCOMPARE(nextLine(player), QByteArray("ready"));
+    player.write("hits 1 4 0 0\n");
+    QCOMPARE(nextLine(player), QByteArray("counts 1 0"));
+    player.write("hits 1 nan 0 0\nnoise\nhits 0 0 3 2\n");
+    QCOMPARE(nextLine(player), QByteArray("counts 2 2"));
+    player.closeWriteChannel();
+    QVERIFY(player.waitForFinished(5000));
+    QCOMPARE(player.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(player.exitCode(), 0);
+    const QByteArray errors = player.readAllStandardError();
+    QVERIFY2(errors.contains("carom-sound: not a frame: hits 1 nan 0 0") &&
+                 errors.contains("carom-sound: not a frame: noise"),
+             errors.constData());
+  }
+
+  // A sound whose stream cannot open is not counted as played: the server is killed and the
+  // board asked to play before its event loop has turned, so before the watch on the
+  // connection could say anything. The board then says it has failed, for good.
+  void aSoundWithNoServerIsNotCounted() {
+    SoundBoard board;
+    QTRY_VERIFY(board.available());
+    board.play({hit(ContactKind::BallBall, 4.0)});
+    QCOMPARE(board.playedCount(), 1);
+    QSignalSpy failure(&board, &SoundBoard::failure);
+    ServerBack server;
+    QVERIFY(controlServer("--kill"));
+    server.killed = true;
+    QThread::msleep(100);  // for Qt's connection to see its end, without this thread's events
+    QVERIFY(board.available());
+    board.play({hit(ContactKind::BallPlane, 4.0)});
+    QCOMPARE(board.playedCount(), 1);
+    QVERIFY(!board.available());
+    QVERIFY(board.failed());
+    QCOMPARE(failure.count(), 1);
+    QVERIFY(controlServer("--start"));
+    server.killed = false;
+  }
+
+  // The sound server goes away for longer than Qt 6.4 waits before its one attempt to reconnect
+  // (3 s), while the window keeps sending frames, and comes back: the status line says there is
+  // no sound (also with the simulation paused, no snapshot coming), nothing is counted as
+  // played meanwhile, and sound plays again once the server is back. (This process's own Qt
+  // audio is left without a server for good: the tests after this one play none in-process.)
+  void soundComesBackWithTheServer() {
+    carom::ui::SoundThread sound;
+    carom::ui::StatusReadout status(&sound);
+    status.showSnapshot(std::make_shared<const carom::ui::SimulationSnapshot>());
+    const auto saysNoSound = [&status] { return status.text().contains("sound unavailable"); };
+    QTRY_VERIFY_WITH_TIMEOUT(sound.available(), 10000);
+    QTRY_VERIFY(!status.text().isEmpty() && !saysNoSound());
+    {
+      Recorder recorder;
+      QVERIFY(recorder.start());
+      sound.play({hit(ContactKind::BallBall, 4.0)});
+      QTRY_VERIFY_WITH_TIMEOUT(recorder.peak() > kSoundPeak, 5000);
+    }
+    QTRY_COMPARE(sound.playedCount(), 1);
+
+    ServerBack server;
+    QVERIFY(controlServer("--kill"));
+    server.killed = true;
+    // Said while nothing plays, not only at the next collision.
+    QTRY_VERIFY_WITH_TIMEOUT(!sound.available(), 5000);
+    QTRY_VERIFY(saysNoSound());
+    constexpr int kServerDownMs = 8000;
+    QElapsedTimer down;
+    down.start();
+    while (down.elapsed() < kServerDownMs) {
+      sound.play({hit(ContactKind::BallBall, 4.0), hit(ContactKind::BallPlane, 4.0)});
+      QTest::qWait(100);
+      QVERIFY(!sound.available());
+    }
+    QCOMPARE(sound.playedCount(), 1);
+
+    QVERIFY(controlServer("--start"));
+    server.killed = false;
+    QTRY_VERIFY_WITH_TIMEOUT(sound.available(), 15000);
+    QTRY_VERIFY(!saysNoSound());
+    Recorder recorder;
+    QVERIFY(recorder.start());
+    sound.play({hit(ContactKind::BallBall, 4.0)});
+    QTRY_VERIFY_WITH_TIMEOUT(recorder.peak() > kSoundPeak, 5000);
+    QTRY_COMPARE(sound.playedCount(), 2);
   }
 
   // The audio backend picks its server once per process, so the board without a server runs
@@ -304,6 +443,7 @@ class TestSound : public QObject {
     SoundBoard board;
     QSignalSpy changed(&board, &SoundBoard::availabilityChanged);
     QVERIFY(!board.available());
+    QVERIFY(board.failed());
     std::vector<CollisionRecord> frame(1000, hit(ContactKind::BallBall, 3.0));
     board.play(frame);
     // Nothing was attempted, not even counted: play() returned before touching any voice.
@@ -312,9 +452,31 @@ class TestSound : public QObject {
     QTest::qWait(300);  // nor does it turn available once events are processed
     QVERIFY(!board.available());
     QCOMPARE(changed.count(), 0);
+
+    // A player finds no output and exits at once, its input still open.
+    QProcess player;
+    startPlayer(player);
+    QVERIFY(player.waitForFinished(5000));
+    QCOMPARE(player.exitCode(), 0);
+    QCOMPARE(player.readAllStandardOutput(), QByteArray());
+
+    // The window's sound: its players find no output and exit, and it says so.
+    carom::ui::SoundThread sound;
+    QTest::qWait(2000);  // a first player and a few more
+    QVERIFY(!sound.available());
+    sound.play(frame);
+    QTest::qWait(300);
+    QCOMPARE(sound.playedCount(), 0);
+    QCOMPARE(sound.droppedCount(), 0);
   }
 };
 
-// No window: QCoreApplication, so the test needs no display (Multimedia pulls in Qt GUI).
-QTEST_GUILESS_MAIN(TestSound)
+// The status line is a QLabel: a QApplication, on the offscreen platform, so that the test needs
+// no display.
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");
+  QApplication app(argc, argv);
+  TestSound test;
+  return QTest::qExec(&test, argc, argv);
+}
 #include "test_sound.moc"

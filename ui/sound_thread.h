@@ -1,11 +1,13 @@
 #pragma once
-// The collision sounds on a thread of their own. Starting a sound opens a PulseAudio stream,
-// round trips to the server that cost the GUI thread tens of milliseconds a second under a
-// gas's 10,000 collisions a second (the stress run's 99th-percentile stall fell from 91 to
-// 38 ms without them); and Qt feeds each voice from its thread's event loop, which a long
-// frame on the GUI thread would hold up. The SoundBoard is made, used and deleted on that
-// thread only: the GUI posts it each frame's collisions (CallQueue) and reads its counters,
-// which are atomic.
+// The window's collision sounds, played by a process of their own, carom-sound
+// (ui/sound/sound_player.h), which a thread of this class's starts, feeds, and starts again.
+// A process, because Qt 6.4's audio backend gives up for good on a sound server that stays away
+// for more than 3 s and only a new process reconnects: a player that has lost its server exits,
+// and another is started every few seconds until one can play. One that stops answering (Qt
+// can wait for ever to open a stream on a server that has stopped) is killed and replaced. A
+// thread, because the pipe to the player is written from its thread's event loop, which a long
+// frame on the GUI thread must not hold up; the GUI posts it each frame's hits (CallQueue) and
+// reads the counters, which are atomic.
 
 #include "sim/run_stats.h"
 
@@ -14,10 +16,6 @@
 
 #include <atomic>
 #include <vector>
-
-namespace carom::sound {
-class SoundBoard;
-}
 
 namespace carom::ui {
 
@@ -29,21 +27,33 @@ class SoundThread : public QObject {
   explicit SoundThread(QObject* parent = nullptr);
   ~SoundThread() override;
 
-  // The collisions since the last frame; returns at once (the board decides on its thread).
+  // The collisions since the last frame; returns at once. Nothing is sent, nor counted, while
+  // muted or with no sound.
   void play(const std::vector<CollisionRecord>& collisions);
-  void setMuted(bool muted);
+  void setMuted(bool muted) { muted_ = muted; }
   bool muted() const { return muted_; }
-  // As SoundBoard's: false until the board has found an output on its thread. Read when
-  // needed (the status line reads it with each snapshot); there is no signal to follow.
-  bool available() const;
-  int playedCount() const;
-  int droppedCount() const;
+  // True while a player can play: false until the first says so, and from the moment one
+  // loses its server until another can play.
+  bool available() const { return available_; }
+  // Over all the players so far: sounds that played (Qt opened their stream) and sounds
+  // dropped by the limits (SoundBoard::Settings).
+  int playedCount() const { return played_; }
+  int droppedCount() const { return dropped_; }
+
+ signals:
+  // From the sound thread: queued to receivers on other threads.
+  void availabilityChanged(bool available);
 
  private:
-  QThread* thread_;                          // a child named "sound"
-  CallQueue* calls_;                         // on thread_: runs the posted calls there
-  std::atomic<sound::SoundBoard*> board_{};  // made by the first call on thread_
+  class Player;
+
+  QThread* thread_;           // a child named "sound"
+  CallQueue* calls_;          // on thread_: runs the posted calls there
+  Player* player_ = nullptr;  // made, used and deleted on thread_
   std::atomic<bool> muted_ = false;
+  std::atomic<bool> available_ = false;
+  std::atomic<int> played_ = 0;
+  std::atomic<int> dropped_ = 0;
 };
 
 }  // namespace carom::ui

@@ -16,6 +16,8 @@ StatusReadout::StatusReadout(const SoundThread* sound, QWidget* parent)
   refreshTimer_.setSingleShot(true);
   refreshTimer_.setInterval(kRefreshMilliseconds);
   connect(&refreshTimer_, &QTimer::timeout, this, &StatusReadout::refresh);
+  // Also while the simulation is paused, when no snapshots come.
+  connect(sound_, &SoundThread::availabilityChanged, this, &StatusReadout::refresh);
 }
 
 void StatusReadout::showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot) {

@@ -7,12 +7,11 @@
 #include <QObject>
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <vector>
 
-class QMediaDevices;
+class QAudioSink;
 class QSoundEffect;
 
 namespace carom::sound {
@@ -20,6 +19,16 @@ namespace carom::sound {
 // Loudness for an impact: rises smoothly from 0 and approaches 1 for speeds well above the
 // reference, so hard hits are loud without ever clipping. Pure, for tests.
 double volumeForSpeed(double speed, double referenceSpeed);
+
+enum Sound { Clack, Thud, SoundCount };  // ball–ball; ball–wall or cylinder
+
+// A frame's collisions as the board uses them: how many call for each sound, and the hardest
+// hit (normal speed, m/s) of each.
+struct FrameHits {
+  std::array<int, SoundCount> count{};
+  std::array<double, SoundCount> hardest{};
+};
+FrameHits hitsOf(const std::vector<CollisionRecord>& collisions);
 
 class SoundBoard : public QObject {
   Q_OBJECT
@@ -38,47 +47,55 @@ class SoundBoard : public QObject {
   explicit SoundBoard(const Settings& settings, QObject* parent = nullptr);
   ~SoundBoard() override;
 
-  // The collisions since the last frame, on the GUI thread. Starts at most a few sounds and
-  // returns at once; the rest are counted as dropped.
+  // A frame's collisions. Starts at most a few sounds and returns at once; the rest are
+  // counted as dropped. Nothing is counted while the board is not available.
   void play(const std::vector<CollisionRecord>& collisions);
+  void play(const FrameHits& hits);
   // As play(), at a given time on the board's clock (milliseconds), so tests can replay time.
   void playAt(const std::vector<CollisionRecord>& collisions, std::int64_t nowMs);
+  void playAt(const FrameHits& hits, std::int64_t nowMs);
 
-  void setMuted(bool muted) { muted_ = muted; }
-  bool muted() const { return muted_; }
-
-  // False when there is no audio output (no device or no sound server) or a sound failed to
-  // load; play() then does nothing.
+  // True once there is an audio output and both sounds are loaded, until the sound server is
+  // lost. A board never gets its server back: Qt 6.4's audio backend gives up on it for the
+  // rest of the process (sound_board.cpp says how); a new process reconnects.
   bool available() const { return available_; }
+  // True when the board will never play: there was no output when it was made, a sound could
+  // not be loaded, or the server has been lost since.
+  bool failed() const { return !outputs_ || loadFailed_ || lost_; }
 
+  // Sounds that started playing (Qt opened their stream), and the rest. One whose stream could
+  // not open (the server gone) is dropped, not played.
   int playedCount() const { return played_; }
   int droppedCount() const { return dropped_; }
   const Settings& settings() const { return settings_; }
 
  signals:
   void availabilityChanged(bool available);
+  // Once, when failed() turns true after the board was made.
+  void failure();
 
  private:
-  enum Sound { Clack, Thud, SoundCount };
-
   QSoundEffect* createVoice(Sound sound);
+  void watchServer();
+  void loseServer();
   void updateAvailability();
-  void useDefaultOutput();
+  // Whether the sound started playing.
   bool start(Sound sound, double speed, std::int64_t nowMs);
 
   Settings settings_;
-  QMediaDevices* devices_ = nullptr;
+  bool outputs_ = false;  // an audio output was there when the board was made
   std::array<QSoundEffect*, SoundCount> samples_{};
+  QAudioSink* watch_ = nullptr;  // corked; Qt stops it when the connection to the server fails
   std::array<std::vector<QSoundEffect*>, SoundCount> voices_;  // sounding now
   std::array<std::int64_t, SoundCount> lastStartMs_;
   std::deque<std::int64_t> recentStartsMs_;  // starts within the last second, oldest first
   QElapsedTimer clock_;
-  // Atomic: ui::SoundThread reads them from the GUI thread.
-  std::atomic<bool> muted_ = false;
-  std::atomic<bool> available_ = false;
   bool loadFailed_ = false;
-  std::atomic<int> played_ = 0;
-  std::atomic<int> dropped_ = 0;
+  bool lost_ = false;
+  bool failureSaid_ = false;
+  bool available_ = false;
+  int played_ = 0;
+  int dropped_ = 0;
 };
 
 }  // namespace carom::sound
