@@ -219,8 +219,32 @@ said "$(describe_exit $code) after $((($(date +%s%N) - start) / 1000000)) ms: $(
 rm -f "$work/five-million.json"
 
 # --- the sound server killed and restarted ---
-begin "the window's sound when PulseAudio is killed and restarted"
-said "(see the part below)"
+begin "the window's sound: PulseAudio killed 10 s into a run and restarted 8 s later (--bench-stress 30)"
+cat >"$work/audio.sh" <<EOF
+#!/usr/bin/env bash
+set -u
+export HOME="$work/home"
+"$window" --bench-stress 30 >"$work/stress.report" 2>"$work/stress.err" & carom=\$!
+sleep 10; "\$CAROM_PULSE_CONTROL" --kill "\$CAROM_PULSE_DIR"
+sleep 8; "\$CAROM_PULSE_CONTROL" --start "\$CAROM_PULSE_DIR"
+sleep 1
+parec -d ci.monitor --format=s16le --rate=8000 --channels=1 --raw >"$work/after.raw" & rec=\$!
+wait \$carom; echo "carom exit \$?"
+kill \$rec 2>/dev/null; wait \$rec 2>/dev/null
+EOF
+chmod +x "$work/audio.sh"
+timeout 120 xvfb-run -a -s "-screen 0 1920x1200x24" scripts/with-pulseaudio.sh "$work/audio.sh" \
+  >"$work/audio.out" 2>&1
+grep -E "^stress:|sound lost|sound back|^sounds:" "$work/stress.report" | sed 's/^/   carom: /'
+sed 's/^/   /' "$work/audio.out"
+peak=$(python3 -c 'import array, sys; d = open(sys.argv[1], "rb").read(); s = array.array("h", d[: len(d) // 2 * 2]); print(max(map(abs, s), default=0))' "$work/after.raw" 2>/dev/null || echo 0)
+said "loudest sample recorded after the restart: $peak of 32767"
+grep -q "carom exit 0" "$work/audio.out" && holds "the window ran on and ended normally" ||
+  broken "the window did not end normally"
+grep -q "sound lost at" "$work/stress.report" && holds "the loss was noticed" ||
+  broken "the loss went unnoticed"
+grep -q "sound back at" "$work/stress.report" && [ "$peak" -gt 327 ] &&
+  holds "sound came back and was heard" || broken "sound did not come back"
 
 echo
 if [ $failures -eq 0 ]; then
