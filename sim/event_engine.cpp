@@ -186,7 +186,11 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
   } else {
     t = ballBallContactTime(path, pathAt(k, now_), radiusSum, horizon);
   }
-  if (t < horizon) best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
+  // A contact at the horizon itself (a swept step's end) is kept, not left to the next step:
+  // there the pair would touch, and balls too small for the rounding of positions so far out
+  // could share one centre, which tells no approach from a retreat.
+  if (t < best.time - now_ && t <= horizon_ - now_)
+    best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
 }
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
@@ -398,7 +402,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   const double distance = n.norm();
   const double radiusSum = bodies_.radius[i] + bodies_.radius[j];
   notePenetration(radiusSum - distance, stats);
-  n /= distance;
+  n = pairNormal(n, distance, ma.velocity - mb.velocity);  // centres that coincide: head-on
   const double approach = (ma.velocity - mb.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
   noteRestitution(restitution);

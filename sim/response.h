@@ -18,6 +18,15 @@ inline double separationSpeed(double approach, double restitution, double minimu
   return s < minimum ? minimum : s;
 }
 
+// The unit normal along `offset` (from one ball's centre to another's, `distance` long), or
+// along `fallback` when the centres coincide: positions far out round to more than a small
+// ball's radius (1e-7 m at 1e9 m from the origin), and balls meeting there may share a centre.
+inline Vec3 pairNormal(const Vec3& offset, double distance, const Vec3& fallback) {
+  if (distance > 0.0) return offset / distance;
+  const double length = fallback.norm();
+  return length > 0.0 ? Vec3(fallback / length) : Vec3::UnitY();
+}
+
 // Two balls touching along unit normal `n` (from a to b). Inverse masses may be zero for an
 // immovable ball. Only the normal components change; momentum is conserved for finite masses.
 // Returns the approach speed.
