@@ -507,9 +507,13 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   }
   // A cycle of contacts that lets time advance by round-off only must not hang the run. The
   // flight since the last contact is negligible by the ball's own measure, its speed times the
-  // time against its size, so a fast ball crossing a box is never taken for a wedged one.
+  // time against its size, so a fast ball crossing a box is never taken for a wedged one; or
+  // when it is within a few ulps of the ball's position, which it cannot move (a ball 1e12 m
+  // out hopping along a cylinder stayed where it was and hopped for ever).
+  const double positionRoundOff =
+      4.0 * std::numeric_limits<double>::epsilon() * m.position.cwiseAbs().maxCoeff();
   if ((now_ - p.lastSurfaceCollision) * speed <=
-      tolerance::kBurstTravelFraction * bodies_.radius[i]) {
+      std::max(tolerance::kBurstTravelFraction * bodies_.radius[i], positionRoundOff)) {
     if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) {
       putToRest(i, stats);
       p.wedged = true;
