@@ -195,6 +195,14 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = predictions_[i].crossing;
+  // A crossing closer than the time's resolution comes an ulp later rather than now: the ball
+  // has not reached the face yet, and one taken now found the ball back beyond the face it had
+  // crossed and crossed again, to and fro for ever at one instant (at 5e53 s, gravity switched
+  // on brought a ball back to a face 1e49 m below it in 1e23 s).
+  const auto timeOf = [&](double t) {
+    const double time = now_ + t;
+    return t > 0.0 && time <= now_ ? std::nextafter(now_, kNever) : time;
+  };
   // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
   const Particle& p = particles_[i];
   const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
@@ -212,8 +220,9 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
       for (int a = 0; a < 3; ++a) {
         const double t =
             straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
-        if (now_ + t < std::min(next.time, horizon_))
-          next = {now_ + t, static_cast<std::int8_t>(a),
+        const double time = timeOf(t);
+        if (time < std::min(next.time, horizon_))
+          next = {time, static_cast<std::int8_t>(a),
                   static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
       }
       return;
@@ -225,7 +234,7 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
         const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
                                               path.acceleration[a], face, direction > 0, horizon);
         if (t < horizon)
-          next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
+          next = {timeOf(t), static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
                   level};
       }
     }
