@@ -471,11 +471,14 @@ EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
   // of the speed, and of the pair's relative speed at most half that): the contact came again
   // at the same instant, for ever. The collapse speed is the scene's, and a light pair far
   // faster than its heavy balls (1e11 m/s against 20) took 1e-6 m/s, less than an ulp.
-  const double roundOff =
-      2.0 * tolerance::kTangentRateFraction *
-      std::max(tracks_[i].motion.velocity.norm(), tracks_[j].motion.velocity.norm());
+  constexpr double kRoundOffRate = 2.0 * tolerance::kTangentRateFraction;
+  const double fastest2 =
+      std::max(tracks_[i].motion.velocity.squaredNorm(), tracks_[j].motion.velocity.squaredNorm());
   // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
-  return {std::max(pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_, roundOff),
+  const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
+  return {minimum * minimum >= kRoundOffRate * kRoundOffRate * fastest2
+              ? minimum
+              : kRoundOffRate * std::sqrt(fastest2),
           pressed || restitution >= 1.0 ? 0.0 : separation};
 }
 
