@@ -3,22 +3,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace carom {
 
 CellGrid::CellGrid(const Vec3& lower, const Vec3& upper, double minCellSize, std::size_t maxCells) {
   const Vec3 extent = (upper - lower).cwiseMax(minCellSize);
+  // Grow the cells until their number fits the budget. Counted in doubles: cells of a 1e-12 m
+  // ball over a region of 1e12 m number 1e72, beyond any integer type, and a count within the
+  // budget is exact. The budget keeps every cell's number an int.
+  const double budget =
+      double(std::clamp<std::size_t>(maxCells, 1, std::numeric_limits<int>::max()));
   double size = minCellSize;
-  // Grow the cells until their number fits the budget.
-  for (;;) {
-    std::size_t total = 1;
-    for (int a = 0; a < 3; ++a)
-      total *= static_cast<std::size_t>(std::max(1.0, std::floor(extent[a] / size)));
-    if (total <= std::max<std::size_t>(maxCells, 1)) break;
-    size *= 1.25;
-  }
+  const auto countAlong = [&](int a) { return std::max(1.0, std::floor(extent[a] / size)); };
+  while (countAlong(0) * countAlong(1) * countAlong(2) > budget) size *= 1.25;
   for (int a = 0; a < 3; ++a) {
-    counts_[a] = static_cast<int>(std::max(1.0, std::floor(extent[a] / size)));
+    counts_[a] = static_cast<int>(countAlong(a));
     size_[a] = extent[a] / counts_[a];  // >= size, so neighbours stay within one cell
     origin_[a] = lower[a];
   }

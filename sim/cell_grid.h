@@ -19,8 +19,8 @@ namespace carom {
 class CellGrid {
  public:
   CellGrid() = default;
-  // Covers the box [lower, upper] with cells of size at least `minCellSize`, at most about
-  // `maxCells` in all.
+  // Covers the box [lower, upper] with cells of size at least `minCellSize`, at most `maxCells`
+  // in all: coarser cells where smaller ones would be too many, whatever the box's size.
   CellGrid(const Vec3& lower, const Vec3& upper, double minCellSize, std::size_t maxCells);
 
   using Coords = std::array<int, 3>;

@@ -12,6 +12,12 @@ namespace carom {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
+// A straight approach's discriminant below this fraction of b^2 has lost at least half of its
+// digits to cancellation (straightEntry).
+constexpr double kCancelledDiscriminant = 1e-8;
+// A capped cylinder's rim further than this many of its reaches (R + r) has a quartic whose
+// terms lose at least half their digits to cancellation (ballCappedCylinderContactTime).
+constexpr double kFarReaches = 1e4;
 
 // Gap |u0 + u1 t + u2 t^2|^2 - rho^2 as a polynomial in t.
 Polynomial squaredLengthMinus(const Vec3& u0, const Vec3& u1, const Vec3& u2, double rho) {
@@ -64,7 +70,13 @@ double straightEntry(const Vec3& u0, const Vec3& u1, double rho, double horizon)
   const double length = std::sqrt(length2);
   const double c = (length - rho) * (length + rho);
   if (c <= 0.0) return 0.0;  // touching or overlapping, and approaching
-  const double disc = b * b - a * c;
+  double disc = b * b - a * c;
+  // Approaching from many radii away, b^2 and a c agree in more digits than a double holds
+  // (1e-12 m balls 1e9 m apart, head-on: 4e18 each, differing by 6e-23), and their difference
+  // is round-off, which missed the contact. Lagrange's identity gives the same value as
+  // a rho^2 - |u0 x u1|^2 without that cancellation; it is taken only when the first form has
+  // lost so many digits, so that contacts found before keep their last bits.
+  if (disc <= kCancelledDiscriminant * b * b) disc = a * rho * rho - u0.cross(u1).squaredNorm();
   if (disc <= 0.0) return kNever;  // misses, or only grazes
   const double t = c / (-b + std::sqrt(disc));
   return t <= horizon ? t : kNever;
@@ -263,12 +275,35 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
   };
   slabPart(H, R + radius, false);
   slabPart(H + radius, R, true);
+  // A rim thinner than the ball makes a spindle torus, which holds the sphere of radius
+  // sqrt(r^2 - R^2) around its centre. Its quartic is negative only while the nearest rim point
+  // is within r and the farthest is not, 2 R l / (r v) for a path l from the axis: at 1e12 m/s
+  // past a rod of 1e-7 m, 1e-23 s, less than the time's resolution, and the ball went through.
+  // Where the quartic finds no entry, the path's entry into that sphere is the rim's contact
+  // (late by about the rim's radius); where it finds one, that one stands.
+  const auto spindleEntry = [&](const Rebased& q, double end) {
+    if (!(R < radius)) return kNever;
+    return sphereEntry(q.u0, q.u1, q.u2, std::sqrt((radius - R) * (radius + R)), end);
+  };
   // The rims: tori around the cap circles.
   for (const double side : {-1.0, 1.0}) {
     const Vec3 q0 = p - Vec3(0.0, 0.0, side * H);
-    if (q0.squaredNorm() > (R + radius) * (R + radius) &&
-        sphereEntry(q0, v, a, R + radius, std::min(horizon, first)) == kNever)
-      continue;  // never near this rim
+    // The torus lies within the sphere of radius R + r around the rim's centre.
+    const double reach = R + radius;
+    const double near = q0.squaredNorm() > reach * reach
+                            ? sphereEntry(q0, v, a, reach, std::min(horizon, first))
+                            : 0.0;
+    if (near == kNever) continue;  // never near this rim
+    if (q0.squaredNorm() > kFarReaches * kFarReaches * reach * reach) {
+      // From so far the quartic's terms agree in more than half their digits, and its root
+      // was lost (a ball 1e11 m out missed the rim): solved from where the path enters the
+      // sphere instead. Outside the torus there, and nearer ones keep their last bits.
+      const Rebased q = rebase(q0, v, a, near);
+      double t = firstEntry(rimGap(q.u0, q.u1, q.u2, R, radius), std::min(horizon, first) - near);
+      if (!(t < kNever)) t = spindleEntry(q, std::min(horizon, first) - near);
+      if (t < kNever) first = std::min(first, near + t);
+      continue;
+    }
     const Polynomial gap = rimGap(q0, v, a, R, radius);
     const bool inside = gap.c[0] <= 0.0;
     if (inside && approaching) {
@@ -284,7 +319,8 @@ double ballCappedCylinderContactTime(const BallPath& ball, double radius,
       const Rebased q = rebase(q0, v, a, start);
       f = rimGap(q.u0, q.u1, q.u2, R, radius);
     }
-    const double t = firstEntry(f, std::min(horizon, first) - start);
+    double t = firstEntry(f, std::min(horizon, first) - start);
+    if (!(t < kNever) && !inside) t = spindleEntry({q0, v, a}, std::min(horizon, first));
     if (t < kNever) first = std::min(first, start + t);
   }
   return first <= horizon ? first : kNever;

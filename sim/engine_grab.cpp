@@ -106,7 +106,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   const double distance = n.norm();
   const double radiusSum = bodies_.radius[h] + bodies_.radius[o];
   notePenetration(radiusSum - distance, stats);
-  n /= distance;
+  n = pairNormal(n, distance, mh.velocity - mo.velocity);
   if (crushes(h, o, n)) stopGrab(GrabStopKind::Crush, o);
   // The burst guard: pushes that get the moving held ball nowhere (a jam of several balls).
   const double travel = mh.velocity.norm() * (now_ - heldLastPush_);
@@ -158,7 +158,8 @@ bool EventEngine::crushes(int h, int o, const Vec3& n) const {
     if (blocked || !particles_[k].resting) return;
     Vec3 d = tracks_[o].motion.position - tracks_[k].motion.position;
     const double distance = d.norm();
-    blocked = blocks(d / distance, distance - bodies_.radius[o] - bodies_.radius[k]);
+    blocked = blocks(pairNormal(d, distance, -tracks_[o].motion.velocity),
+                     distance - bodies_.radius[o] - bodies_.radius[k]);
   });
   return blocked;
 }

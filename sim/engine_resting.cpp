@@ -4,6 +4,7 @@
 #include "sim/event_engine.h"
 
 #include "sim/contact_forces.h"
+#include "sim/response.h"
 #include "sim/tolerances.h"
 
 #include <Eigen/Dense>
@@ -109,7 +110,7 @@ EventEngine::SupportGap EventEngine::supportGap(int i, const Support& support,
   const int k = support.ball;
   const Vec3 d = centre - tracks_[k].motion.positionAt(now_, accelerationOf(k));
   const double distance = d.norm();
-  return {d / distance, distance - bodies_.radius[i] - bodies_.radius[k]};
+  return {pairNormal(d, distance, -gravity_), distance - bodies_.radius[i] - bodies_.radius[k]};
 }
 
 EventEngine::NearContacts EventEngine::nearContacts(int i, const Vec3& centre) const {

@@ -186,11 +186,23 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
   } else {
     t = ballBallContactTime(path, pathAt(k, now_), radiusSum, horizon);
   }
-  if (t < horizon) best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
+  // A contact at the horizon itself (a swept step's end) is kept, not left to the next step:
+  // there the pair would touch, and balls too small for the rounding of positions so far out
+  // could share one centre, which tells no approach from a retreat.
+  if (t < best.time - now_ && t <= horizon_ - now_)
+    best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
 }
 
 void EventEngine::findCrossing(int i, const BallPath& path) {
   Crossing& next = predictions_[i].crossing;
+  // A crossing closer than the time's resolution comes an ulp later rather than now: the ball
+  // has not reached the face yet, and one taken now found the ball back beyond the face it had
+  // crossed and crossed again, to and fro for ever at one instant (at 5e53 s, gravity switched
+  // on brought a ball back to a face 1e49 m below it in 1e23 s).
+  const auto timeOf = [&](double t) {
+    const double time = now_ + t;
+    return t > 0.0 && time <= now_ ? std::nextafter(now_, kNever) : time;
+  };
   // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
   const Particle& p = particles_[i];
   const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
@@ -208,8 +220,9 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
       for (int a = 0; a < 3; ++a) {
         const double t =
             straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
-        if (now_ + t < std::min(next.time, horizon_))
-          next = {now_ + t, static_cast<std::int8_t>(a),
+        const double time = timeOf(t);
+        if (time < std::min(next.time, horizon_))
+          next = {time, static_cast<std::int8_t>(a),
                   static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
       }
       return;
@@ -221,7 +234,7 @@ void EventEngine::findCrossing(int i, const BallPath& path) {
         const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
                                               path.acceleration[a], face, direction > 0, horizon);
         if (t < horizon)
-          next = {now_ + t, static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
+          next = {timeOf(t), static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
                   level};
       }
     }
@@ -398,7 +411,7 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   const double distance = n.norm();
   const double radiusSum = bodies_.radius[i] + bodies_.radius[j];
   notePenetration(radiusSum - distance, stats);
-  n /= distance;
+  n = pairNormal(n, distance, ma.velocity - mb.velocity);  // centres that coincide: head-on
   const double approach = (ma.velocity - mb.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
   noteRestitution(restitution);
@@ -454,8 +467,18 @@ EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
   const bool pressed = (gravityOn(j) - gravityOn(i)).dot(n) < 0.0;
   const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
                                                : std::min(restSpeed_[i], restSpeed_[j]);
+  // Parting slower than round-off in the balls' own velocities parts nothing (kTangentRateFraction
+  // of the speed, and of the pair's relative speed at most half that): the contact came again
+  // at the same instant, for ever. The collapse speed is the scene's, and a light pair far
+  // faster than its heavy balls (1e11 m/s against 20) took 1e-6 m/s, less than an ulp.
+  constexpr double kRoundOffRate = 2.0 * tolerance::kTangentRateFraction;
+  const double fastest2 =
+      std::max(tracks_[i].motion.velocity.squaredNorm(), tracks_[j].motion.velocity.squaredNorm());
   // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
-  return {pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_,
+  const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
+  return {minimum * minimum >= kRoundOffRate * kRoundOffRate * fastest2
+              ? minimum
+              : kRoundOffRate * std::sqrt(fastest2),
           pressed || restitution >= 1.0 ? 0.0 : separation};
 }
 
@@ -496,9 +519,13 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   }
   // A cycle of contacts that lets time advance by round-off only must not hang the run. The
   // flight since the last contact is negligible by the ball's own measure, its speed times the
-  // time against its size, so a fast ball crossing a box is never taken for a wedged one.
+  // time against its size, so a fast ball crossing a box is never taken for a wedged one; or
+  // when it is within a few ulps of the ball's position, which it cannot move (a ball 1e12 m
+  // out hopping along a cylinder stayed where it was and hopped for ever).
+  const double positionRoundOff =
+      4.0 * std::numeric_limits<double>::epsilon() * m.position.cwiseAbs().maxCoeff();
   if ((now_ - p.lastSurfaceCollision) * speed <=
-      tolerance::kBurstTravelFraction * bodies_.radius[i]) {
+      std::max(tolerance::kBurstTravelFraction * bodies_.radius[i], positionRoundOff)) {
     if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) {
       putToRest(i, stats);
       p.wedged = true;

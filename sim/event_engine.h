@@ -261,7 +261,7 @@ class EventEngine {
   // The least separation speed of balls i and j meeting along unit normal n (from i to j), and
   // the approach below which restitution takes nothing (rules 1 and 8 of rest_policy.h): a
   // pair that gravity presses together parts at no less than the rest speed (an elastic one
-  // at the slide speed).
+  // at the slide speed), and any pair faster than round-off in its velocities.
   struct PairFloor {
     double minimum;
     double lossless;

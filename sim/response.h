@@ -2,6 +2,7 @@
 // Collision response: new velocities for a contact, for any masses, with restitution.
 
 #include "sim/scene.h"
+#include "sim/tolerances.h"
 
 #include <cstddef>
 
@@ -16,6 +17,15 @@ inline double separationSpeed(double approach, double restitution, double minimu
   const double kept = approach < lossless ? approach : lossless;
   if (s < kept) s = kept;
   return s < minimum ? minimum : s;
+}
+
+// The unit normal along `offset` (from one ball's centre to another's, `distance` long), or
+// along `fallback` when the centres coincide: positions far out round to more than a small
+// ball's radius (1e-7 m at 1e9 m from the origin), and balls meeting there may share a centre.
+inline Vec3 pairNormal(const Vec3& offset, double distance, const Vec3& fallback) {
+  if (distance > 0.0) return offset / distance;
+  const double length = fallback.norm();
+  return length > 0.0 ? Vec3(fallback / length) : Vec3::UnitY();
 }
 
 // Two balls touching along unit normal `n` (from a to b). Inverse masses may be zero for an
@@ -38,9 +48,14 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
 // did not suffice (a V of about π/limit rad or less, a ball jammed between parallel walls).
 // An approach within the round-off of v (a ball sliding along a surface, its velocity off the
 // surface by a few ulps) is none: reflecting it leaves v as it was, and looping on it would not
-// end. Skipping it changes no energy, since the reflection changes nothing.
+// end. Skipping it changes no energy, since the reflection changes nothing. Nor does the loop
+// go on past kMaxCollisionsInBurst reflections in a row whose approaches are all within
+// kTangentRateFraction of the speed: an inelastic ball in the crease of two planes came to
+// move along it with v changed by an ulp at each reflection, off one plane into the other and
+// back, ten million times a step under `discrete`.
 template <typename Surfaces, typename OnReflect>
 bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& reflected) {
+  int roundOffInARow = 0;
   for (long reflections = 0; reflections < limit;) {
     bool any = false;
     for (std::size_t k = 0; k < surfaces.size(); ++k) {
@@ -52,6 +67,9 @@ bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& r
       reflected(k, approach);
       any = true;
       ++reflections;
+      const bool roundOff = approach <= tolerance::kTangentRateFraction * before.norm();
+      roundOffInARow = roundOff ? roundOffInARow + 1 : 0;
+      if (roundOffInARow > tolerance::kMaxCollisionsInBurst) return true;
     }
     if (!any) return true;
   }

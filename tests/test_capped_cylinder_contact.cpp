@@ -97,6 +97,35 @@ class TestCappedCylinderContact : public QObject {
         kNever);
   }
 
+  // The same rim met along a straight path from 1e11 m away: the torus's quartic from there
+  // has terms of 1e44 whose differences the root depends on, and it missed the contact (found
+  // by fuzz_valid_scenes: a ball 1e12 m out went into a tiny cylinder and rattled inside it).
+  void rimFromFarAway() {
+    const CylinderShape cylinder = makeCylinder(Vec3::Zero(), Vec3::UnitY(), 0.5, 2.0);
+    const double r = 0.2, height = 1e11, speed = 1e11;
+    const double y = 1 + std::sqrt(0.04 - 0.01);
+    expectNear(ballCylinderContactTime({{0.6, height, 0}, {0, -speed, 0}, Vec3::Zero()}, r,
+                                       cylinder, kNever),
+               (height - y) / speed);
+    // Just outside the grown rim: never.
+    QCOMPARE(ballCylinderContactTime({{0.7 + 1e-6, height, 0}, {0, -speed, 0}, Vec3::Zero()}, r,
+                                     cylinder, kNever),
+             kNever);
+  }
+
+  // A rod far thinner than the ball (a spindle torus around each rim): the torus is entered
+  // where the nearest rim point comes within r, and left again for the quartic when the
+  // farthest does, 2 R l / (r v) later: at 1e12 m/s, 1e-23 s, below the time's resolution, and
+  // the ball went through the rod (found by fuzz_valid_scenes).
+  void thinRodMetAtSpeed() {
+    const double R = 1e-7, length = 5e-8, r = 1.4, offset = 4e-5, height = 1e12, speed = 1e12;
+    const CylinderShape rod = makeCylinder(Vec3::Zero(), Vec3::UnitY(), R, length);
+    const double y = 0.5 * length + std::sqrt(r * r - (offset - R) * (offset - R));
+    expectNear(ballCylinderContactTime({{offset, height, 0}, {0, -speed, 0}, Vec3::Zero()}, r, rod,
+                                       kNever),
+               (height - y) / speed, 1e-15);
+  }
+
   void touchingFiresOnlyWhenApproaching() {
     const CylinderShape cylinder = makeCylinder(Vec3::Zero(), Vec3::UnitY(), 0.5, 2.0);
     const double r = 0.1;

@@ -353,6 +353,44 @@ class TestCli : public QObject {
     QVERIFY2(QJsonDocument::fromJson(run.out).isObject(), run.out.constData());
   }
 
+  // Scenes validation accepts at the ends of its range (issue 33: the grids' cell counts
+  // overflowed, and the run died of SIGSEGV or "internal error: vector::reserve") run under
+  // every method.
+  void extremeScenesRun_data() {
+    QTest::addColumn<QByteArray>("scene");
+    QTest::addColumn<QString>("method");
+    const QList<std::pair<const char*, QByteArray>> scenes{
+        {"micro balls 1 km apart", sceneText(R"("balls": [
+            {"position": [0, 0, 0], "velocity": [1, 1, 1], "radius": 1e-6},
+            {"position": [1000, 1000, 1000], "radius": 1e-6}])")},
+        {"pico balls by a huge box", sceneText(R"(
+            "boxes": [{"center": [0, 0, 0], "halfExtents": [5e11, 5e11, 5e11]}],
+            "balls": [{"position": [6e11, 0, 0], "radius": 1e-12},
+                      {"position": [6e11, 1, 0], "radius": 1e-12}])",
+                                               2)},
+        {"pico balls by a huge cylinder", sceneText(R"(
+            "cylinders": [{"point": [0, 0, 0], "axis": [0, 1, 0], "radius": 5e11, "length": 1e12}],
+            "balls": [{"position": [6e11, 0, 0], "radius": 1e-12},
+                      {"position": [6e11, 1, 0], "radius": 1e-12}])",
+                                                    2)},
+        {"pico balls 1e9 m apart", sceneText(R"("balls": [
+            {"position": [0, 0, 0], "radius": 1e-12}, {"position": [1e9, 0, 0], "radius": 1e-12}])")}};
+    for (const auto& [name, scene] : scenes)
+      for (const QString method : {"exact", "swept", "discrete"})
+        QTest::newRow(qPrintable(name + QString(", ") + method)) << scene << method;
+  }
+  void extremeScenesRun() {
+    QFETCH(QByteArray, scene);
+    QFETCH(QString, method);
+    const QString path = writeRowFile(scene);
+    QVERIFY(!path.isEmpty());
+    const CliRun validate = runCli({"validate", path});
+    VERIFY_EXIT(validate, 0);
+    const CliRun run = runCli({"run", path, "--duration", "0", "--method", method, "--json"});
+    VERIFY_EXIT(run, 0);
+    QVERIFY2(QJsonDocument::fromJson(run.out).isObject(), run.out.constData());
+  }
+
   // A version 2 scene with a box: validated, run, and its contact counted as ball-box.
   void runCountsBallBoxContacts() {
     const QString path = writeRowFile(sceneText(R"(

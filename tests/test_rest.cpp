@@ -748,6 +748,61 @@ class TestRest : public QObject {
     }
   }
 
+  // A ball hopping at the rest speed along the top of a cylinder 1e12 m from the origin, where
+  // positions round to 1e-4 m: each hop moves it 1e-5 m, less than its position can show, so it
+  // stayed where it was and hopped for ever, 1,100 events a second (found by
+  // fuzz_valid_scenes). Flights within the round-off of the ball's position are negligible to
+  // the burst guard, which puts it to rest.
+  void ballHoppingInPlaceFarOutRests() {
+    for (const double x : {0.0, 1e12}) {
+      Scene s;
+      s.world.gravity = Vec3(0, -9.81, 0);
+      s.world.restitution = 0.5;
+      const double r = 1e-3;
+      s.cylinders.push_back(carom::testing::makeCylinder(Vec3(x, 0, 0), Vec3::UnitX(), 1.0));
+      s.balls.push_back(makeBall({x, 1.0 + r, 0}, {0.01, 0, 0}, r));
+      Simulation sim(s);
+      sim.advance(10.0);
+      const BallState ball = sim.state()[0];
+      if (x == 0.0) {
+        // Near the origin it keeps going along the top, hopping.
+        QVERIFY2(ball.position.x() > 0.05, qPrintable(QString::number(ball.position.x())));
+      } else {
+        QVERIFY(ball.resting);
+        QVERIFY2(sim.stats().events < 200, qPrintable(QString::number(sim.stats().events)));
+      }
+    }
+  }
+
+  // An inelastic ball driven into the crease of two planes by one `discrete` step: reflected off
+  // each in turn, it came to move along the crease with its velocity changed by an ulp at each
+  // reflection, into one plane and back into the other, until the ten-million limit (found by
+  // fuzz_valid_scenes). Past 64 reflections in a row of round-off approaches it stops there.
+  void roundOffReflectionsInACreaseStop() {
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    s.world.method = Method::Discrete;
+    s.world.integrator = Integrator::ExplicitEuler;
+    s.world.timeStep = 1.3080631233796651;
+    s.world.restitution = 0.5;
+    s.planes.push_back(carom::testing::makePlane(
+        Vec3(-3.5901535903006604e-09, -1.0260499557849469e-08, -4.0339433694025435e-11),
+        Vec3(0.33026445439291746, 0.94388114687542879, 0.0037108944574042197)));
+    s.planes.push_back(carom::testing::makePlane(
+        Vec3(-4.2630873108164075e-11, 1.0870374363038489e-08, -4.2630873108202694e-11),
+        Vec3(0.0039216880699809876, -0.99998462024441326, 0.0039216880699845403)));
+    s.balls.push_back(
+        makeBall({1.0505677332332402, 0, 0}, {-0.89730726101922076, 0, 0}, 2.7e-9, 1.0));
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    sim.step();
+    QVERIFY2(sim.stats().collisions.total() < 1000,
+             qPrintable(QString::number(sim.stats().collisions.total())));
+    // Out of both planes, moving along the crease.
+    for (const Plane& plane : s.planes)
+      QVERIFY(planeShape(plane).gap(sim.positions()[0], 2.7e-9) >= -1e-12);
+  }
+
   // A pour that jams the outlet of a Galton board's funnel, in a plane (z = 0): the burst guard
   // stopped a ball wedged between two resting ones, and a slow ball leaning on it loosened it
   // again at each touch, a few nanoseconds apart, so that the run stalled at t = 0.78 s. The
