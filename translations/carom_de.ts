@@ -53,47 +53,47 @@
 <context>
     <name>ObjectRef</name>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Plane</source>
         <translation>Ebene</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="55"/>
+        <location filename="../ui/editor/object_ref.cpp" line="56"/>
         <source>Cylinder</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Ball</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Planes</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="58"/>
+        <location filename="../ui/editor/object_ref.cpp" line="59"/>
         <source>Cylinders</source>
         <translation>Zylinder</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Balls</source>
         <translation>Kugeln</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="72"/>
+        <location filename="../ui/editor/object_ref.cpp" line="73"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="55"/>
+        <location filename="../ui/editor/object_ref.cpp" line="56"/>
         <source>Box</source>
         <translation>Quader</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="58"/>
+        <location filename="../ui/editor/object_ref.cpp" line="59"/>
         <source>Boxes</source>
         <translation>Quader</translation>
     </message>
@@ -174,7 +174,7 @@
 <context>
     <name>carom::editor::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="217"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="219"/>
         <source>Outline</source>
         <translation>Übersicht</translation>
     </message>
@@ -197,9 +197,9 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="60"/>
         <location filename="../ui/editor/properties_dock.cpp" line="390"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="512"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="549"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="513"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="550"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="573"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -403,7 +403,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="223"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="589"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="590"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -419,7 +419,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="336"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="448"/>
         <source>infinite</source>
         <translation>unendlich</translation>
     </message>
@@ -429,7 +429,7 @@
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="392"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="393"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -437,7 +437,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="396"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -445,17 +445,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="406"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="425"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="426"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="439"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="440"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
@@ -496,7 +496,7 @@
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="462"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="463"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -522,47 +522,47 @@
 <context>
     <name>carom::ui</name>
     <message>
-        <location filename="../ui/watch_text.cpp" line="16"/>
+        <location filename="../ui/watch_text.cpp" line="24"/>
         <source>ball %1 (%2)</source>
         <translation>Kugel %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="17"/>
+        <location filename="../ui/watch_text.cpp" line="25"/>
         <source>ball %1</source>
         <translation>Kugel %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="31"/>
+        <location filename="../ui/watch_text.cpp" line="39"/>
         <source>plane %1</source>
         <translation>Ebene %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="33"/>
+        <location filename="../ui/watch_text.cpp" line="41"/>
         <source>cylinder %1</source>
         <translation>Zylinder %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="36"/>
+        <location filename="../ui/watch_text.cpp" line="44"/>
         <source>box %1</source>
         <translation>Quader %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="50"/>
+        <location filename="../ui/watch_text.cpp" line="58"/>
         <source>At %1 s %2 has a position or velocity that is not a finite number.</source>
         <translation>Bei %1 s hat %2 eine Position oder Geschwindigkeit, die keine endliche Zahl ist.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="53"/>
+        <location filename="../ui/watch_text.cpp" line="61"/>
         <source>At %1 s the energy rose by %2 of the scene&apos;s energy scale (tolerance %3); %4 gained the most.</source>
         <translation>Bei %1 s stieg die Energie um %2 der Energieskala der Szene (Toleranz %3); %4 gewann am meisten.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="57"/>
+        <location filename="../ui/watch_text.cpp" line="65"/>
         <source>At %1 s %2 got inside %3: its centre is %4 of its radius past the surface.</source>
         <translation>Bei %1 s geriet %2 in %3: Ihr Mittelpunkt liegt %4 ihres Radius hinter der Oberfläche.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="60"/>
+        <location filename="../ui/watch_text.cpp" line="68"/>
         <source>At %1 s %2 overlaps %3 by %4 of the radius (tolerance %5).</source>
         <translation>Bei %1 s überlappt %2 mit %3 um %4 des Radius (Toleranz %5).</translation>
     </message>
@@ -753,47 +753,47 @@
 <context>
     <name>carom::ui::BallStoryDock</name>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="101"/>
+        <location filename="../ui/ball_story_dock.cpp" line="102"/>
         <source>Ball Story</source>
         <translation>Kugelverlauf</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="102"/>
+        <location filename="../ui/ball_story_dock.cpp" line="103"/>
         <source>Height (m)</source>
         <translation>Höhe (m)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="103"/>
+        <location filename="../ui/ball_story_dock.cpp" line="104"/>
         <source>Speed (m/s)</source>
         <translation>Geschwindigkeit (m/s)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="104"/>
+        <location filename="../ui/ball_story_dock.cpp" line="105"/>
         <source>Energy (J)</source>
         <translation>Energie (J)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="106"/>
+        <location filename="../ui/ball_story_dock.cpp" line="107"/>
         <source>Height is measured against gravity (along y when there is none); energy is the ball&apos;s kinetic energy plus its potential energy relative to the origin.</source>
         <translation>Die Höhe wird entgegen der Schwerkraft gemessen (ohne Schwerkraft entlang y); die Energie ist die kinetische Energie der Kugel plus ihre potentielle Energie relativ zum Ursprung.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="110"/>
+        <location filename="../ui/ball_story_dock.cpp" line="111"/>
         <source>Simulated time (s)</source>
         <translation>Simulierte Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="117"/>
+        <location filename="../ui/ball_story_dock.cpp" line="118"/>
         <source>Select balls to follow them: their story starts when they are selected.</source>
         <translation>Wählen Sie Kugeln aus, um ihnen zu folgen: Ihr Verlauf beginnt mit der Auswahl.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="119"/>
+        <location filename="../ui/ball_story_dock.cpp" line="120"/>
         <source>Showing the first %1 of %2 selected balls; each story starts when the ball is selected.</source>
         <translation>Gezeigt werden die ersten %1 von %2 ausgewählten Kugeln; jeder Verlauf beginnt mit der Auswahl der Kugel.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="124"/>
+        <location filename="../ui/ball_story_dock.cpp" line="125"/>
         <source>Each ball&apos;s story starts when it is selected.</source>
         <translation>Der Verlauf jeder Kugel beginnt mit ihrer Auswahl.</translation>
     </message>
@@ -1308,32 +1308,32 @@
 <context>
     <name>carom::ui::ImageExport</name>
     <message>
-        <location filename="../ui/image_export.cpp" line="112"/>
+        <location filename="../ui/image_export.cpp" line="114"/>
         <source>Export Image</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="113"/>
+        <location filename="../ui/image_export.cpp" line="115"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="119"/>
+        <location filename="../ui/image_export.cpp" line="121"/>
         <source>Cannot Export Image</source>
         <translation>Bild kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="122"/>
+        <location filename="../ui/image_export.cpp" line="124"/>
         <source>Exported a %1×%2 image to %3</source>
         <translation>Bild mit %1×%2 Pixeln nach %3 exportiert</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="133"/>
+        <location filename="../ui/image_export.cpp" line="135"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="138"/>
+        <location filename="../ui/image_export.cpp" line="149"/>
         <source>Could not write %1: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
@@ -1341,37 +1341,37 @@
 <context>
     <name>carom::ui::ImageSizeDialog</name>
     <message>
-        <location filename="../ui/image_export.cpp" line="39"/>
+        <location filename="../ui/image_export.cpp" line="41"/>
         <source>Export Image</source>
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="49"/>
+        <location filename="../ui/image_export.cpp" line="51"/>
         <source>Width (pixels)</source>
         <translation>Breite (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="50"/>
+        <location filename="../ui/image_export.cpp" line="52"/>
         <source>Height (pixels)</source>
         <translation>Höhe (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="63"/>
+        <location filename="../ui/image_export.cpp" line="65"/>
         <source>Width</source>
         <translation>Breite</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="63"/>
+        <location filename="../ui/image_export.cpp" line="65"/>
         <source>Height</source>
         <translation>Höhe</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="67"/>
+        <location filename="../ui/image_export.cpp" line="69"/>
         <source>%1: must be a whole number of pixels (got &quot;%2&quot;)</source>
         <translation>%1: muss eine ganze Zahl von Pixeln sein (erhalten: „%2“)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="69"/>
+        <location filename="../ui/image_export.cpp" line="71"/>
         <source>%1: must be between %2 and %3 pixels (got %4)</source>
         <translation>%1: muss zwischen %2 und %3 Pixeln liegen (erhalten: %4)</translation>
     </message>
@@ -1379,335 +1379,340 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="584"/>
+        <location filename="../ui/main_window.cpp" line="589"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="403"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
+        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
+        <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden (%1); die letzte bleibt erhalten. Speichern Sie die Szene sicherheitshalber an einem anderen Ort.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="418"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Export &amp;Video…</source>
         <translation>&amp;Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="677"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="407"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="760"/>
+        <location filename="../ui/main_window.cpp" line="765"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>
@@ -1851,7 +1856,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="75"/>
+        <location filename="../ui/simulation_sync.cpp" line="76"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
     </message>
@@ -1859,7 +1864,7 @@
 <context>
     <name>carom::ui::StatusReadout</name>
     <message numerus="yes">
-        <location filename="../ui/status_readout.cpp" line="63"/>
+        <location filename="../ui/status_readout.cpp" line="70"/>
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
         <translation>
             <numerusform>t = %1 s   ×%2 Echtzeit   %3 fps   %4 Kollisionen/s   %n Kugel   E = %5 J (Drift %6)</numerusform>
@@ -1867,17 +1872,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="73"/>
+        <location filename="../ui/status_readout.cpp" line="80"/>
         <source>   sound unavailable</source>
         <translation>   Ton nicht verfügbar</translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="75"/>
+        <location filename="../ui/status_readout.cpp" line="82"/>
         <source>   muted</source>
         <translation>   stummgeschaltet</translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="76"/>
+        <location filename="../ui/status_readout.cpp" line="83"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — die Physik kommt nicht hinterher; läuft langsamer</translation>
     </message>
@@ -1916,104 +1921,104 @@
 <context>
     <name>carom::ui::VideoExport</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="198"/>
+        <location filename="../ui/video_export.cpp" line="197"/>
         <source>Start: must not be before 0 s (got %1 s)</source>
         <translation>Anfang: darf nicht vor 0 s liegen (erhalten: %1 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="200"/>
+        <location filename="../ui/video_export.cpp" line="199"/>
         <source>End: must not be before the start, %1 s (got %2 s)</source>
         <translation>Ende: darf nicht vor dem Anfang (%1 s) liegen (erhalten: %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="203"/>
+        <location filename="../ui/video_export.cpp" line="202"/>
         <source>End: the run is recorded up to %1 s only (got %2 s)</source>
         <translation>Ende: der Lauf ist nur bis %1 s aufgezeichnet (erhalten: %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="206"/>
+        <location filename="../ui/video_export.cpp" line="205"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="216"/>
+        <location filename="../ui/video_export.cpp" line="215"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
         <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde: wählen Sie PNG-Bilder oder installieren Sie ffmpeg.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="221"/>
+        <location filename="../ui/video_export.cpp" line="220"/>
         <source>MP4: the width and height must be even (got %1×%2)</source>
         <translation>MP4: Breite und Höhe müssen gerade sein (erhalten: %1×%2)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="257"/>
-        <location filename="../ui/video_export.cpp" line="357"/>
+        <location filename="../ui/video_export.cpp" line="256"/>
+        <location filename="../ui/video_export.cpp" line="356"/>
         <source>Export Video</source>
         <translation>Video exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="258"/>
+        <location filename="../ui/video_export.cpp" line="257"/>
         <source>MP4 videos (*.mp4)</source>
         <translation>MP4-Videos (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="265"/>
+        <location filename="../ui/video_export.cpp" line="264"/>
         <source>Export Video: Folder for the Frames</source>
         <translation>Video exportieren: Ordner für die Bilder</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="272"/>
-        <location filename="../ui/video_export.cpp" line="483"/>
+        <location filename="../ui/video_export.cpp" line="271"/>
+        <location filename="../ui/video_export.cpp" line="479"/>
         <source>Cannot Export Video</source>
         <translation>Video kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="283"/>
+        <location filename="../ui/video_export.cpp" line="282"/>
         <source>A video is being exported already.</source>
         <translation>Es wird bereits ein Video exportiert.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="286"/>
+        <location filename="../ui/video_export.cpp" line="285"/>
         <source>There is no run to export yet.</source>
         <translation>Es gibt noch keinen Lauf zum Exportieren.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="291"/>
+        <location filename="../ui/video_export.cpp" line="290"/>
         <source>No folder or file was chosen.</source>
         <translation>Es wurde kein Ordner und keine Datei gewählt.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="294"/>
+        <location filename="../ui/video_export.cpp" line="293"/>
         <source>Could not create the folder %1.</source>
         <translation>Der Ordner %1 konnte nicht angelegt werden.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="296"/>
+        <location filename="../ui/video_export.cpp" line="295"/>
         <source>Could not write into the folder %1.</source>
         <translation>In den Ordner %1 kann nicht geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="299"/>
+        <location filename="../ui/video_export.cpp" line="298"/>
         <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
         <translation>Der Ordner %1 enthält bereits Bilder (frame_*.png): wählen Sie einen anderen Ordner oder entfernen Sie sie zuerst.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="305"/>
+        <location filename="../ui/video_export.cpp" line="304"/>
         <source>Could not write %1: its folder does not exist or cannot be written.</source>
         <translation>%1 konnte nicht geschrieben werden: der Ordner existiert nicht oder ist nicht beschreibbar.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="308"/>
+        <location filename="../ui/video_export.cpp" line="307"/>
         <source>Could not write %1: it is a folder.</source>
         <translation>%1 konnte nicht geschrieben werden: es ist ein Ordner.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="345"/>
+        <location filename="../ui/video_export.cpp" line="344"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>ffmpeg konnte nicht gestartet werden: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="354"/>
+        <location filename="../ui/video_export.cpp" line="353"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>%n Videobild wird exportiert…</numerusform>
@@ -2021,12 +2026,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="354"/>
+        <location filename="../ui/video_export.cpp" line="353"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="382"/>
+        <location filename="../ui/video_export.cpp" line="381"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Der Lauf wurde während des Exports zurückgesetzt oder von einem früheren Bild aus fortgesetzt; der Export endete nach %n Bild.</numerusform>
@@ -2034,27 +2039,26 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="402"/>
+        <location filename="../ui/video_export.cpp" line="401"/>
         <source>Finishing the video…</source>
         <translation>Das Video wird fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="426"/>
+        <location filename="../ui/video_export.cpp" line="425"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Der Grafiktreiber konnte kein Bild mit %1×%2 Pixeln zeichnen.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="435"/>
         <source>Could not write %1: %2</source>
-        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+        <translation type="vanished">%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="459"/>
+        <location filename="../ui/video_export.cpp" line="455"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>ffmpeg ist fehlgeschlagen (Exit-Code %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="463"/>
+        <location filename="../ui/video_export.cpp" line="459"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>%n Videobild mit %1×%2 bei %3 fps nach %4 exportiert</numerusform>
@@ -2062,7 +2066,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="477"/>
+        <location filename="../ui/video_export.cpp" line="473"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n zuvor geschriebenes Bild bleibt in %1.</numerusform>
@@ -2070,12 +2074,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="495"/>
+        <location filename="../ui/video_export.cpp" line="491"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Videoexport abgebrochen; das unfertige Video wurde entfernt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="496"/>
+        <location filename="../ui/video_export.cpp" line="492"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Videoexport nach %n Bild abgebrochen; es bleibt in %1.</numerusform>
@@ -2086,72 +2090,72 @@
 <context>
     <name>carom::ui::VideoExportDialog</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="81"/>
+        <location filename="../ui/video_export.cpp" line="80"/>
         <source>Export Video</source>
         <translation>Video exportieren</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="93"/>
+        <location filename="../ui/video_export.cpp" line="92"/>
         <source>PNG images in a folder</source>
         <translation>PNG-Bilder in einem Ordner</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="94"/>
+        <location filename="../ui/video_export.cpp" line="93"/>
         <source>MP4 video (ffmpeg)</source>
         <translation>MP4-Video (ffmpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="96"/>
+        <location filename="../ui/video_export.cpp" line="95"/>
         <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
         <translation>Der Lauf ist von 0 bis %1 s aufgezeichnet. Jedes Videobild zeigt den aufgezeichneten Schritt, der zu seinem Zeitpunkt oder als letzter davor endete.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="108"/>
+        <location filename="../ui/video_export.cpp" line="107"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
         <translation>MP4 braucht ffmpeg, das im PATH nicht gefunden wurde (scripts/setup-debian.sh installiert es); PNG-Bilder brauchen nichts weiter.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="118"/>
+        <location filename="../ui/video_export.cpp" line="117"/>
         <source>Start (s)</source>
         <translation>Anfang (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="119"/>
+        <location filename="../ui/video_export.cpp" line="118"/>
         <source>End (s)</source>
         <translation>Ende (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="120"/>
+        <location filename="../ui/video_export.cpp" line="119"/>
         <source>Frames per second</source>
         <translation>Bilder pro Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="121"/>
+        <location filename="../ui/video_export.cpp" line="120"/>
         <source>Width (pixels)</source>
         <translation>Breite (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="122"/>
+        <location filename="../ui/video_export.cpp" line="121"/>
         <source>Height (pixels)</source>
         <translation>Höhe (Pixel)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="123"/>
+        <location filename="../ui/video_export.cpp" line="122"/>
         <source>Format</source>
         <translation>Format</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="141"/>
+        <location filename="../ui/video_export.cpp" line="140"/>
         <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Anfang: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="142"/>
+        <location filename="../ui/video_export.cpp" line="141"/>
         <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Ende: muss eine Zahl von Sekunden sein (erhalten: „%1“)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="144"/>
+        <location filename="../ui/video_export.cpp" line="143"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Bilder pro Sekunde: muss eine ganze Zahl von %1 bis %2 sein (erhalten: „%3“)</translation>
     </message>

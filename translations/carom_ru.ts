@@ -53,47 +53,47 @@
 <context>
     <name>ObjectRef</name>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Plane</source>
         <translation>Плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="55"/>
+        <location filename="../ui/editor/object_ref.cpp" line="56"/>
         <source>Cylinder</source>
         <translation>Цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="54"/>
+        <location filename="../ui/editor/object_ref.cpp" line="55"/>
         <source>Ball</source>
         <translation>Шар</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Planes</source>
         <translation>Плоскости</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="58"/>
+        <location filename="../ui/editor/object_ref.cpp" line="59"/>
         <source>Cylinders</source>
         <translation>Цилиндры</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="57"/>
+        <location filename="../ui/editor/object_ref.cpp" line="58"/>
         <source>Balls</source>
         <translation>Шары</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="72"/>
+        <location filename="../ui/editor/object_ref.cpp" line="73"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="55"/>
+        <location filename="../ui/editor/object_ref.cpp" line="56"/>
         <source>Box</source>
         <translation>Ящик</translation>
     </message>
     <message>
-        <location filename="../ui/editor/object_ref.cpp" line="58"/>
+        <location filename="../ui/editor/object_ref.cpp" line="59"/>
         <source>Boxes</source>
         <translation>Ящики</translation>
     </message>
@@ -174,7 +174,7 @@
 <context>
     <name>carom::editor::OutlineDock</name>
     <message>
-        <location filename="../ui/editor/outline_dock.cpp" line="217"/>
+        <location filename="../ui/editor/outline_dock.cpp" line="219"/>
         <source>Outline</source>
         <translation>Структура</translation>
     </message>
@@ -197,9 +197,9 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="60"/>
         <location filename="../ui/editor/properties_dock.cpp" line="390"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="512"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="549"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="513"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="550"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="573"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -403,7 +403,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="223"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="589"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="590"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>
@@ -419,7 +419,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="336"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="448"/>
         <source>infinite</source>
         <translation>бесконечный</translation>
     </message>
@@ -429,7 +429,7 @@
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="392"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="393"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -438,7 +438,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="396"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -447,17 +447,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="406"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="425"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="426"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="439"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="440"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
@@ -498,7 +498,7 @@
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="462"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="463"/>
         <source>none</source>
         <translation>нет</translation>
     </message>
@@ -524,47 +524,47 @@
 <context>
     <name>carom::ui</name>
     <message>
-        <location filename="../ui/watch_text.cpp" line="16"/>
+        <location filename="../ui/watch_text.cpp" line="24"/>
         <source>ball %1 (%2)</source>
         <translation>шар %1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="17"/>
+        <location filename="../ui/watch_text.cpp" line="25"/>
         <source>ball %1</source>
         <translation>шар %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="31"/>
+        <location filename="../ui/watch_text.cpp" line="39"/>
         <source>plane %1</source>
         <translation>плоскость %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="33"/>
+        <location filename="../ui/watch_text.cpp" line="41"/>
         <source>cylinder %1</source>
         <translation>цилиндр %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="36"/>
+        <location filename="../ui/watch_text.cpp" line="44"/>
         <source>box %1</source>
         <translation>ящик %1</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="50"/>
+        <location filename="../ui/watch_text.cpp" line="58"/>
         <source>At %1 s %2 has a position or velocity that is not a finite number.</source>
         <translation>В %1 s у объекта «%2» положение или скорость — не конечное число.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="53"/>
+        <location filename="../ui/watch_text.cpp" line="61"/>
         <source>At %1 s the energy rose by %2 of the scene&apos;s energy scale (tolerance %3); %4 gained the most.</source>
         <translation>В %1 s энергия выросла на %2 от масштаба энергии сцены (допуск %3); больше всего получил %4.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="57"/>
+        <location filename="../ui/watch_text.cpp" line="65"/>
         <source>At %1 s %2 got inside %3: its centre is %4 of its radius past the surface.</source>
         <translation>В %1 s %2 оказался внутри объекта «%3»: его центр на %4 радиуса за поверхностью.</translation>
     </message>
     <message>
-        <location filename="../ui/watch_text.cpp" line="60"/>
+        <location filename="../ui/watch_text.cpp" line="68"/>
         <source>At %1 s %2 overlaps %3 by %4 of the radius (tolerance %5).</source>
         <translation>В %1 s %2 перекрывается с %3 на %4 радиуса (допуск %5).</translation>
     </message>
@@ -757,47 +757,47 @@
 <context>
     <name>carom::ui::BallStoryDock</name>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="101"/>
+        <location filename="../ui/ball_story_dock.cpp" line="102"/>
         <source>Ball Story</source>
         <translation>История шара</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="102"/>
+        <location filename="../ui/ball_story_dock.cpp" line="103"/>
         <source>Height (m)</source>
         <translation>Высота (m)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="103"/>
+        <location filename="../ui/ball_story_dock.cpp" line="104"/>
         <source>Speed (m/s)</source>
         <translation>Скорость (m/s)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="104"/>
+        <location filename="../ui/ball_story_dock.cpp" line="105"/>
         <source>Energy (J)</source>
         <translation>Энергия (J)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="106"/>
+        <location filename="../ui/ball_story_dock.cpp" line="107"/>
         <source>Height is measured against gravity (along y when there is none); energy is the ball&apos;s kinetic energy plus its potential energy relative to the origin.</source>
         <translation>Высота отсчитывается против силы тяжести (по y, если её нет); энергия — кинетическая энергия шара плюс его потенциальная энергия относительно начала координат.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="110"/>
+        <location filename="../ui/ball_story_dock.cpp" line="111"/>
         <source>Simulated time (s)</source>
         <translation>Модельное время (s)</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="117"/>
+        <location filename="../ui/ball_story_dock.cpp" line="118"/>
         <source>Select balls to follow them: their story starts when they are selected.</source>
         <translation>Выберите шары, чтобы следить за ними: их история начинается с момента выбора.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="119"/>
+        <location filename="../ui/ball_story_dock.cpp" line="120"/>
         <source>Showing the first %1 of %2 selected balls; each story starts when the ball is selected.</source>
         <translation>Показаны первые %1 шаров из выбранных (%2); история каждого шара начинается с момента его выбора.</translation>
     </message>
     <message>
-        <location filename="../ui/ball_story_dock.cpp" line="124"/>
+        <location filename="../ui/ball_story_dock.cpp" line="125"/>
         <source>Each ball&apos;s story starts when it is selected.</source>
         <translation>История каждого шара начинается с момента его выбора.</translation>
     </message>
@@ -1312,32 +1312,32 @@
 <context>
     <name>carom::ui::ImageExport</name>
     <message>
-        <location filename="../ui/image_export.cpp" line="112"/>
+        <location filename="../ui/image_export.cpp" line="114"/>
         <source>Export Image</source>
         <translation>Экспорт изображения</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="113"/>
+        <location filename="../ui/image_export.cpp" line="115"/>
         <source>PNG images (*.png)</source>
         <translation>Изображения PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="119"/>
+        <location filename="../ui/image_export.cpp" line="121"/>
         <source>Cannot Export Image</source>
         <translation>Не удалось экспортировать изображение</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="122"/>
+        <location filename="../ui/image_export.cpp" line="124"/>
         <source>Exported a %1×%2 image to %3</source>
         <translation>Изображение %1×%2 экспортировано в %3</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="133"/>
+        <location filename="../ui/image_export.cpp" line="135"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="138"/>
+        <location filename="../ui/image_export.cpp" line="149"/>
         <source>Could not write %1: %2</source>
         <translation>Не удалось записать %1: %2</translation>
     </message>
@@ -1345,37 +1345,37 @@
 <context>
     <name>carom::ui::ImageSizeDialog</name>
     <message>
-        <location filename="../ui/image_export.cpp" line="39"/>
+        <location filename="../ui/image_export.cpp" line="41"/>
         <source>Export Image</source>
         <translation>Экспорт изображения</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="49"/>
+        <location filename="../ui/image_export.cpp" line="51"/>
         <source>Width (pixels)</source>
         <translation>Ширина (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="50"/>
+        <location filename="../ui/image_export.cpp" line="52"/>
         <source>Height (pixels)</source>
         <translation>Высота (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="63"/>
+        <location filename="../ui/image_export.cpp" line="65"/>
         <source>Width</source>
         <translation>Ширина</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="63"/>
+        <location filename="../ui/image_export.cpp" line="65"/>
         <source>Height</source>
         <translation>Высота</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="67"/>
+        <location filename="../ui/image_export.cpp" line="69"/>
         <source>%1: must be a whole number of pixels (got &quot;%2&quot;)</source>
         <translation>%1: должно быть целым числом пикселей (получено «%2»)</translation>
     </message>
     <message>
-        <location filename="../ui/image_export.cpp" line="69"/>
+        <location filename="../ui/image_export.cpp" line="71"/>
         <source>%1: must be between %2 and %3 pixels (got %4)</source>
         <translation>%1: должно быть от %2 до %3 пикселей (получено %4)</translation>
     </message>
@@ -1383,335 +1383,340 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="486"/>
+        <location filename="../ui/main_window.cpp" line="491"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="454"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="200"/>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="205"/>
+        <location filename="../ui/main_window.cpp" line="453"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="451"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
+        <location filename="../ui/main_window.cpp" line="457"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="458"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="482"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="486"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="483"/>
+        <location filename="../ui/main_window.cpp" line="488"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="484"/>
+        <location filename="../ui/main_window.cpp" line="489"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="485"/>
+        <location filename="../ui/main_window.cpp" line="490"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="454"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="473"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
+        <location filename="../ui/main_window.cpp" line="417"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="420"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="422"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="445"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="443"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="445"/>
+        <location filename="../ui/main_window.cpp" line="450"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="557"/>
+        <location filename="../ui/main_window.cpp" line="562"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="584"/>
+        <location filename="../ui/main_window.cpp" line="589"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="418"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="419"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="421"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="401"/>
+        <location filename="../ui/main_window.cpp" line="406"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="403"/>
+        <location filename="../ui/main_window.cpp" line="123"/>
+        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
+        <translation>Не удалось записать резервную копию (%1); сохранена предыдущая. Для надёжности сохраните сцену в другом месте.</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="408"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="417"/>
+        <location filename="../ui/main_window.cpp" line="422"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="418"/>
+        <location filename="../ui/main_window.cpp" line="423"/>
         <source>Export &amp;Image…</source>
         <translation>Экспорт &amp;изображения…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="419"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>Export &amp;Video…</source>
         <translation>Экспорт ви&amp;део…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="458"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="490"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="491"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>&amp;Physics Notes</source>
         <translation>&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="672"/>
+        <location filename="../ui/main_window.cpp" line="677"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="400"/>
+        <location filename="../ui/main_window.cpp" line="405"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="402"/>
+        <location filename="../ui/main_window.cpp" line="407"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="433"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="760"/>
+        <location filename="../ui/main_window.cpp" line="765"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="420"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="480"/>
+        <location filename="../ui/main_window.cpp" line="485"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="442"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
@@ -1855,7 +1860,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="75"/>
+        <location filename="../ui/simulation_sync.cpp" line="76"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
@@ -1863,7 +1868,7 @@
 <context>
     <name>carom::ui::StatusReadout</name>
     <message numerus="yes">
-        <location filename="../ui/status_readout.cpp" line="63"/>
+        <location filename="../ui/status_readout.cpp" line="70"/>
         <source>t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   E = %5 J (drift %6)</source>
         <translation>
             <numerusform>t = %1 s   ×%2 от реального времени   %3 fps   столкновений/s: %4   %n шар   E = %5 J (дрейф %6)</numerusform>
@@ -1872,17 +1877,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="73"/>
+        <location filename="../ui/status_readout.cpp" line="80"/>
         <source>   sound unavailable</source>
         <translation>   звук недоступен</translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="75"/>
+        <location filename="../ui/status_readout.cpp" line="82"/>
         <source>   muted</source>
         <translation>   звук выключен</translation>
     </message>
     <message>
-        <location filename="../ui/status_readout.cpp" line="76"/>
+        <location filename="../ui/status_readout.cpp" line="83"/>
         <source>   — the physics cannot keep up; running slower</source>
         <translation>   — физика не успевает; замедленный ход</translation>
     </message>
@@ -1922,104 +1927,104 @@
 <context>
     <name>carom::ui::VideoExport</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="198"/>
+        <location filename="../ui/video_export.cpp" line="197"/>
         <source>Start: must not be before 0 s (got %1 s)</source>
         <translation>Начало: должно быть не раньше 0 s (получено %1 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="200"/>
+        <location filename="../ui/video_export.cpp" line="199"/>
         <source>End: must not be before the start, %1 s (got %2 s)</source>
         <translation>Конец: должен быть не раньше начала, %1 s (получено %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="203"/>
+        <location filename="../ui/video_export.cpp" line="202"/>
         <source>End: the run is recorded up to %1 s only (got %2 s)</source>
         <translation>Конец: прогон записан только до %1 s (получено %2 s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="206"/>
+        <location filename="../ui/video_export.cpp" line="205"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="216"/>
+        <location filename="../ui/video_export.cpp" line="215"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH: choose PNG images, or install ffmpeg.</source>
         <translation>Для MP4 нужен ffmpeg, но в PATH его нет: выберите изображения PNG или установите ffmpeg.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="221"/>
+        <location filename="../ui/video_export.cpp" line="220"/>
         <source>MP4: the width and height must be even (got %1×%2)</source>
         <translation>MP4: ширина и высота должны быть чётными (получено %1×%2)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="257"/>
-        <location filename="../ui/video_export.cpp" line="357"/>
+        <location filename="../ui/video_export.cpp" line="256"/>
+        <location filename="../ui/video_export.cpp" line="356"/>
         <source>Export Video</source>
         <translation>Экспорт видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="258"/>
+        <location filename="../ui/video_export.cpp" line="257"/>
         <source>MP4 videos (*.mp4)</source>
         <translation>Видео MP4 (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="265"/>
+        <location filename="../ui/video_export.cpp" line="264"/>
         <source>Export Video: Folder for the Frames</source>
         <translation>Экспорт видео: папка для кадров</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="272"/>
-        <location filename="../ui/video_export.cpp" line="483"/>
+        <location filename="../ui/video_export.cpp" line="271"/>
+        <location filename="../ui/video_export.cpp" line="479"/>
         <source>Cannot Export Video</source>
         <translation>Не удалось экспортировать видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="283"/>
+        <location filename="../ui/video_export.cpp" line="282"/>
         <source>A video is being exported already.</source>
         <translation>Видео уже экспортируется.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="286"/>
+        <location filename="../ui/video_export.cpp" line="285"/>
         <source>There is no run to export yet.</source>
         <translation>Ещё нет прогона для экспорта.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="291"/>
+        <location filename="../ui/video_export.cpp" line="290"/>
         <source>No folder or file was chosen.</source>
         <translation>Не выбраны ни папка, ни файл.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="294"/>
+        <location filename="../ui/video_export.cpp" line="293"/>
         <source>Could not create the folder %1.</source>
         <translation>Не удалось создать папку %1.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="296"/>
+        <location filename="../ui/video_export.cpp" line="295"/>
         <source>Could not write into the folder %1.</source>
         <translation>Не удалось записать в папку %1.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="299"/>
+        <location filename="../ui/video_export.cpp" line="298"/>
         <source>The folder %1 already holds frames (frame_*.png): choose another folder or remove them first.</source>
         <translation>В папке %1 уже есть кадры (frame_*.png): выберите другую папку или сначала удалите их.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="305"/>
+        <location filename="../ui/video_export.cpp" line="304"/>
         <source>Could not write %1: its folder does not exist or cannot be written.</source>
         <translation>Не удалось записать %1: папка не существует или недоступна для записи.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="308"/>
+        <location filename="../ui/video_export.cpp" line="307"/>
         <source>Could not write %1: it is a folder.</source>
         <translation>Не удалось записать %1: это папка.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="345"/>
+        <location filename="../ui/video_export.cpp" line="344"/>
         <source>Could not start ffmpeg: %1</source>
         <translation>Не удалось запустить ffmpeg: %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="354"/>
+        <location filename="../ui/video_export.cpp" line="353"/>
         <source>Exporting %n video frame(s)…</source>
         <translation>
             <numerusform>Экспорт %n кадра видео…</numerusform>
@@ -2028,12 +2033,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="354"/>
+        <location filename="../ui/video_export.cpp" line="353"/>
         <source>Cancel</source>
         <translation>Отмена</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="382"/>
+        <location filename="../ui/video_export.cpp" line="381"/>
         <source>The run was reset or went on from an earlier frame during the export, which stopped after %n frame(s).</source>
         <translation>
             <numerusform>Во время экспорта прогон был сброшен или продолжен с более раннего кадра; экспорт остановлен после %n кадра.</numerusform>
@@ -2042,27 +2047,26 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="402"/>
+        <location filename="../ui/video_export.cpp" line="401"/>
         <source>Finishing the video…</source>
         <translation>Завершение видео…</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="426"/>
+        <location filename="../ui/video_export.cpp" line="425"/>
         <source>The graphics driver could not draw a %1×%2 picture.</source>
         <translation>Графический драйвер не смог нарисовать изображение %1×%2.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="435"/>
         <source>Could not write %1: %2</source>
-        <translation>Не удалось записать %1: %2</translation>
+        <translation type="vanished">Не удалось записать %1: %2</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="459"/>
+        <location filename="../ui/video_export.cpp" line="455"/>
         <source>ffmpeg failed (exit code %1): %2</source>
         <translation>Ошибка ffmpeg (код выхода %1): %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="463"/>
+        <location filename="../ui/video_export.cpp" line="459"/>
         <source>Exported %n video frame(s) of %1×%2 at %3 fps to %4</source>
         <translation>
             <numerusform>Экспортирован %n кадр видео %1×%2 при %3 fps в %4</numerusform>
@@ -2071,7 +2075,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="477"/>
+        <location filename="../ui/video_export.cpp" line="473"/>
         <source>The %n frame(s) written before were left in %1.</source>
         <translation>
             <numerusform>%n уже записанный кадр оставлен в %1.</numerusform>
@@ -2080,12 +2084,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="495"/>
+        <location filename="../ui/video_export.cpp" line="491"/>
         <source>Video export cancelled; the unfinished video was removed.</source>
         <translation>Экспорт видео отменён; незаконченное видео удалено.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/video_export.cpp" line="496"/>
+        <location filename="../ui/video_export.cpp" line="492"/>
         <source>Video export cancelled after %n frame(s); they were left in %1.</source>
         <translation>
             <numerusform>Экспорт видео отменён после %n кадра; он оставлен в %1.</numerusform>
@@ -2097,72 +2101,72 @@
 <context>
     <name>carom::ui::VideoExportDialog</name>
     <message>
-        <location filename="../ui/video_export.cpp" line="81"/>
+        <location filename="../ui/video_export.cpp" line="80"/>
         <source>Export Video</source>
         <translation>Экспорт видео</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="93"/>
+        <location filename="../ui/video_export.cpp" line="92"/>
         <source>PNG images in a folder</source>
         <translation>Изображения PNG в папке</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="94"/>
+        <location filename="../ui/video_export.cpp" line="93"/>
         <source>MP4 video (ffmpeg)</source>
         <translation>Видео MP4 (ffmpeg)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="96"/>
+        <location filename="../ui/video_export.cpp" line="95"/>
         <source>The run is recorded from 0 to %1 s. Each video frame shows the recorded step that ended at its moment or last before it.</source>
         <translation>Прогон записан от 0 до %1 s. Каждый кадр видео показывает записанный шаг, закончившийся в его момент или последним перед ним.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="108"/>
+        <location filename="../ui/video_export.cpp" line="107"/>
         <source>MP4 needs ffmpeg, which was not found on the PATH (scripts/setup-debian.sh installs it); PNG images need nothing more.</source>
         <translation>Для MP4 нужен ffmpeg, но в PATH его нет (его устанавливает scripts/setup-debian.sh); для изображений PNG больше ничего не нужно.</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="118"/>
+        <location filename="../ui/video_export.cpp" line="117"/>
         <source>Start (s)</source>
         <translation>Начало (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="119"/>
+        <location filename="../ui/video_export.cpp" line="118"/>
         <source>End (s)</source>
         <translation>Конец (s)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="120"/>
+        <location filename="../ui/video_export.cpp" line="119"/>
         <source>Frames per second</source>
         <translation>Кадров в секунду</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="121"/>
+        <location filename="../ui/video_export.cpp" line="120"/>
         <source>Width (pixels)</source>
         <translation>Ширина (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="122"/>
+        <location filename="../ui/video_export.cpp" line="121"/>
         <source>Height (pixels)</source>
         <translation>Высота (пикселей)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="123"/>
+        <location filename="../ui/video_export.cpp" line="122"/>
         <source>Format</source>
         <translation>Формат</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="141"/>
+        <location filename="../ui/video_export.cpp" line="140"/>
         <source>Start: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Начало: должно быть числом секунд (получено «%1»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="142"/>
+        <location filename="../ui/video_export.cpp" line="141"/>
         <source>End: must be a number of seconds (got &quot;%1&quot;)</source>
         <translation>Конец: должен быть числом секунд (получено «%1»)</translation>
     </message>
     <message>
-        <location filename="../ui/video_export.cpp" line="144"/>
+        <location filename="../ui/video_export.cpp" line="143"/>
         <source>Frames per second: must be a whole number from %1 to %2 (got &quot;%3&quot;)</source>
         <translation>Кадров в секунду: должно быть целым числом от %1 до %2 (получено «%3»)</translation>
     </message>
