@@ -120,8 +120,8 @@ int main(int argc, char** argv) {
       QString error;
       const bool saved = window.grab().save(&png, "png") &&
                          carom::io::writeFileAtomically(path, png.data(), &error);
-      if (!saved) std::fprintf(stderr, "carom: cannot save %s: %s\n", qPrintable(path),
-                               qPrintable(error));
+      if (!saved)
+        std::fprintf(stderr, "carom: cannot save %s: %s\n", qPrintable(path), qPrintable(error));
       QApplication::exit(saved ? 0 : 1);
     });
   }

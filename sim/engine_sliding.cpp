@@ -174,8 +174,7 @@ int EventEngine::capAt(int i, int cylinder) const {
   // rounded coarser than the radius, as in boxFaceAt), nearer the cap than the side, as
   // CylinderShape::contact answers; an infinite cylinder has none.
   const double distance = shape.perpendicular(offset).norm();
-  if (!(distance < shape.radius) ||
-      !(std::abs(along) - shape.halfLength > distance - shape.radius))
+  if (!(distance < shape.radius) || !(std::abs(along) - shape.halfLength > distance - shape.radius))
     return -1;
   return firstCap_ + 2 * cylinder + (along > 0.0);
 }

@@ -156,7 +156,7 @@ class TestBoxes : public QObject {
       s.world.gravity = Vec3(0, -kG, 0);
       s.world.restitution = 0.5;
       s.world.method = Method(method);
-    s.boxes.push_back(makeBox({0, top - 1.0, 0}, {1e3, 1.0, 1e3}));
+      s.boxes.push_back(makeBox({0, top - 1.0, 0}, {1e3, 1.0, 1e3}));
       s.balls.push_back(makeBall({0, top + 0.5, 0}, {10, 0, 0}, 1e-6));
       Simulation sim(s);
       sim.advanceTo(until);

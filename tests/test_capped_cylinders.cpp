@@ -65,7 +65,7 @@ class TestCappedCylinders : public QObject {
       s.world.gravity = Vec3(0, -9.81, 0);
       s.world.restitution = 0.5;
       s.world.method = Method(method);
-    s.cylinders.push_back(makeCylinder({0, top - 1.0, 0}, Vec3::UnitY(), 1e3, 2.0));
+      s.cylinders.push_back(makeCylinder({0, top - 1.0, 0}, Vec3::UnitY(), 1e3, 2.0));
       s.balls.push_back(makeBall({0, top + 0.5, 0}, {10, 0, 0}, 1e-6));
       Simulation sim(s);
       sim.advanceTo(until);

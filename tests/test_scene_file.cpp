@@ -1369,8 +1369,9 @@ class SceneFileTest : public QObject {
     QVERIFY2(result.error.contains("balls[300000].velocity"), qPrintable(result.error));
     const qint64 after = residentBytes();
     QVERIFY(before > 0);
-    QVERIFY2(after - before < 32 << 20, qPrintable(QString("%1 MiB more resident after the refusal")
-                                                          .arg((after - before) >> 20)));
+    QVERIFY2(
+        after - before < 32 << 20,
+        qPrintable(QString("%1 MiB more resident after the refusal").arg((after - before) >> 20)));
   }
 };
 
