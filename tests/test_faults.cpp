@@ -1,16 +1,20 @@
 // The window under faults (issue 33), driven as a user would with keys and dialogs: a scene
 // saved to a full disk, Save As over a file on it, the crash-recovery copy when the disk fills,
-// and a file named in bytes that are not UTF-8. The disk is a real small tmpfs; where mounting
-// is not allowed (not root), those cases skip with the reason.
+// a file named in bytes that are not UTF-8, and a tiny ball typed far out while the run goes. The
+// disk is a real small tmpfs; where mounting is not allowed (not root), those cases skip with the
+// reason.
 
 #include "sim/io/file_names.h"
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "tests/small_filesystem.h"
+#include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
+#include "ui/simulation_controller.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -19,6 +23,7 @@
 
 #include <memory>
 
+using carom::Vec3;
 using carom::editor::SceneRecovery;
 using carom::testing::ModalAnswerer;
 
@@ -67,8 +72,19 @@ class TestFaults : public carom::testing::EditorFixture {
   void saveAsOverAFileOnAFullDisk();
   void recoveryCopyOnAFullDiskKeepsTheLastOne();
   void aFileNamedInLatin1OpensAndSaves();
+  void aTinyBallTypedFarOutRuns();
 
  private:
+  // Clicks into the Properties field, replaces its text as a user would, and presses Enter.
+  void type(const QString& name, const QString& text) {
+    auto* edit = window_->propertiesDock()->findChild<QLineEdit*>(name);
+    QVERIFY2(edit && edit->isVisible(), qPrintable(name));
+    QTest::mouseClick(edit, Qt::LeftButton);
+    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClick(edit, Qt::Key_Backspace);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+  }
   // Deletes the selected first ball with the key: one edit.
   void deleteTheFirstBall() {
     document().setSelection({{carom::editor::ObjectKind::Ball, 0}});
@@ -191,6 +207,34 @@ void TestFaults::aFileNamedInLatin1OpensAndSaves() {
   QCOMPARE(saved.scene->balls.size(), std::size_t{0});
   QCOMPARE(::access(bytes.constData(), R_OK), 0);
   QCOMPARE(::unlink(bytes.constData()), 0);  // QTemporaryDir cannot name it
+}
+
+// Issue 33: a 1 um ball whose position was typed to (300, 300, 300) while the scene ran killed
+// the window (SIGSEGV in the event engine's grid, which asked for more cells than an int holds)
+// and lost the unsaved edits.
+void TestFaults::aTinyBallTypedFarOutRuns() {
+  carom::Scene scene;
+  carom::Ball ball;
+  ball.radius = 1e-6;
+  ball.velocity = Vec3(1, 1, 1);
+  scene.balls.push_back(ball);
+  ball.position = Vec3(0.5, 0.5, 0.5);
+  ball.velocity = Vec3::Zero();
+  scene.balls.push_back(ball);
+  window_->openScene(scene, {}, "tiny");
+  window_->findChild<QAction*>("run")->trigger();
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.1);
+  document().setSelection({{carom::editor::ObjectKind::Ball, 1}});
+  for (const char* axis : {"position.x", "position.y", "position.z"}) type(axis, "300");
+  QCOMPARE(document().scene().balls[1].position, Vec3(300, 300, 300));
+  // The edited scene runs from its start, and on.
+  QTRY_VERIFY(window_->simulation().latest()->time < 0.1);
+  QTRY_VERIFY(window_->simulation().latest()->time > 0.5);
+  // Falling from where it was typed.
+  const Vec3 typed = window_->simulation().latest()->positions[1];
+  QVERIFY2(typed.x() == 300 && typed.z() == 300 && typed.y() < 300,
+           qPrintable(QString("%1 %2 %3").arg(typed.x()).arg(typed.y()).arg(typed.z())));
+  QVERIFY(window_->isWindowModified());
 }
 
 int main(int argc, char** argv) {
