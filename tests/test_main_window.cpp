@@ -16,6 +16,7 @@
 #include <QElapsedTimer>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QTest>
 #include <QThread>
@@ -125,6 +126,23 @@ class TestMainWindow : public QObject {
     const carom::Scene scene = magicRoom();
     for (std::size_t i = 0; i < scene.balls.size(); ++i)
       QVERIFY(reset->positions[i] == scene.balls[i].position);
+  }
+
+  // Issue 34: after Reset the status bar kept the old run's rate ("13 collisions/s" at t = 0,
+  // paused). The rate starts over with the run: none until the run has gone on again.
+  void collisionRateStartsOverAfterReset() {
+    const auto rate = [this] {
+      const QRegularExpressionMatch match =
+          QRegularExpression("(\\d+) collisions/s").match(window_->statusText());
+      return match.hasMatch() ? match.captured(1).toInt() : -1;
+    };
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    QTRY_VERIFY_WITH_TIMEOUT(rate() > 0, 10000);
+    QTest::keyClick(window_.get(), Qt::Key_R);
+    QVERIFY(waitForSnapshot(*window_,
+                            [](const SimulationSnapshot& s) { return !s.running && s.time == 0; }));
+    QTRY_VERIFY(window_->statusText().startsWith("t = 0.000 s"));
+    QCOMPARE(rate(), 0);
   }
 
   void timeStepKeysAndGravityAreLive() {

@@ -52,8 +52,10 @@ void StatusReadout::refresh() {
   if (!snapshot) return;
   const std::uint64_t collisions = snapshot->stats.collisions.total();
   if (snapshot->time < lastCollisionTime_ || collisions < lastCollisionCount_) {
-    lastCollisionTime_ = snapshot->time;  // after a reset
+    // After a reset: the old run's rate is not this one's, which is known once it has run.
+    lastCollisionTime_ = snapshot->time;
     lastCollisionCount_ = collisions;
+    collisionsPerSecond_ = 0.0;
     rateClock_.restart();
   } else if (const double simulated = snapshot->time - lastCollisionTime_;
              simulated >= kRateSeconds ||
