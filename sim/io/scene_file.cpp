@@ -2,6 +2,7 @@
 
 #include "sim/io/atomic_file.h"
 #include "sim/io/file_names.h"
+#include "sim/io/json_text.h"
 #include "sim/io/scene_format.h"
 #include "sim/io/scene_stream_reader.h"
 #include "sim/tolerances.h"
@@ -26,7 +27,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -41,21 +41,6 @@ namespace {
 using format::kFirstVersionWithBoxes;
 constexpr int kFormatVersion = format::kVersion;
 const QString kFormatName = QString::fromLatin1(format::kName.data(), format::kName.size());
-
-QStringList keyList(std::span<const std::string_view> keys) {
-  QStringList list;
-  for (std::string_view key : keys) list << QString::fromLatin1(key.data(), qsizetype(key.size()));
-  return list;
-}
-
-const QStringList kTopKeys = keyList(format::kTopKeys);
-const QStringList kTopKeysVersion1 = keyList(format::kTopKeysVersion1);
-const QStringList kWorldKeys = keyList(format::kWorldKeys);
-const QStringList kPlaneKeys = keyList(format::kPlaneKeys);
-const QStringList kCylinderKeys = keyList(format::kCylinderKeys);
-const QStringList kCylinderKeysVersion1 = keyList(format::kCylinderKeysVersion1);
-const QStringList kBoxKeys = keyList(format::kBoxKeys);
-const QStringList kBallKeys = keyList(format::kBallKeys);
 
 // Parsing stops at the first problem; it travels to parseScene as this exception.
 struct ParseFailure {
@@ -85,58 +70,6 @@ QString describeType(const QJsonValue& value) {
       break;
   }
   return "nothing";
-}
-
-// The shortest text that reads back as the same double, as QByteArray::number(value, 'g',
-// QLocale::FloatingPointShortest) spells it (fixed unless scientific is shorter, and a nought
-// without a sign), without its allocations: a million balls hold seven million numbers.
-// JSON has no infinities or NaN, so a scene holding one is written with null there (and refused
-// when read back).
-void appendNumber(std::string& out, double value) {
-  if (!std::isfinite(value)) {
-    out += "null";
-    return;
-  }
-  if (value == 0.0) {
-    out += '0';
-    return;
-  }
-  char text[32];
-  const char* end =
-      std::to_chars(text, text + sizeof text, value, std::chars_format::scientific).ptr;
-  const char* mantissa = text[0] == '-' ? text + 1 : text;
-  char digits[24];
-  int count = 0;
-  const char* e = mantissa;
-  for (; *e != 'e'; ++e)
-    if (*e != '.') digits[count++] = *e;
-  int exponent = 0;
-  std::from_chars(e[1] == '+' ? e + 2 : e + 1, end, exponent);
-  const auto scientificLength = end - mantissa;
-  const int fixedLength = exponent < 0            ? 1 - exponent + count
-                          : exponent + 1 >= count ? exponent + 1
-                                                  : count + 1;
-  if (mantissa != text) out += '-';
-  if (fixedLength > scientificLength) {
-    out.append(mantissa, end);
-  } else if (exponent < 0) {
-    out += "0.";
-    out.append(static_cast<std::size_t>(-exponent - 1), '0');
-    out.append(digits, static_cast<std::size_t>(count));
-  } else if (exponent + 1 >= count) {
-    out.append(digits, static_cast<std::size_t>(count));
-    out.append(static_cast<std::size_t>(exponent + 1 - count), '0');
-  } else {
-    out.append(digits, static_cast<std::size_t>(exponent + 1));
-    out += '.';
-    out.append(digits + exponent + 1, static_cast<std::size_t>(count - exponent - 1));
-  }
-}
-
-QByteArray numberText(double value) {
-  std::string text;
-  appendNumber(text, value);
-  return QByteArray::fromStdString(text);
 }
 
 QString quoted(const QString& text) {
@@ -390,64 +323,6 @@ std::pair<int, int> lineAndColumn(const QByteArray& text, qsizetype offset) {
     }
   }
   return {line, column};
-}
-
-// Writing: a fixed key order and one line per plane, cylinder and ball keep files readable and
-// make saving deterministic, so that saving a loaded file again gives the same bytes.
-
-QByteArray jsonText(const QJsonValue& value) {
-  // QJsonDocument holds only arrays and objects: wrap the value in an array and unwrap it.
-  const QByteArray text = QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact);
-  return text.mid(1, text.size() - 2);
-}
-
-QByteArray jsonString(std::string_view text) {
-  return jsonText(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
-}
-
-QByteArray jsonVector(const Vec3& v) {
-  return '[' + numberText(v.x()) + ", " + numberText(v.y()) + ", " + numberText(v.z()) + ']';
-}
-
-// The "key": value pairs of one object being written.
-class JsonFields {
- public:
-  void add(std::string_view key, const QByteArray& value) {
-    fields_ << jsonString(key) + ": " + value;
-  }
-  // The unknown keys kept in `extra`, after the known ones.
-  void addExtra(const std::string& extra, const QStringList& knownKeys) {
-    if (extra.empty()) return;
-    const QJsonObject object = QJsonDocument::fromJson(QByteArray::fromStdString(extra)).object();
-    for (auto it = object.begin(); it != object.end(); ++it) {
-      // A key that a field also writes would appear twice; the field wins.
-      if (knownKeys.contains(it.key())) continue;
-      fields_ << jsonText(it.key()) + ": " + jsonText(it.value());
-    }
-  }
-  void addInfo(const ObjectInfo& info) {
-    if (info.restitution) add("restitution", numberText(*info.restitution));
-    if (!info.color.empty()) add("color", jsonString(info.color));
-  }
-
-  QByteArray oneLine() const { return '{' + fields_.join(", ") + '}'; }
-  QByteArray indented(const QByteArray& indent) const {
-    return "{\n" + indent + "  " + fields_.join(",\n" + indent + "  ") + '\n' + indent + '}';
-  }
-
- private:
-  QByteArrayList fields_;
-};
-
-JsonFields startFields(const ObjectInfo& info) {
-  JsonFields fields;
-  if (!info.name.empty()) fields.add("name", jsonString(info.name));
-  return fields;
-}
-
-QByteArray listText(const QByteArrayList& items) {
-  if (items.isEmpty()) return "[]";
-  return "[\n    " + items.join(",\n    ") + "\n  ]";
 }
 
 // What a document holds, counted before it is parsed: an upper bound on its values (one more
@@ -717,181 +592,6 @@ SceneLoadResult loadSceneFile(const QString& fileName) {
   }
   if (!result.scene) releaseFreeMemory();
   return result;
-}
-
-namespace {
-
-void appendVector(std::string& out, const Vec3& v) {
-  out += '[';
-  appendNumber(out, v.x());
-  out += ", ";
-  appendNumber(out, v.y());
-  out += ", ";
-  appendNumber(out, v.z());
-  out += ']';
-}
-
-// A string as Qt's JSON writer quotes it, taken directly when it needs no escape.
-void appendString(std::string& out, const std::string& text) {
-  const bool plain = std::all_of(text.begin(), text.end(), [](char c) {
-    return c >= 0x20 && c < 0x7f && c != '"' && c != '\\';
-  });
-  if (plain) {
-    out += '"';
-    out += text;
-    out += '"';
-  } else {
-    out += jsonString(text).toStdString();
-  }
-}
-
-// A ball's line, as JsonFields writes it.
-void appendBall(std::string& out, const Ball& ball) {
-  if (!ball.extra.empty()) {
-    // Rare: the unknown keys go through Qt's JSON as they came.
-    JsonFields fields = startFields(ball);
-    fields.add("position", jsonVector(ball.position));
-    fields.add("velocity", jsonVector(ball.velocity));
-    fields.add("radius", numberText(ball.radius));
-    fields.add("mass", numberText(ball.mass));
-    fields.addInfo(ball);
-    fields.addExtra(ball.extra, kBallKeys);
-    out += fields.oneLine().toStdString();
-    return;
-  }
-  out += '{';
-  if (!ball.name.empty()) {
-    out += "\"name\": ";
-    appendString(out, ball.name);
-    out += ", ";
-  }
-  out += "\"position\": ";
-  appendVector(out, ball.position);
-  out += ", \"velocity\": ";
-  appendVector(out, ball.velocity);
-  out += ", \"radius\": ";
-  appendNumber(out, ball.radius);
-  out += ", \"mass\": ";
-  appendNumber(out, ball.mass);
-  if (ball.restitution) {
-    out += ", \"restitution\": ";
-    appendNumber(out, *ball.restitution);
-  }
-  if (!ball.color.empty()) {
-    out += ", \"color\": ";
-    appendString(out, ball.color);
-  }
-  out += '}';
-}
-
-// Writes the scene's text to `write(const char*, size)` in pieces: all but the balls from
-// JsonFields, the balls line by line (a million of them go to a file without the whole text in
-// memory).
-template <typename Write>
-void writeScene(const Scene& scene, Write&& write) {
-  JsonFields top;
-  top.add("format", jsonString(format::kName));
-  const bool versionOne =
-      scene.boxes.empty() && std::none_of(scene.cylinders.begin(), scene.cylinders.end(),
-                                          [](const Cylinder& c) { return c.length.has_value(); });
-  top.add("version", QByteArray::number(versionOne ? 1 : kFirstVersionWithBoxes));
-  // Unknown top-level keys such as "units" go right after the header, where a reader looks.
-  // In version 1 "boxes" is one of them.
-  top.addExtra(scene.extra, versionOne ? kTopKeysVersion1 : kTopKeys);
-
-  const World& world = scene.world;
-  JsonFields worldFields;
-  worldFields.add("gravity", jsonVector(world.gravity));
-  worldFields.add("timeStep", numberText(world.timeStep));
-  worldFields.add("restitution", numberText(world.restitution));
-  worldFields.add("method", jsonString(methodName(world.method)));
-  worldFields.add("integrator", jsonString(integratorName(world.integrator)));
-  worldFields.addExtra(world.extra, kWorldKeys);
-  top.add("world", worldFields.indented("  "));
-
-  QByteArrayList planes;
-  for (const Plane& plane : scene.planes) {
-    JsonFields fields = startFields(plane);
-    fields.add("point", jsonVector(plane.point));
-    fields.add("normal", jsonVector(plane.normal));
-    fields.addInfo(plane);
-    fields.addExtra(plane.extra, kPlaneKeys);
-    planes << fields.oneLine();
-  }
-  top.add("planes", listText(planes));
-
-  QByteArrayList cylinders;
-  for (const Cylinder& cylinder : scene.cylinders) {
-    JsonFields fields = startFields(cylinder);
-    fields.add("point", jsonVector(cylinder.point));
-    fields.add("axis", jsonVector(cylinder.axis));
-    fields.add("radius", numberText(cylinder.radius));
-    if (cylinder.length) fields.add("length", numberText(*cylinder.length));
-    fields.addInfo(cylinder);
-    fields.addExtra(cylinder.extra, versionOne ? kCylinderKeysVersion1 : kCylinderKeys);
-    cylinders << fields.oneLine();
-  }
-  top.add("cylinders", listText(cylinders));
-
-  if (!scene.boxes.empty()) {
-    QByteArrayList boxes;
-    for (const Box& box : scene.boxes) {
-      JsonFields fields = startFields(box);
-      fields.add("center", jsonVector(box.center));
-      fields.add("halfExtents", jsonVector(box.halfExtents));
-      if (box.rotation)
-        fields.add("rotation", '[' + numberText(box.rotation->axis.x()) + ", " +
-                                   numberText(box.rotation->axis.y()) + ", " +
-                                   numberText(box.rotation->axis.z()) + ", " +
-                                   numberText(box.rotation->degrees) + ']');
-      fields.addInfo(box);
-      fields.addExtra(box.extra, kBoxKeys);
-      boxes << fields.oneLine();
-    }
-    top.add("boxes", listText(boxes));
-  }
-
-  // The balls are the last field: the text up to them, then theirs, then the closing brace.
-  QByteArray head = top.indented("");
-  head.chop(2);  // "\n}"
-  head += scene.balls.empty() ? ",\n  \"balls\": []" : ",\n  \"balls\": [\n    ";
-  write(head.constData(), static_cast<std::size_t>(head.size()));
-  constexpr std::size_t kPiece = 1 << 20;
-  std::string piece;
-  piece.reserve(kPiece + 4096);
-  for (std::size_t i = 0; i < scene.balls.size(); ++i) {
-    if (i > 0) piece += ",\n    ";
-    appendBall(piece, scene.balls[i]);
-    if (piece.size() >= kPiece) {
-      write(piece.data(), piece.size());
-      piece.clear();
-    }
-  }
-  piece += scene.balls.empty() ? "\n}\n" : "\n  ]\n}\n";
-  write(piece.data(), piece.size());
-}
-
-}  // namespace
-
-QByteArray serializeScene(const Scene& scene) {
-  QByteArray text;
-  writeScene(scene, [&text](const char* data, std::size_t size) {
-    text.append(data, static_cast<qsizetype>(size));
-  });
-  return text;
-}
-
-bool saveSceneFile(const Scene& scene, const QString& fileName, QString* error) {
-  AtomicFile file(fileName);
-  bool written = file.open();
-  if (written) {
-    writeScene(scene, [&](const char* data, std::size_t size) {
-      written = written && file.write(data, size);
-    });
-    written = written && file.commit();
-  }
-  if (error) *error = written ? QString() : fileName + ": cannot save: " + file.errorString();
-  return written;
 }
 
 }  // namespace carom::io
