@@ -11,9 +11,11 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QChartView>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QLineSeries>
 #include <QMenuBar>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -143,6 +145,32 @@ class TestMainWindow : public QObject {
                             [](const SimulationSnapshot& s) { return !s.running && s.time == 0; }));
     QTRY_VERIFY(window_->statusText().startsWith("t = 0.000 s"));
     QCOMPARE(rate(), 0);
+  }
+
+  // Issue 34: "9463731 collisions/s" after a pause. The rate fell back to real time when two
+  // seconds had passed since its last sample, paused ones included, so one Step after a pause
+  // gave the collisions of one time step divided by it. Paused time is no run time.
+  void collisionRateIsNotTakenOverOneStepAfterAPause() {
+    carom::Scene scene;
+    scene.planes.emplace_back();  // the floor, y = 0
+    carom::Ball ball;
+    ball.radius = 0.1;
+    ball.position = carom::Vec3(0, 0.1 + 1e-3, 0);  // hits the floor within the first step
+    ball.velocity = carom::Vec3(0, -1, 0);
+    scene.balls.push_back(ball);
+    window_->openScene(scene, {}, "bounce");
+    QVERIFY(waitForSnapshot(*window_,
+                            [](const SimulationSnapshot& s) { return s.positions.size() == 1; }));
+    QTest::qWait(2200);
+    QTest::keyClick(window_.get(), Qt::Key_S);
+    auto stepped = waitForSnapshot(
+        *window_, [](const SimulationSnapshot& s) { return s.stats.collisions.total() == 1; });
+    QVERIFY(stepped);
+    QTRY_VERIFY(!window_->statusText().startsWith("t = 0.000 s"));
+    const QRegularExpressionMatch match =
+        QRegularExpression("(\\d+) collisions/s").match(window_->statusText());
+    QVERIFY(match.hasMatch());
+    QCOMPARE(match.captured(1).toInt(), 0);  // not measured yet: 1 / dt before
   }
 
   void timeStepKeysAndGravityAreLive() {
@@ -339,6 +367,34 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() > 20, 10000);
     QTest::keyClick(window_.get(), Qt::Key_R);  // a reset starts the plot over
     QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() <= 1, 10000);
+  }
+
+  // Issue 34: after File > New, adding a ball and Run, the plot started at 0 J (the empty
+  // scene's energy at t = 0) and rose to the ball's in one point. A restart starts it over.
+  void energyPlotStartsAtTheEditedScenesEnergy() {
+    QTest::keySequence(window_.get(), QKeySequence::New);
+    QVERIFY(
+        waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.positions.empty(); }));
+    window_->findChild<QAction*>("toolAddBall")->trigger();
+    auto* view = qobject_cast<carom::render::SceneView*>(window_->view());
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
+                      view->project(carom::Vec3(0, 0, 0)).toPoint());
+    auto added = waitForSnapshot(*window_, [](const SimulationSnapshot& s) {
+      return s.positions.size() == 1 && s.initialEnergy > 0.0;
+    });
+    QVERIFY(added);
+    QTest::keyClick(window_.get(), Qt::Key_Space);
+    carom::ui::EnergyPlot* plot = window_->energyPlot();
+    QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() > 5, 10000);
+    const QList<QAbstractSeries*> series = plot->findChild<QChartView*>()->chart()->series();
+    QCOMPARE(series.size(), 3);
+    auto* total = qobject_cast<QLineSeries*>(series[2]);
+    QVERIFY(total);
+    const double first = total->at(0).y();
+    QVERIFY2(std::abs(first - added->initialEnergy) <= 1e-9 * added->initialEnergy,
+             qPrintable(QString("first point %1 J, the scene's energy %2 J")
+                            .arg(first)
+                            .arg(added->initialEnergy)));
   }
 
   void guiNeverWaitsOnThePhysics() {

@@ -127,11 +127,7 @@ MainWindow::MainWindow(QWidget* parent)
   files_ = new SceneFiles(document_, this, this);
   connect(files_, &SceneFiles::message, this, &MainWindow::showMessage);
   connect(files_, &SceneFiles::sceneAboutToOpen, this, [this] { playAction_->setChecked(false); });
-  connect(files_, &SceneFiles::sceneOpened, this, [this] {
-    view_->frameScene();
-    energyPlot_->clear();
-    status_->restart();
-  });
+  connect(files_, &SceneFiles::sceneOpened, this, [this] { view_->frameScene(); });
   // Pasted and duplicated balls move to the right of the screen, as the camera looks.
   editActions_ = new EditActions(
       document_,
@@ -600,6 +596,12 @@ void MainWindow::changeTimeStep(double factor) {
 void MainWindow::showSnapshot() {
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->take();
   if (!snapshot) return;
+  if (snapshot->startNumber != shownStart_) {
+    // Another scene or an edit: the plot and the rates of the run before are not this one's.
+    shownStart_ = snapshot->startNumber;
+    energyPlot_->clear();
+    status_->restart();
+  }
   view_->setBallPositions(snapshot->positions);
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);

@@ -136,6 +136,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SimulationController> simulation_;
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
+  std::uint64_t shownStart_ = 0;        // the start of the run whose snapshots the window shows
   BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
   ImageExport* imageExport_ = nullptr;  // File > Export Image
   VideoExport* videoExport_ = nullptr;  // File > Export Video

@@ -37,8 +37,8 @@ class StatusReadout : public QLabel {
   // Numbers changing sixty times a second cannot be read, and laying out the status bar each
   // frame costs the GUI thread.
   static constexpr int kRefreshMilliseconds = 200;
-  // The collision rate is taken over at least this much simulated time, or of real time when
-  // the run is slower (a million balls simulate 0.01 s in a few seconds).
+  // The collision rate is taken over at least this much simulated time, or of real time spent
+  // running when the run is slower (a million balls simulate 0.01 s in a few seconds).
   static constexpr double kRateSeconds = 0.5;
   static constexpr qint64 kRateMilliseconds = 2000;
 
