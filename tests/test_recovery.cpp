@@ -24,9 +24,12 @@ constexpr int kChildIntervalMilliseconds = 200;
 
 // The child: opens `file`, moves its ball, says "autosaved" once the copy is written, and
 // waits to be killed.
+// `file` is a scene file, or "example:" and an example's name.
 int runChild(const QString& file) {
   MainWindow window;
-  if (!window.openFile(file, false)) return 3;
+  const bool opened = file.startsWith("example:") ? window.openExample(file.mid(8), false)
+                                                  : window.openFile(file, false);
+  if (!opened) return 3;
   window.recovery()->setInterval(kChildIntervalMilliseconds);
   QObject::connect(window.recovery(), &SceneRecovery::autosaved, [] {
     std::printf("autosaved\n");
@@ -52,6 +55,7 @@ class TestRecovery : public carom::testing::EditorFixture {
   void notNowKeepsTheCopy();
   void aCleanEndLeavesNothing();
   void copiesFollowTheUnsavedState();
+  void aRecoveredExampleKeepsItsTitle();
 
  private:
   // Starts the child on `file` and kills it once it has autosaved.
@@ -65,7 +69,8 @@ void TestRecovery::init() {
 }
 
 void TestRecovery::crashAChild(const QString& file) {
-  QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), file, nullptr));
+  if (!file.startsWith("example:"))
+    QVERIFY(carom::io::saveSceneFile(carom::testing::floorScene(), file, nullptr));
   QProcess child;
   child.start(QCoreApplication::applicationFilePath(), {"--child", file});
   QVERIFY(child.waitForStarted());
@@ -97,6 +102,20 @@ void TestRecovery::killedEditorsWorkIsOfferedBack() {
   // Saving puts it in the file.
   QVERIFY(window_->save());
   QCOMPARE(carom::io::loadSceneFile(file).scene->balls[0].name, std::string("unsaved work"));
+}
+
+// Issue 34: an edited example came back as "untitled*": the copy's note kept only the file,
+// which an example has none of.
+void TestRecovery::aRecoveredExampleKeepsItsTitle() {
+  crashAChild("example:magic-room");
+  DialogAnswerer answer(QMessageBox::Yes);
+  QVERIFY(window_->offerRecovery());
+  QVERIFY2(answer.text().contains("Magic room"), qPrintable(answer.text()));
+  QCOMPARE(document().scene().balls[0].name, std::string("unsaved work"));
+  QVERIFY(document().fileName().isEmpty());
+  QCOMPARE(document().displayName(), QString("Magic room"));
+  QVERIFY(document().isModified());
+  QCOMPARE(window_->windowTitle().section(" — ", 0, 0), QString("Magic room[*]"));
 }
 
 void TestRecovery::declinedRecoveryIsGone() {

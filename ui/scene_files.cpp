@@ -102,9 +102,10 @@ void SceneFiles::retranslate() {
 
 bool SceneFiles::offerRecovery() {
   for (const editor::SceneRecovery::Orphan& orphan : editor::SceneRecovery::orphans()) {
-    const QString name = orphan.originalFile.isEmpty()
-                             ? tr("an unsaved scene")
-                             : QDir::toNativeSeparators(orphan.originalFile);
+    const QString name = !orphan.originalFile.isEmpty()
+                             ? QDir::toNativeSeparators(orphan.originalFile)
+                         : !orphan.title.isEmpty() ? tr("“%1”").arg(orphan.title)
+                                                   : tr("an unsaved scene");
     QMessageBox box(QMessageBox::Question, tr("Recover Scene"),
                     tr("Carom did not close properly while %1 had unsaved changes. The copy "
                        "saved at %2 can be recovered.")
@@ -127,7 +128,7 @@ bool SceneFiles::offerRecovery() {
     }
     editor::SceneRecovery::discard(orphan);
     if (!recover) continue;
-    openScene(*loaded.scene, orphan.originalFile);
+    openScene(*loaded.scene, orphan.originalFile, orphan.title);
     document_->markUnsaved();
     return true;
   }

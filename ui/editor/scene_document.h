@@ -33,6 +33,7 @@ class SceneDocument : public QObject {
   void reset(Scene scene, const QString& fileName, const QString& title = {});
   // Renames a scene that has no file yet (an example's title in another language).
   void setTitle(const QString& title);
+  QString title() const { return title_; }
   // What File > New gives: the default world and a floor at y = 0 to build on.
   static Scene newScene();
   // After a successful save to `fileName`: the current state becomes the unmodified one.

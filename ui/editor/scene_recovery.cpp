@@ -79,9 +79,11 @@ bool SceneRecovery::autosave() {
   QString error;
   const bool written =
       io::saveSceneFile(document_->scene(), copyFile(), &error) &&
-      io::writeFileAtomically(
-          pathOf(id_, kNoteSuffix),
-          QJsonDocument(QJsonObject{{"original", document_->fileName()}}).toJson(), &error);
+      io::writeFileAtomically(pathOf(id_, kNoteSuffix),
+                              QJsonDocument(QJsonObject{{"original", document_->fileName()},
+                                                        {"title", document_->title()}})
+                                  .toJson(),
+                              &error);
   if (!written) {
     // The system's reason alone, the part after the file's name: the copy's path means nothing
     // to the user.
@@ -105,11 +107,16 @@ QList<SceneRecovery::Orphan> SceneRecovery::orphans() {
   for (const QString& scene : scenes) {
     const QString id = scene.chopped(int(qstrlen(kSceneSuffix)));
     if (alive(id)) continue;
-    Orphan orphan{
-        id, pathOf(id, kSceneSuffix), {}, QFileInfo(pathOf(id, kSceneSuffix)).lastModified()};
+    Orphan orphan;
+    orphan.id = id;
+    orphan.sceneFile = pathOf(id, kSceneSuffix);
+    orphan.saved = QFileInfo(orphan.sceneFile).lastModified();
     QFile note(pathOf(id, kNoteSuffix));
-    if (note.open(QIODevice::ReadOnly))
-      orphan.originalFile = QJsonDocument::fromJson(note.readAll()).object()["original"].toString();
+    if (note.open(QIODevice::ReadOnly)) {
+      const QJsonObject said = QJsonDocument::fromJson(note.readAll()).object();
+      orphan.originalFile = said["original"].toString();
+      orphan.title = said["title"].toString();
+    }
     found.push_back(orphan);
   }
   return found;

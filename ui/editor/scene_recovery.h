@@ -4,7 +4,8 @@
 //
 // Each session owns three files in the recovery folder, named by a session id: a lock held
 // while it runs (QLockFile, which tells a dead owner from a live one), the scene, and a note of
-// the file the scene came from. A clean exit removes them.
+// the file the scene came from (or the title of one that has no file). A clean exit removes
+// them.
 
 #include <QDateTime>
 #include <QList>
@@ -41,6 +42,7 @@ class SceneRecovery : public QObject {
     QString sceneFile;     // the autosaved scene
     QString originalFile;  // where the user's scene lives; empty if it was never saved
     QDateTime saved;
+    QString title;  // what a scene without a file was called (an example's title)
   };
   // Newest first.
   static QList<Orphan> orphans();
