@@ -40,17 +40,6 @@ struct Pilot {
 
 }  // namespace
 
-std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance) {
-  std::vector<ValidationError> errors;
-  const auto check = [&errors](const char* path, double value) {
-    if (!std::isfinite(value) || !(value > 0.0))
-      errors.push_back({path, "must be a number above zero (got " + number(value) + ")"});
-  };
-  check("tolerance.energy", tolerance.energyPerSecond);
-  check("tolerance.penetration", tolerance.penetrationFraction);
-  return errors;
-}
-
 bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
                     const AccuracyTolerance& tolerance) {
   return escaped == 0 && energyErrorPerSecond <= tolerance.energyPerSecond &&

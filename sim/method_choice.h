@@ -14,15 +14,6 @@
 
 namespace carom {
 
-struct AccuracyTolerance {
-  // Relative energy error per simulated second, by EnergyYardstick (accuracy_study.h).
-  double energyPerSecond = 1e-3;
-  // The deepest penetration, as a fraction of the smallest ball's radius.
-  double penetrationFraction = 0.05;
-};
-
-// Paths such as "tolerance.energy"; empty when both are finite and above zero.
-std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance);
 // Energy error (EnergyYardstick) and penetration within the tolerance, and no ball lost.
 bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
                     const AccuracyTolerance& tolerance);

@@ -76,12 +76,25 @@ struct Box : ObjectInfo {
   friend bool operator==(const Box&, const Box&) = default;
 };
 
+// What method "auto" asks of the setting it chooses (sim/method_choice.h).
+struct AccuracyTolerance {
+  // Relative energy error per simulated second, by EnergyYardstick (accuracy_study.h).
+  double energyPerSecond = 1e-3;
+  // The deepest penetration, as a fraction of the smallest ball's radius.
+  double penetrationFraction = 0.05;
+  friend bool operator==(const AccuracyTolerance&, const AccuracyTolerance&) = default;
+};
+
 struct World {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);
   double timeStep = 1.0 / 60.0;
   double restitution = 1.0;
   Method method = Method::Exact;
   Integrator integrator = Integrator::SymplecticEuler;
+  // Method "auto": the window and carom-cli choose method, integrator and step for this
+  // tolerance with a pilot of the scene. The three fields above then hold the latest choice,
+  // or what the pilot starts from; the physics reads only them.
+  std::optional<AccuracyTolerance> autoMethod;
   std::string extra;
   friend bool operator==(const World&, const World&) = default;
 };

@@ -127,6 +127,11 @@ class FieldChecker {
                      formatNumber(value) + ")");
   }
 
+  void aboveZero(std::string_view path, double value) {
+    if (!std::isfinite(value) || !(value > 0.0))
+      fail(path, "must be a number above zero (got " + formatNumber(value) + ")");
+  }
+
   void restitution(std::string_view path, const std::optional<double>& value) {
     if (!value) return;
     if (!std::isfinite(*value)) return fail(path, "must be finite");
@@ -215,6 +220,10 @@ void checkWorld(const World& world, ErrorList& errors) {
   check.vector(".gravity", world.gravity);
   check.positiveBetween(".timeStep", world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
   check.restitution(".restitution", world.restitution);
+  if (world.autoMethod) {
+    check.aboveZero(".tolerance[0]", world.autoMethod->energyPerSecond);
+    check.aboveZero(".tolerance[1]", world.autoMethod->penetrationFraction);
+  }
 }
 
 bool checkCount(std::string_view list, std::size_t count, std::size_t limit, ErrorList& errors) {
@@ -593,6 +602,14 @@ std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxEr
 std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors) {
   ErrorList errors(maxErrors);
   checkWorld(world, errors);
+  return errors.take();
+}
+
+std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance) {
+  ErrorList errors(2);
+  FieldChecker check(&errors, "tolerance");
+  check.aboveZero(".energy", tolerance.energyPerSecond);
+  check.aboveZero(".penetration", tolerance.penetrationFraction);
   return errors.take();
 }
 

@@ -46,6 +46,9 @@ struct SceneCounts {
 std::vector<ValidationError> validateCounts(const SceneCounts& counts);
 // The world's settings alone (gravity, time step, restitution).
 std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors = 20);
+// A tolerance given on its own (carom-cli --tolerance): paths "tolerance.energy" and
+// "tolerance.penetration"; the same rule as a scene's world.tolerance.
+std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance);
 
 // Characters (Unicode code points) of UTF-8 text: the unit of the names' limit.
 std::size_t characterCount(std::string_view utf8);

@@ -749,6 +749,40 @@ class TestCli : public QObject {
     QVERIFY2(run.out.contains("of the run's"), qPrintable(run.describe()));
   }
 
+  // A scene saved under method auto runs under the pilot's choice for its own tolerance;
+  // --tolerance overrides it, a method given runs that method, and --integrator alone is refused.
+  void aSceneSavedUnderAutoRunsAuto() {
+    QFile room(magicRoom());
+    QVERIFY(room.open(QIODevice::ReadOnly));
+    QByteArray text = room.readAll();
+    QVERIFY(text.contains(R"("method": "exact")"));
+    text.replace(R"("method": "exact")", R"("method": "auto", "tolerance": [0.02, 0.2])");
+    const QString file = writeFile("auto.json", text);
+    const CliRun run = runCli({"run", file, "--duration", "5", "--json"});
+    VERIFY_EXIT(run, 0);
+    const QJsonObject tolerance =
+        QJsonDocument::fromJson(run.out).object()["auto"].toObject()["tolerance"].toObject();
+    QCOMPARE(tolerance["energyPerSecond"].toDouble(), 0.02);
+    QCOMPARE(tolerance["penetrationFraction"].toDouble(), 0.2);
+    const CliRun tighter = runCli(
+        {"run", file, "--duration", "5", "--method", "auto", "--tolerance", "0.01", "--json"});
+    VERIFY_EXIT(tighter, 0);
+    QCOMPARE(QJsonDocument::fromJson(tighter.out)
+                 .object()["auto"]
+                 .toObject()["tolerance"]
+                 .toObject()["energyPerSecond"]
+                 .toDouble(),
+             0.01);
+    const CliRun swept = runCli({"run", file, "--duration", "1", "--method", "swept", "--json"});
+    VERIFY_EXIT(swept, 0);
+    QVERIFY(!QJsonDocument::fromJson(swept.out).object().contains("auto"));
+    QCOMPARE(QJsonDocument::fromJson(swept.out).object()["method"].toString(), QString("swept"));
+    const CliRun integrator = runCli({"run", file, "--integrator", "velocity-verlet"});
+    VERIFY_EXIT(integrator, 2);
+    QVERIFY2(integrator.err.contains("the scene's method is auto"),
+             qPrintable(integrator.describe()));
+  }
+
   void autoWithNoSettingMeetingTheTolerance() {
     // Below round-off: nothing meets it (the largest energy error over the pilot is a round-off
     // at least for every setting; test_method_choice checks this for pilots of many lengths).

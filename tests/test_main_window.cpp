@@ -3,6 +3,7 @@
 #include "sim/io/scene_file.h"
 #include "sim/scene_builders.h"
 #include "ui/accuracy_window.h"
+#include "ui/editor/scene_document.h"
 #include "ui/energy_plot.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
@@ -20,9 +21,12 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
 #include <QTimer>
+#include <QUndoStack>
+#include <QUndoView>
 
 using carom::ui::MainWindow;
 
@@ -290,6 +294,47 @@ class TestMainWindow : public QObject {
     QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) {
       return s.world.method == carom::Method::Exact;
     }));
+  }
+
+  // Issue 34: saved and reopened, a scene run under auto said "exact"; auto's explanation was in
+  // the status line alone, cut to its width. Auto is the world's and saved with it; the History
+  // names each choice and the method box's tooltip explains the last.
+  void autoMethodIsKeptOnSaveAndReopen() {
+    QTemporaryDir folder;
+    const QString file = folder.filePath("room.carom");
+    carom::Scene room = magicRoom();
+    // A setting auto will not keep: explicit Euler gains energy at this step.
+    room.world.method = carom::Method::Discrete;
+    room.world.integrator = carom::Integrator::ExplicitEuler;
+    room.world.timeStep = 0.05;
+    window_->openScene(room, file);
+    auto* method = window_->findChild<QComboBox*>("worldMethod");
+    auto* accuracy = window_->findChild<QDoubleSpinBox*>("accuracy");
+    QVERIFY(method && accuracy);
+    const int automatic = method->count() - 1;
+    method->setCurrentIndex(automatic);
+    QTRY_VERIFY(accuracy->isVisible());
+    const QUndoStack* stack = window_->document()->undoStack();
+    QTRY_VERIFY_WITH_TIMEOUT(stack->text(stack->count() - 1).startsWith("Auto: "), 30000);
+    QVERIFY2(window_->statusMessage().startsWith("Auto chose"),
+             qPrintable(window_->statusMessage()));
+    QVERIFY2(method->toolTip().contains("the cheapest setting with an energy error under"),
+             qPrintable(method->toolTip()));
+    QVERIFY(window_->findChild<QUndoView*>());  // the History shows the stack's texts
+    accuracy->setValue(0.01);
+    QVERIFY(window_->save());
+    window_->showMessage(QString());
+    window_->openScene(magicRoom(), {}, "magic-room");  // something else between
+    QCOMPARE(method->currentIndex(), 0);
+    QTRY_VERIFY(!accuracy->isVisible());
+    QVERIFY(window_->openFile(file, false));
+    QCOMPARE(method->currentIndex(), automatic);
+    QTRY_VERIFY(accuracy->isVisible());
+    QCOMPARE(accuracy->value(), 0.01);
+    QCOMPARE(window_->document()->scene().world.autoMethod->energyPerSecond, 0.01);
+    // Opened under auto, it chooses again.
+    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
+    QCOMPARE(method->currentIndex(), automatic);
   }
 
   void speedVersusAccuracyCancels() {

@@ -247,7 +247,16 @@ class SceneFileTest : public QObject {
     row("restitution boolean", document(R"("world": {"restitution": true})"),
         "world.restitution: expected a number, got a boolean");
     row("method unknown", document(R"("world": {"method": "fast"})"),
-        "world.method: unknown method \"fast\"; use one of: exact, swept, discrete");
+        "world.method: unknown method \"fast\"; use one of: exact, swept, discrete, auto");
+    row("tolerance without auto", document(R"("world": {"tolerance": [1e-4, 0.1]})"),
+        "world.tolerance: belongs to method \"auto\" alone; give that method or leave the "
+        "tolerance out");
+    row("tolerance of three", document(R"("world": {"method": "auto", "tolerance": [1, 2, 3]})"),
+        "world.tolerance: expected an array of 2 numbers, got an array of 3 values");
+    row("tolerance zero", document(R"("world": {"method": "auto", "tolerance": [0, 0.05]})"),
+        "world.tolerance[0]: must be a number above zero (got 0)");
+    row("penetration negative", document(R"("world": {"method": "auto", "tolerance": [1e-3, -1]})"),
+        "world.tolerance[1]: must be a number above zero (got -1)");
     row("method number", document(R"("world": {"method": 1})"),
         "world.method: expected a string, got a number");
     row("integrator unknown", document(R"("world": {"integrator": "rk4"})"),
@@ -460,7 +469,7 @@ class SceneFileTest : public QObject {
     const QString shown = QString(32, 'z') + "\u2026";
     QTest::newRow("method") << document("\"world\": {\"method\": \"" + huge + "\"}")
                             << "world.method: unknown method \"" + shown +
-                                   "\"; use one of: exact, swept, discrete";
+                                   "\"; use one of: exact, swept, discrete, auto";
     QTest::newRow("format") << "{\"format\": \"" + huge + "\", \"version\": 1}"
                             << "format: expected \"carom-scene\", got \"" + shown + "\"";
     QTest::newRow("colour")
@@ -774,6 +783,13 @@ class SceneFileTest : public QObject {
         << document(R"("balls": [{"position": [0,0], "radius": 1}])") << false;
     QTest::newRow("missing radius") << document(R"("balls": [{"position": [0,0,0]}])") << false;
     QTest::newRow("unknown method") << document(R"("world": {"method": "fast"})") << false;
+    QTest::newRow("method auto") << document(R"("world": {"method": "auto"})") << true;
+    QTest::newRow("method auto with its tolerance")
+        << document(R"("world": {"method": "auto", "tolerance": [1e-4, 0.1]})") << true;
+    QTest::newRow("a tolerance without auto")
+        << document(R"("world": {"method": "swept", "tolerance": [1e-4, 0.1]})") << false;
+    QTest::newRow("a tolerance of one number")
+        << document(R"("world": {"method": "auto", "tolerance": [1e-4]})") << false;
   }
 
   void streamingReaderAgreesOrGivesUp() {
@@ -791,6 +807,26 @@ class SceneFileTest : public QObject {
     const SceneLoadResult result = parse(json);
     QCOMPARE(result.error, named.error);
     QCOMPARE(bool(result.scene), bool(named.scene));
+  }
+
+  // Issue 34: method auto was the window's alone; saved and reopened, the scene said "exact".
+  // The file says "auto" and the tolerance its choice must meet.
+  void methodAutoRoundTrips() {
+    Scene scene;
+    scene.world.autoMethod = carom::AccuracyTolerance{2.5e-4, 0.1};
+    scene.world.integrator = carom::Integrator::VelocityVerlet;
+    const QByteArray saved = carom::io::serializeScene(scene);
+    QVERIFY2(saved.contains(R"("method": "auto")"), saved.constData());
+    QVERIFY2(saved.contains(R"("tolerance": [0.00025, 0.1])"), saved.constData());
+    const SceneLoadResult loaded = parse(saved);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QVERIFY(*loaded.scene == scene);
+    // The choice auto made is not kept: it is made again for the scene as it is opened.
+    scene.world.method = carom::Method::Swept;
+    QCOMPARE(parse(carom::io::serializeScene(scene)).scene->world.method, carom::Method::Exact);
+    // Without auto, no tolerance is written.
+    scene.world.autoMethod.reset();
+    QVERIFY(!carom::io::serializeScene(scene).contains("tolerance"));
   }
 
   void savedTextIsIndentedVersionOne() {

@@ -39,6 +39,11 @@ struct AutoMethod::Pilot {
 AutoMethod::AutoMethod(editor::SceneDocument* document, QObject* parent)
     : QObject(parent), document_(document), calls_(new CallQueue(this)) {
   pool_.setMaxThreadCount(1);
+  connect(document_, &editor::SceneDocument::sceneChanged, this,
+          [this](const editor::SceneChange& change) {
+            if (change.world) worldChanged(change.replaced);
+          });
+  worldChanged(true);
 }
 
 AutoMethod::~AutoMethod() {
@@ -46,28 +51,27 @@ AutoMethod::~AutoMethod() {
   pool_.waitForDone();
 }
 
-void AutoMethod::setActive(bool on) {
-  if (on == active_) return;
-  active_ = on;
-  if (on) {
+// A pilot runs when auto is asked for anew: chosen, given another tolerance, or opened with a
+// scene. Its own choice (method, integrator, step) and their undo ask for nothing new.
+void AutoMethod::worldChanged(bool newScene) {
+  const std::optional<AccuracyTolerance>& asked = document_->scene().world.autoMethod;
+  const bool anew = asked && (newScene || asked != asked_);
+  asked_ = asked;
+  if (asked) tolerance_ = *asked;
+  if (anew) {
     pilot();
-  } else if (running_) {
+  } else if (!asked && running_) {
     running_->cancel = true;
     running_.reset();
   }
 }
 
-void AutoMethod::setTolerance(const AccuracyTolerance& tolerance) {
-  if (!validateTolerance(tolerance).empty()) return;
-  tolerance_ = tolerance;
-  if (active_) pilot();
-}
-
 void AutoMethod::pilot() {
+  if (!document_->scene().world.autoMethod) return;
   if (running_) running_->cancel = true;  // its result would be stale
   auto pilot = std::make_shared<Pilot>();
   pilot->scene = document_->scene();
-  pilot->tolerance = tolerance_;
+  pilot->tolerance = *document_->scene().world.autoMethod;
   running_ = pilot;
   emit choosingStarted();
   // The task and its captures are made before the hand-over mark: the pool's thread outlives a
@@ -95,25 +99,28 @@ void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
   const QLocale locale;
   const QString tolerance = locale.toString(pilot->tolerance.energyPerSecond, 'g', 3);
   const PilotMeasure& pick = choice.pick();
+  const QString settings = settingsText(pick.settings);
   if (!choice.chosen) {
-    emit finished(tr("Auto: no setting meets an energy error of %1 per second; the closest is "
-                     "%2. The settings are kept.")
-                      .arg(tolerance, settingsText(pick.settings)));
+    emit finished(tr("Auto: no setting meets the accuracy; the settings are kept"),
+                  tr("No setting meets an energy error of %1 per second; the closest is %2. "
+                     "The settings are kept.")
+                      .arg(tolerance, settings));
     return;
   }
   World world = document_->scene().world;
   world.method = pick.settings.method;
   world.integrator = pick.settings.integrator;
   world.timeStep = pick.settings.timeStep;
-  const QString error = document_->editWorld(world, tr("Choose Method Automatically"));
+  // The History names the choice, where it stays to be read.
+  const QString error = document_->editWorld(world, tr("Auto: %1").arg(settings));
   if (!error.isEmpty()) {
-    emit finished(error);
+    emit finished(error, error);
     return;
   }
-  emit finished(tr("Auto chose %1: the cheapest setting with an energy error under %2 per "
-                   "second (%3 s of computing per simulated second; pilot %4 s)")
-                    .arg(settingsText(pick.settings), tolerance,
-                         locale.toString(pick.costPerSecond, 'g', 2),
+  emit finished(tr("Auto chose %1").arg(settings),
+                tr("Auto chose %1: the cheapest setting with an energy error under %2 per "
+                   "second (%3 s of computing per simulated second; pilot %4 s).")
+                    .arg(settings, tolerance, locale.toString(pick.costPerSecond, 'g', 2),
                          locale.toString(choice.pilotSeconds, 'g', 2)));
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Method "auto" in the window: the pilot of sim/method_choice.h, run off the GUI thread on the
-// document's scene whenever auto is chosen or its accuracy changes. The cheapest setting that
-// meets the accuracy becomes the world's method, integrator and step (one undo step), and the
-// status line says what was chosen and why; when none meets it, the settings stay as they are.
+// document's scene whenever the world asks for auto anew (chosen, its tolerance changed, or a
+// scene opened that was saved under auto). The cheapest setting that meets the tolerance
+// becomes the world's method, integrator and step (one undo step that names it), and what was
+// chosen and why is reported; when none meets it, the settings stay as they are.
 
 #include "sim/method_choice.h"
 
@@ -12,6 +13,7 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 namespace carom::editor {
 class SceneDocument;
@@ -31,26 +33,25 @@ class AutoMethod : public QObject {
   // Stops a pilot under way and waits for it.
   ~AutoMethod() override;
 
-  bool active() const { return active_; }
-  // On: pilots the scene now; off: forgets a pilot under way.
-  void setActive(bool on);
+  // The tolerance the world asks for under auto, or the one it asked for last (what choosing
+  // auto again asks for).
   const AccuracyTolerance& tolerance() const { return tolerance_; }
-  // Valid (validateTolerance); pilots again when active.
-  void setTolerance(const AccuracyTolerance& tolerance);
   bool choosing() const { return running_ != nullptr; }
 
  signals:
   void choosingStarted();
-  // What was chosen and why, or why nothing was, for the status line.
-  void finished(const QString& status);
+  // `summary` for the status line ("Auto chose swept (...)"), `explanation` the whole of what
+  // was chosen and why, or why nothing was.
+  void finished(const QString& summary, const QString& explanation);
 
  private:
   struct Pilot;
+  void worldChanged(bool newScene);
   void pilot();
   void apply(const std::shared_ptr<Pilot>& pilot);
 
   editor::SceneDocument* document_;
-  bool active_ = false;
+  std::optional<AccuracyTolerance> asked_;  // what the world asked for when last seen
   AccuracyTolerance tolerance_;
   std::shared_ptr<Pilot> running_;  // the pilot whose result counts
   CallQueue* calls_;                // a child: the pilot's report, run on this object's thread

@@ -586,6 +586,7 @@ void MainWindow::applySettings(carom::Method method, carom::Integrator integrato
     world.method = method;
     world.integrator = integrator;
     world.timeStep = timeStep;
+    world.autoMethod.reset();  // a setting of one's own
   });
 }
 

@@ -61,14 +61,23 @@ void WorldToolBar::addMethod() {
   autoMethod_ = new AutoMethod(document_, this);
   connect(autoMethod_, &AutoMethod::choosingStarted, this,
           [this] { emit message(tr("Auto: piloting the scene under 13 settings…")); });
-  connect(autoMethod_, &AutoMethod::finished, this, &WorldToolBar::message);
+  connect(autoMethod_, &AutoMethod::finished, this,
+          [this](const QString& summary, const QString& explanation) {
+            autoExplanation_ = explanation;
+            retranslateMethodTip();
+            emit message(summary);
+          });
   connect(method_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    const bool automatic = index == int(methodNames().size());
-    accuracyLabelAction_->setVisible(automatic);
-    accuracyBoxAction_->setVisible(automatic);
-    autoMethod_->setActive(automatic);
-    if (!automatic)
-      editWorld(tr("Change Method"), [index](World& world) { world.method = Method(index); });
+    if (index == int(methodNames().size())) {
+      editWorld(tr("Change Method"), [tolerance = autoMethod_->tolerance()](World& world) {
+        world.autoMethod = tolerance;
+      });
+    } else {
+      editWorld(tr("Change Method"), [index](World& world) {
+        world.method = Method(index);
+        world.autoMethod.reset();
+      });
+    }
   });
   addWidget(method_);
   accuracyLabel_ = new QLabel;
@@ -78,9 +87,9 @@ void WorldToolBar::addMethod() {
   accuracy_->setValue(autoMethod_->tolerance().energyPerSecond);
   connect(accuracy_, &NumberBox::refused, this, &WorldToolBar::message);
   connect(accuracy_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
-    AccuracyTolerance tolerance = autoMethod_->tolerance();
-    tolerance.energyPerSecond = value;
-    autoMethod_->setTolerance(tolerance);
+    editWorld(tr("Change Accuracy"), [value](World& world) {
+      if (world.autoMethod) world.autoMethod->energyPerSecond = value;
+    });
   });
   accuracyBoxAction_ = addWidget(accuracy_);
   accuracyLabelAction_->setVisible(false);
@@ -95,7 +104,8 @@ void WorldToolBar::showWorld() {
   const World& world = document_->scene().world;
   const QSignalBlocker blockers[] = {QSignalBlocker(gravity_[0]), QSignalBlocker(gravity_[1]),
                                      QSignalBlocker(gravity_[2]), QSignalBlocker(timeStep_),
-                                     QSignalBlocker(method_),     QSignalBlocker(integrator_)};
+                                     QSignalBlocker(method_),     QSignalBlocker(integrator_),
+                                     QSignalBlocker(accuracy_)};
   for (int a = 0; a < 3; ++a) gravity_[a]->setValue(world.gravity[a]);
   timeStep_->setValue(world.timeStep);
   // Under auto the world holds what auto chose; the box says auto, and what that is.
@@ -103,7 +113,10 @@ void WorldToolBar::showWorld() {
   const std::string_view name = methodName(world.method);
   method_->setItemText(automatic,
                        QString("auto (%1)").arg(QString::fromUtf8(name.data(), name.size())));
-  method_->setCurrentIndex(autoMethod_->active() ? automatic : int(world.method));
+  method_->setCurrentIndex(world.autoMethod ? automatic : int(world.method));
+  accuracyLabelAction_->setVisible(world.autoMethod.has_value());
+  accuracyBoxAction_->setVisible(world.autoMethod.has_value());
+  accuracy_->setValue(autoMethod_->tolerance().energyPerSecond);
   integrator_->setCurrentIndex(int(world.integrator));
 }
 
@@ -121,6 +134,16 @@ void WorldToolBar::changeTimeStep(double factor) {
   timeStep_->setValue(timeStep_->value() * factor);
 }
 
+// What the methods are, and what auto last chose and why: the status line shows that only for
+// a while, and cut to its width.
+void WorldToolBar::retranslateMethodTip() {
+  QString tip =
+      tr("Exact (event-driven), swept, or discrete steps; auto: the cheapest that "
+         "meets the accuracy, found by a short pilot");
+  if (!autoExplanation_.isEmpty()) tip += "\n\n" + autoExplanation_;
+  method_->setToolTip(tip);
+}
+
 void WorldToolBar::retranslate() {
   setWindowTitle(tr("World"));
   gravityLabel_->setText(tr("Gravity"));
@@ -132,9 +155,7 @@ void WorldToolBar::retranslate() {
   timeStepLabel_->setText(tr("Step"));
   timeStep_->setName(tr("Time step"));
   timeStep_->setToolTip(tr("Time step in seconds (+ and - keys)"));
-  method_->setToolTip(
-      tr("Exact (event-driven), swept, or discrete steps; auto: the cheapest that meets the "
-         "accuracy, found by a short pilot"));
+  retranslateMethodTip();
   accuracyLabel_->setText(tr("Accuracy"));
   accuracy_->setName(tr("Accuracy"));
   accuracy_->setToolTip(

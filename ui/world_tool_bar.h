@@ -45,6 +45,7 @@ class WorldToolBar : public QToolBar {
  private:
   void addGravity();
   void addMethod();
+  void retranslateMethodTip();
 
   editor::SceneDocument* document_;
   QLabel* gravityLabel_ = nullptr;
@@ -53,6 +54,7 @@ class WorldToolBar : public QToolBar {
   NumberBox* timeStep_ = nullptr;
   QComboBox* method_ = nullptr;  // the methods, then "auto"
   AutoMethod* autoMethod_ = nullptr;
+  QString autoExplanation_;  // what auto chose last and why, in the method box's tooltip
   QLabel* accuracyLabel_ = nullptr;
   NumberBox* accuracy_ = nullptr;  // auto's energy error per simulated second
   QAction* accuracyLabelAction_ = nullptr;

@@ -44,6 +44,7 @@ std::optional<Scene> prepareScene(const RunOptions& options, QTextStream& err) {
       return std::nullopt;
     }
     scene.world.method = *method;
+    scene.world.autoMethod.reset();
   }
   if (options.integrator) {
     const auto integrator = integratorFromName(options.integrator->toStdString());
@@ -111,16 +112,26 @@ int dispatch(const Command& command, QTextStream& out, QTextStream& err) {
     case Command::Run: {
       QElapsedTimer started;  // the report's wall time includes loading and checking the scene
       started.start();
-      const RunOptions& run = command.run;
+      RunOptions run = command.run;
       if (run.trajectoryPath && io::isSameFile(*run.trajectoryPath, run.scenePath)) {
         err << "carom-cli: --trajectory " << *run.trajectoryPath << " is the scene file "
             << run.scenePath << " itself; give the trajectory another file\n";
         return kBadInput;
       }
-      const std::optional<Scene> scene = prepareScene(command.run, err);
+      const std::optional<Scene> scene = prepareScene(run, err);
       if (!scene) return kBadInput;
-      if (command.run.autoMethod) return runAuto(*scene, command.run, started, out, err);
-      return runScene(*scene, command.run, started, out, err);
+      // A scene saved under method auto asks for the pilot, unless a method is given.
+      if (scene->world.autoMethod && !run.method) {
+        if (run.integrator) {
+          err << "carom-cli: the scene's method is auto, which chooses the integrator: give "
+                 "--method too, or leave --integrator out\n";
+          return kBadInput;
+        }
+        run.autoMethod = true;
+        if (!run.toleranceGiven) run.tolerance = *scene->world.autoMethod;
+      }
+      if (run.autoMethod) return runAuto(*scene, run, started, out, err);
+      return runScene(*scene, run, started, out, err);
     }
     case Command::Bench:
       if (command.bench.files) return runFileBench(command.bench, out, err);

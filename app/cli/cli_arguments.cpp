@@ -108,7 +108,6 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
   RunOptions& run = command.run;
   bool haveScene = false;
   bool watchGiven = false;
-  bool toleranceGiven = false;
   for (int i = 0; i < args.size(); ++i) {
     const QString& arg = args[i];
     QString watchError;
@@ -152,7 +151,7 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
         const std::vector<ValidationError> errors = validateTolerance(run.tolerance);
         if (!errors.empty())
           return failure(QString("--tolerance: %1").arg(QString::fromStdString(errors[0].text())));
-        toleranceGiven = true;
+        run.toleranceGiven = true;
       } else if (arg == "--integrator") {
         run.integrator = value;
       } else {
@@ -171,7 +170,7 @@ ParseResult parseRun(const QStringList& args, bool validateOnly) {
   if (!haveScene) return failure("no scene file given");
   if (watchGiven && !run.stopOnDivergence)
     return failure("the --watch-... options set the watch of --stop-on-divergence: give it too");
-  if ((toleranceGiven || run.acceptClosest) && !run.autoMethod)
+  if ((run.toleranceGiven || run.acceptClosest) && !run.autoMethod)
     return failure("--tolerance and --accept-closest are for --method auto: give it too");
   if (run.autoMethod && run.integrator)
     return failure("--method auto chooses the integrator: leave --integrator out");
@@ -265,7 +264,8 @@ QString usageText() {
       "      (default 1e-3), P the deepest penetration as a fraction of the smallest radius\n"
       "      (default 0.05). The report lists every candidate and why it was or was not\n"
       "      chosen. When none meets it, the run exits with 4 unless --accept-closest asks\n"
-      "      for the closest.\n"
+      "      for the closest. A scene saved under auto runs so unless --method is given,\n"
+      "      with its own tolerance unless --tolerance is.\n"
       "  carom-cli validate SCENE\n"
       "  carom-cli bench [--quick] [--timeline | --files | --sizes]\n"
       "  carom-cli study SCENE [--duration S] [--threads N]\n"

@@ -19,6 +19,7 @@ struct RunOptions {
   // --accept-closest the closest setting runs when none meets it.
   bool autoMethod = false;
   AccuracyTolerance tolerance;
+  bool toleranceGiven = false;  // else a scene saved under auto brings its own
   bool acceptClosest = false;
   std::optional<QString> integrator;
   std::optional<double> timeStep;

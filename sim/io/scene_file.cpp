@@ -232,6 +232,13 @@ Value readName(const ObjectReader& reader, const QString& key, Value fallback,
        "unknown " + what + ' ' + quoted(shortened(name)) + "; use one of: " + valid.join(", "));
 }
 
+// The methods a file may name: the physics' own, and auto.
+std::vector<std::string_view> fileMethodNames() {
+  std::vector<std::string_view> names = methodNames();
+  names.push_back(format::kAutoMethodName);
+  return names;
+}
+
 World readWorld(const QJsonObject& object) {
   const ObjectReader reader(object, "world", kWorldKeys);
   const World defaults;
@@ -239,8 +246,20 @@ World readWorld(const QJsonObject& object) {
   world.gravity = reader.vector("gravity", defaults.gravity);
   world.timeStep = reader.number("timeStep", defaults.timeStep);
   world.restitution = reader.number("restitution", defaults.restitution);
-  world.method =
-      readName(reader, "method", defaults.method, &methodFromName, &methodNames, "method");
+  if (reader.has("method") && reader.string("method") == QLatin1String(format::kAutoMethodName)) {
+    world.autoMethod = AccuracyTolerance{};
+    if (reader.has("tolerance")) {
+      const Eigen::Vector2d tolerance = reader.numbers<2>("tolerance");
+      world.autoMethod = AccuracyTolerance{tolerance[0], tolerance[1]};
+    }
+  } else {
+    if (reader.has("tolerance"))
+      fail(reader.pathOf("tolerance"),
+           "belongs to method \"auto\" alone; give that method or "
+           "leave the tolerance out");
+    world.method =
+        readName(reader, "method", defaults.method, &methodFromName, &fileMethodNames, "method");
+  }
   world.integrator = readName(reader, "integrator", defaults.integrator, &integratorFromName,
                               &integratorNames, "integrator");
   world.extra = reader.extra();

@@ -18,8 +18,11 @@ inline constexpr std::string_view kTopKeys[] = {"format",    "version", "world",
 // Version 1 had no boxes: a "boxes" key there is one it does not know, kept as it is.
 inline constexpr std::string_view kTopKeysVersion1[] = {"format", "version",   "world",
                                                         "planes", "cylinders", "balls"};
-inline constexpr std::string_view kWorldKeys[] = {"gravity", "timeStep", "restitution", "method",
-                                                  "integrator"};
+inline constexpr std::string_view kWorldKeys[] = {"gravity", "timeStep",   "restitution",
+                                                  "method",  "integrator", "tolerance"};
+// "method": "auto" asks for the pilot's choice; "tolerance": [energy, penetration] is what the
+// choice must meet, and belongs to auto alone.
+inline constexpr std::string_view kAutoMethodName = "auto";
 inline constexpr std::string_view kPlaneKeys[] = {"name", "point", "normal", "restitution",
                                                   "color"};
 inline constexpr std::string_view kCylinderKeys[] = {"name",   "point",       "axis", "radius",

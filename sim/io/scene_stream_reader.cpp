@@ -533,7 +533,16 @@ Scene read(Cursor& cursor, std::size_t textSize) {
       world.gravity = fields.vector("gravity", defaults.gravity);
       world.timeStep = fields.number("timeStep", defaults.timeStep);
       world.restitution = fields.number("restitution", defaults.restitution);
-      world.method = named(fields, "method", defaults.method, &methodFromName);
+      if (fields.find("method") && fields.string("method") == format::kAutoMethodName) {
+        world.autoMethod = AccuracyTolerance{};
+        if (fields.find("tolerance")) {
+          const std::array<double, 4> tolerance = fields.numbers<2>("tolerance");
+          world.autoMethod = AccuracyTolerance{tolerance[0], tolerance[1]};
+        }
+      } else {
+        if (fields.find("tolerance")) giveUp();  // the other reader says why
+        world.method = named(fields, "method", defaults.method, &methodFromName);
+      }
       world.integrator = named(fields, "integrator", defaults.integrator, &integratorFromName);
       world.extra = fields.extra();
     } else if (key == "planes") {

@@ -156,8 +156,12 @@ void writeScene(const Scene& scene, Write&& write) {
   worldFields.add("gravity", jsonVector(world.gravity));
   worldFields.add("timeStep", numberText(world.timeStep));
   worldFields.add("restitution", numberText(world.restitution));
-  worldFields.add("method", jsonString(methodName(world.method)));
+  worldFields.add(
+      "method", jsonString(world.autoMethod ? format::kAutoMethodName : methodName(world.method)));
   worldFields.add("integrator", jsonString(integratorName(world.integrator)));
+  if (world.autoMethod)
+    worldFields.add("tolerance", "[" + numberText(world.autoMethod->energyPerSecond) + ", " +
+                                     numberText(world.autoMethod->penetrationFraction) + "]");
   worldFields.addExtra(world.extra, kWorldKeys);
   top.add("world", worldFields.indented("  "));
 
