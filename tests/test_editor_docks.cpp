@@ -746,7 +746,7 @@ void TestEditorDocks::editsACylindersLength() {
   const int commands = document().undoStack()->count();
   type("cylinderLength", "2");
   QCOMPARE(document().scene().cylinders[0].length, std::optional(2.0));
-  QCOMPARE(document().scene().cylinders[0].point, Vec3(2, 0, -2));
+  QCOMPARE(document().scene().cylinders[0].point, Vec3(2, 1, -2));  // rising from the floor
   QCOMPARE(document().undoStack()->count(), commands + 1);
   QCOMPARE(document().undoStack()->undoText(), QString("Resize Cylinder"));
   QCOMPARE(length->text(), QString("2"));
@@ -834,7 +834,7 @@ void TestEditorDocks::editsTheLengthOfSeveralCylinders() {
   type("cylinderLength", "1.5");
   QCOMPARE(document().scene().cylinders[0].length, std::optional(1.5));
   QCOMPARE(document().scene().cylinders[1].length, std::optional(1.5));
-  QCOMPARE(document().scene().cylinders[1].point, Vec3(-2, 1, -2));
+  QCOMPARE(document().scene().cylinders[1].point, Vec3(-2, 0.75, -2));  // still on the floor
   QCOMPARE(length->text(), QString("1.5"));
   // With an infinite one among them the lengths differ again.
   addCylinder();

@@ -28,11 +28,29 @@ GrabControl::GrabControl(editor::EditorTools* tools, SimulationController* simul
   simulation_->setThrowLimit(throwLimit_);
   connect(tools_, &editor::EditorTools::grabStarted, this, [this](int ball) {
     lastStopTime_.reset();
+    heldFrom_.reset();
+    const std::shared_ptr<const SimulationSnapshot> shown = simulation_->latest();
+    if (shown && !shown->running && ball < int(shown->positions.size()))
+      heldFrom_ = Held{shown->positions[ball], shown->velocities[ball]};
     simulation_->grab(ball);
   });
+  connect(tools_, &editor::EditorTools::grabCancelled, this, &GrabControl::cancelGrab);
   connect(tools_, &editor::EditorTools::grabMoved, simulation_, &SimulationController::moveGrab);
   connect(tools_, &editor::EditorTools::grabReleased, simulation_,
           &SimulationController::releaseGrab);
+}
+
+void GrabControl::cancelGrab() {
+  const std::shared_ptr<const SimulationSnapshot> shown = simulation_->latest();
+  if (heldFrom_ && shown && !shown->running) {
+    // Paused, nothing else moved: the ball goes back and is let go as it was.
+    simulation_->moveGrab(heldFrom_->position);
+    simulation_->releaseGrab(heldFrom_->velocity);
+  } else {
+    // Running, the run went on under the grab; the ball is let go where it is, without a throw.
+    simulation_->releaseGrab(Vec3::Zero());
+  }
+  heldFrom_.reset();
 }
 
 void GrabControl::setThrowLimit(double speed) {

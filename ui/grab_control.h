@@ -3,6 +3,8 @@
 // simulation, keeps the throw limit (a setting), and says when a grab stopped or a throw was
 // cut to the limit.
 
+#include "sim/scene.h"
+
 #include <QObject>
 #include <QString>
 
@@ -39,11 +41,22 @@ class GrabControl : public QObject {
   void message(const QString& text);
 
  private:
+  // Escape during a grab. Paused, the grab is undone: the ball goes back to where it was taken
+  // and keeps the velocity it had. Running, it is let go where it is, at rest: the run is not
+  // taken back in time (the timeline does that).
+  void cancelGrab();
+
   editor::EditorTools* tools_;
   SimulationController* simulation_;
   double throwLimit_;
   std::optional<double> lastStopTime_;  // the stop last said, so it is said once
   bool throwCapped_ = false;
+  // The held ball as it was when taken in a paused run.
+  struct Held {
+    Vec3 position;
+    Vec3 velocity;
+  };
+  std::optional<Held> heldFrom_;
 };
 
 }  // namespace carom::ui

@@ -3,6 +3,7 @@
 #include "ui/accuracy_window.h"
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
+#include "ui/editor/cylinder_length_field.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
@@ -546,6 +547,16 @@ void MainWindow::buildToolActions() {
     toolsBar_->addAction(action);
     toolActions_[int(entry.tool)] = action;
   }
+  // Add Cylinder's length, beside the tool while it is chosen.
+  auto* cylinderLength = new editor::CylinderLengthField(tools_);
+  connect(cylinderLength, &editor::CylinderLengthField::refused, this, &MainWindow::showMessage);
+  QAction* cylinderLengthAction =
+      toolsBar_->insertWidget(toolActions_[int(editor::EditorTools::Tool::AddBox)], cylinderLength);
+  const auto showCylinderLength = [cylinderLengthAction](editor::EditorTools::Tool tool) {
+    cylinderLengthAction->setVisible(tool == editor::EditorTools::Tool::AddCylinder);
+  };
+  showCylinderLength(tools_->tool());
+  connect(tools_, &editor::EditorTools::toolChanged, cylinderLengthAction, showCylinderLength);
   snapAction_ = new QAction(this);
   snapAction_->setObjectName("snapToGrid");
   snapAction_->setCheckable(true);

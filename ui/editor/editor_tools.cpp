@@ -85,6 +85,28 @@ Rotation turnedAbout(const std::optional<Rotation>& rotation, const Vec3& axis, 
 EditorTools::EditorTools(SceneDocument* document, render::SceneView* view, QObject* parent)
     : QObject(parent), document_(document), view_(view) {
   view_->installEventFilter(this);
+  if (!document_->scene().cylinders.empty())
+    cylinderLength_ = document_->scene().cylinders.back().length;
+  connect(document_, &SceneDocument::sceneChanged, this, &EditorTools::followCylinderLength);
+}
+
+void EditorTools::setCylinderLength(std::optional<double> length) {
+  if (length == cylinderLength_) return;
+  cylinderLength_ = length;
+  emit cylinderLengthChanged();
+}
+
+void EditorTools::followCylinderLength(const SceneChange& change) {
+  const std::vector<Cylinder>& cylinders = document_->scene().cylinders;
+  if (change.replaced) {
+    setCylinderLength(cylinders.empty() ? std::nullopt : cylinders.back().length);
+    return;
+  }
+  std::optional<int> last;
+  for (const Selection* refs : {&change.inserted, &change.edited})
+    for (const ObjectRef& ref : *refs)
+      if (ref.kind == ObjectKind::Cylinder) last = ref.index;
+  if (last) setCylinderLength(cylinders[*last].length);
 }
 
 void EditorTools::setTool(Tool tool) {
@@ -106,6 +128,12 @@ bool EditorTools::eventFilter(QObject* watched, QEvent* event) {
     case QEvent::KeyPress:
     case QEvent::KeyRelease: {
       auto* key = static_cast<QKeyEvent*>(event);
+      if (key->key() == Qt::Key_Escape) {
+        if (event->type() != QEvent::KeyPress || drag_ == Drag::None || drag_ == Drag::Cancelled)
+          return false;
+        cancelDrag();
+        return true;
+      }
       const int axis = key->key() == Qt::Key_X   ? 0
                        : key->key() == Qt::Key_Y ? 1
                        : key->key() == Qt::Key_Z ? 2
@@ -280,6 +308,7 @@ bool EditorTools::mousePress(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton) return false;
   pressPosition_ = event->position();
   refusedDuringDrag_ = false;
+  selectionAtPress_ = document_->selection();
   if (tool_ != Tool::Select) {
     drag_ = Drag::Pending;  // a click places; a drag orbits as usual
     return false;
@@ -330,6 +359,43 @@ void EditorTools::beginDrag(Drag drag, const Selection& objects) {
   dragged_ = objects;
   draggedAtPress_ = extract(document_->scene(), dragged_);
   gesture_ = document_->newGesture();
+  standingOn_.clear();
+  if (drag != Drag::Objects) return;
+  for (const ObjectRef& ref : dragged_)
+    for (const Surface& surface : surfacesUnder(document_->scene(), ref, dragged_))
+      standingOn_.push_back(surface);
+}
+
+void EditorTools::cancelDrag() {
+  const Drag drag = std::exchange(drag_, Drag::Cancelled);
+  if (drag == Drag::Grab) emit grabCancelled();
+  if (drag == Drag::Objects || drag == Drag::Handle) {
+    // Merged into the drag's command, the values at the press leave it changing nothing, and
+    // the stack drops it: no undo step is left behind.
+    document_->editObjects(dragged_, draggedAtPress_, QString(), gesture_);
+  }
+  document_->setSelection(selectionAtPress_);
+}
+
+Vec3 EditorTools::keptOnSurfaces(const QPointF& position, Vec3 offset) const {
+  bool slid = false;
+  for (const Surface& surface : standingOn_) {
+    const double into = offset.dot(surface.normal);
+    if (into >= 0.0) continue;
+    // Held to an axis that leads into the surface: it stays where it stood.
+    if (axisLock_ >= 0) return Vec3::Zero();
+    // As placing does, the cursor's ray finds the spot on the surface; the grabbed point keeps
+    // its height above it.
+    const auto [origin, direction] = view_->rayAt(position);
+    const std::optional<double> t =
+        slid ? std::nullopt : rayPlaneDistance(origin, direction, grabPoint_, surface.normal);
+    if (t) {
+      offset = origin + *t * direction - grabPoint_;
+      slid = true;
+    }
+    offset -= offset.dot(surface.normal) * surface.normal;
+  }
+  return offset;
 }
 
 bool EditorTools::pressOnRunningBall(const QPointF& position) {
@@ -396,6 +462,7 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
     moveGrab(event->position());
     return true;
   }
+  if (drag_ == Drag::Cancelled) return true;
   if (drag_ != Drag::Objects && drag_ != Drag::Handle) return false;
   // A face, end or turn handle keeps to its own path whatever axis key is held.
   const bool onPath = drag_ == Drag::Handle && grabbedHandle_.role != HandleRole::Direction;
@@ -409,9 +476,15 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
   if (drag_ == Drag::Handle) {
     text = dragHandle(edited, local.front(), *point);
   } else {
-    const Vec3 offset = *point - grabPoint_;
-    for (const ObjectRef& ref : local)
-      setObjectPosition(edited, ref, snapped(objectPosition(draggedAtPress_, ref) + offset));
+    const Vec3 offset = keptOnSurfaces(event->position(), *point - grabPoint_);
+    for (const ObjectRef& ref : local) {
+      const Vec3 from = objectPosition(draggedAtPress_, ref);
+      Vec3 moved = snapped(from + offset);
+      // Nor does snapping sink it into them.
+      for (const Surface& surface : standingOn_)
+        moved -= std::min(0.0, (moved - from).dot(surface.normal)) * surface.normal;
+      setObjectPosition(edited, ref, moved);
+    }
     text = tr("Move");
   }
   QString error = document_->editObjects(dragged_, edited, text, gesture_);
@@ -435,6 +508,7 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
 bool EditorTools::mouseRelease(QMouseEvent* event) {
   if (event->button() != Qt::LeftButton) return false;
   const Drag drag = std::exchange(drag_, Drag::None);
+  if (drag == Drag::Cancelled) return true;
   if (drag == Drag::PendingGrab) return true;  // a click on a running ball: selected
   if (drag == Drag::Grab) {
     emit grabReleased(releaseVelocity());
@@ -535,16 +609,13 @@ void EditorTools::place(const QPointF& position) {
     added.boxes.push_back(boxOn(point, normal, hit));
     text = tr("Add Box");
   } else {
-    // A post standing on the surface clicked, with the last cylinder's radius and length: an
-    // infinite one through the point, a capped one with its lower cap on it.
+    // A post standing on the surface clicked, with the last cylinder's radius and the tool's
+    // length: an infinite one through the point, a capped one with its lower cap on it.
     Cylinder cylinder;
     cylinder.axis = normal;
-    if (!scene.cylinders.empty()) {
-      cylinder.radius = scene.cylinders.back().radius;
-      cylinder.length = scene.cylinders.back().length;
-    } else {
-      cylinder.radius = kDefaultCylinderRadius;
-    }
+    cylinder.radius =
+        scene.cylinders.empty() ? kDefaultCylinderRadius : scene.cylinders.back().radius;
+    cylinder.length = cylinderLength_;
     cylinder.point = point + 0.5 * cylinder.length.value_or(0.0) * normal;
     added.cylinders.push_back(cylinder);
     text = tr("Add Cylinder");

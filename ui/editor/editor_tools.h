@@ -6,6 +6,8 @@
 #include "sim/ray_cast.h"
 #include "sim/scene.h"
 #include "ui/editor/object_ref.h"
+#include "ui/editor/scene_change.h"
+#include "ui/editor/standing.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -37,6 +39,10 @@ class EditorTools : public QObject {
   bool snapToGrid() const { return snapToGrid_; }
   void setSnapToGrid(bool on) { snapToGrid_ = on; }
   static constexpr double gridStep() { return 0.25; }
+  // The length of the cylinders Add Cylinder places (none: infinite). It follows the cylinder
+  // last added or changed, or the last one of a scene opened.
+  std::optional<double> cylinderLength() const { return cylinderLength_; }
+  void setCylinderLength(std::optional<double> length);
 
   // A ball's velocity arrow is this many seconds of its flight long.
   static constexpr double kArrowSeconds = 0.5;
@@ -77,16 +83,26 @@ class EditorTools : public QObject {
   void grabStarted(int ball);
   void grabMoved(const carom::Vec3& target);
   void grabReleased(const carom::Vec3& velocity);
+  // Escape during a grab: the ball is let go without a throw (GrabControl says how).
+  void grabCancelled();
+  void cylinderLengthChanged();
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  enum class Drag { None, Pending, Objects, Handle, PendingGrab, Grab };
+  // Cancelled: Escape ended the drag; the rest of it, up to the release, does nothing.
+  enum class Drag { None, Pending, Objects, Handle, PendingGrab, Grab, Cancelled };
   bool mousePress(QMouseEvent* event);
   bool mouseMove(QMouseEvent* event);
   bool mouseRelease(QMouseEvent* event);
   void place(const QPointF& position);
+  // Escape: everything as it was before the press.
+  void cancelDrag();
+  // The move `offset` of the dragged objects, stopped where it would take them through a
+  // surface they stood on at the press: they slide along it under the cursor instead.
+  Vec3 keptOnSurfaces(const QPointF& position, Vec3 offset) const;
+  void followCylinderLength(const SceneChange& change);
   // A box resting on the surface clicked at `point`: its bottom face on it, its up axis along
   // the surface's `normal`.
   Box boxOn(const Vec3& point, const Vec3& normal, const std::optional<RayHit>& hit) const;
@@ -129,6 +145,8 @@ class EditorTools : public QObject {
   // The dragged objects, and their values when the drag began (as extract() gives them).
   Selection dragged_;
   Scene draggedAtPress_;
+  std::vector<Surface> standingOn_;  // what the moved objects stood on at the press
+  Selection selectionAtPress_;
   int gesture_ = 0;
   bool refusedDuringDrag_ = false;
   std::vector<Vec3> runningBalls_;
@@ -141,6 +159,7 @@ class EditorTools : public QObject {
   };
   std::vector<GrabSample> grabSamples_;
   QElapsedTimer grabClock_;
+  std::optional<double> cylinderLength_;
 };
 
 }  // namespace carom::editor

@@ -2,6 +2,7 @@
 
 #include "ui/editor/number_text.h"
 #include "ui/editor/scene_document.h"
+#include "ui/editor/standing.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -325,9 +326,11 @@ void PropertiesDock::addLength() {
   lengthRow_ = addRow(kCylinders, QT_TR_NOOP("Length"), QT_TR_NOOP("Resize Cylinder"), length_,
                       QT_TR_NOOP("m"));
   connect(length_, &QLineEdit::editingFinished, this, [this] {
+    // One standing on a surface keeps its foot there (standing.h).
     optionalNumberEdited(length_, lengthRow_,
-                         [](Scene& values, const ObjectRef& ref, std::optional<double> value) {
-                           values.cylinders[ref.index].length = value;
+                         [this](Scene& values, const ObjectRef& ref, std::optional<double> value) {
+                           Cylinder& cylinder = values.cylinders[ref.index];
+                           cylinder = withLength(document_->scene(), cylinder, value);
                          });
   });
   // Once the user has typed, an empty field makes them all infinite, even where it showed
@@ -534,9 +537,9 @@ void PropertiesDock::textEdited(const TextEditor& editor) {
   });
 }
 
-void PropertiesDock::optionalNumberEdited(NumberField* edit, int row,
-                                          void (*set)(Scene&, const ObjectRef&,
-                                                      std::optional<double>)) {
+void PropertiesDock::optionalNumberEdited(
+    NumberField* edit, int row,
+    const std::function<void(Scene&, const ObjectRef&, std::optional<double>)>& set) {
   // Not edited: left empty (several that differ) or as it was, which changes nothing.
   if (!edit->isModified()) {
     message_->clear();

@@ -113,8 +113,9 @@ class PropertiesDock : public QDockWidget {
   void textEdited(const TextEditor& editor);
   // A field whose emptied text means none (the restitution, the length); `set` stores the
   // value typed, or none, into one selected object.
-  void optionalNumberEdited(NumberField* edit, int row,
-                            void (*set)(Scene&, const ObjectRef&, std::optional<double>));
+  void optionalNumberEdited(
+      NumberField* edit, int row,
+      const std::function<void(Scene&, const ObjectRef&, std::optional<double>)>& set);
   // `component` 0 to 2 of the axis, or 3 for the degrees; emptied degrees take the turn away.
   void rotationEdited(int component);
   void pickColor();

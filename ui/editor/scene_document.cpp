@@ -87,6 +87,8 @@ class SceneEditCommand : public QUndoCommand {
       return false;
     editedAfter = next->editedAfter;
     selectionAfter_ = next->selectionAfter_;
+    // A drag back to where it began (or cancelled) changed nothing: the stack drops the command.
+    setObsolete(editedAfter == editedBefore);
     return true;
   }
 
