@@ -193,4 +193,71 @@ double positionErrorAtHorizon(const StudyResult& result, const StudyReference& r
   return result.deviation[*reference.horizonSample];
 }
 
+double agreementRadius(const Scene& scene) {
+  if (scene.balls.empty()) return 0.0;
+  double radii = 0.0;
+  for (const Ball& ball : scene.balls) radii += ball.radius;
+  return kAgreementRadiusFraction * radii / static_cast<double>(scene.balls.size());
+}
+
+double measureOf(const StudyResult& result, StudyMeasure measure) {
+  switch (measure) {
+    case StudyMeasure::PositionError:
+      return result.positionError;
+    case StudyMeasure::EnergyDrift:
+      return result.energyDrift;
+    case StudyMeasure::Penetration:
+      return result.maxPenetration;
+    case StudyMeasure::Escaped:
+      return result.escaped;
+    case StudyMeasure::SpeedDistribution:
+      return result.speedDistribution;
+    case StudyMeasure::PositionDistribution:
+      return result.positionDistribution;
+    case StudyMeasure::EnergyErrorPerSecond:
+      return result.energyErrorPerSecond;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double indistinguishableDistance(std::size_t count) {
+  // The two-sample test's critical distance c(alpha) sqrt(2 / n), c = 1.358 at alpha = 0.05.
+  constexpr double kCritical = 1.358;
+  if (count == 0) return std::numeric_limits<double>::infinity();
+  return kCritical * std::sqrt(2.0 / static_cast<double>(count));
+}
+
+double toleranceOf(StudyMeasure measure, const StudyTolerance& tolerance, const Scene& scene,
+                   double duration) {
+  switch (measure) {
+    case StudyMeasure::PositionError:
+      return agreementRadius(scene);
+    case StudyMeasure::EnergyDrift:
+      return tolerance.energyPerSecond * duration;
+    case StudyMeasure::Penetration: {
+      double smallest = std::numeric_limits<double>::infinity();
+      for (const Ball& ball : scene.balls) smallest = std::min(smallest, ball.radius);
+      return scene.balls.empty() ? 0.0 : tolerance.penetrationFraction * smallest;
+    }
+    case StudyMeasure::Escaped:
+      return 0.0;
+    case StudyMeasure::SpeedDistribution:
+    case StudyMeasure::PositionDistribution:
+      return indistinguishableDistance(scene.balls.size());
+    case StudyMeasure::EnergyErrorPerSecond:
+      return tolerance.energyPerSecond;
+  }
+  return 0.0;
+}
+
+std::optional<std::size_t> cheapestWithin(const std::vector<StudyResult>& results,
+                                          StudyMeasure measure, double bound) {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (!(measureOf(results[i], measure) <= bound)) continue;  // NaN is not within
+    if (!best || results[i].computeSeconds < results[*best].computeSeconds) best = i;
+  }
+  return best;
+}
+
 }  // namespace carom

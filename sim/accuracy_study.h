@@ -110,6 +110,43 @@ void setAgreementHorizon(StudyReference& reference, const StudyResult& finest, d
 // `result`'s deviation at the reference's horizon, NaN when there is none.
 double positionErrorAtHorizon(const StudyResult& result, const StudyReference& reference);
 
+// The RMS distance within which a run agrees with `exact`, as setAgreementHorizon takes it:
+// kAgreementRadiusFraction of the scene's mean ball radius (0 without balls).
+double agreementRadius(const Scene& scene);
+
+// What the study plots of each run.
+enum class StudyMeasure {
+  PositionError,  // at the horizon, m
+  EnergyDrift,    // relative
+  Penetration,    // deepest, m
+  Escaped,        // balls
+  SpeedDistribution,
+  PositionDistribution,
+  EnergyErrorPerSecond,  // auto's measure
+};
+inline constexpr int kStudyMeasures = 7;
+// NaN when the run has none (position error without a horizon).
+double measureOf(const StudyResult& result, StudyMeasure measure);
+
+// The Kolmogorov-Smirnov distance below which two samples of `count` values each cannot be told
+// apart at 5 % significance (above 1 for fewer than 4: then any can).
+double indistinguishableDistance(std::size_t count);
+
+// The accuracy asked of the runs, as auto asks it (AccuracyTolerance, method_choice.h).
+struct StudyTolerance {
+  double energyPerSecond = 1e-3;
+  double penetrationFraction = 0.05;
+};
+// The largest value of `measure` within the tolerance for a run of `scene` over `duration`:
+// auto's own bounds for its measures (energy error per second, penetration as a depth, no
+// escape), the agreement radius for position error, auto's energy bound over the duration for
+// the drift, and indistinguishableDistance for the distributions.
+double toleranceOf(StudyMeasure measure, const StudyTolerance& tolerance, const Scene& scene,
+                   double duration);
+// The run with the least computing time whose `measure` is at most `bound`.
+std::optional<std::size_t> cheapestWithin(const std::vector<StudyResult>& results,
+                                          StudyMeasure measure, double bound);
+
 // The CPU time the calling thread has used so far, s (what computeSeconds counts).
 double threadCpuSeconds();
 

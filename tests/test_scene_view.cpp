@@ -120,6 +120,21 @@ double distanceBetween(const QPointF& a, const QPointF& b) {
   return std::hypot(a.x() - b.x(), a.y() - b.y());
 }
 
+// The editor's selection colour (255, 140, 13), as flat marks show it.
+bool isSelectionColour(QRgb pixel) {
+  return qRed(pixel) > 225 && std::abs(qGreen(pixel) - 140) < 30 && qBlue(pixel) < 60;
+}
+
+// Pixels of `image` in `area` that pass `test`.
+template <typename Test>
+int countPixels(const QImage& image, const QRect& area, Test test) {
+  int count = 0;
+  const QRect inside = area.intersected(image.rect());
+  for (int y = inside.top(); y <= inside.bottom(); ++y)
+    for (int x = inside.left(); x <= inside.right(); ++x) count += test(image.pixel(x, y));
+  return count;
+}
+
 }  // namespace
 
 class TestSceneView : public QObject {
@@ -157,6 +172,8 @@ class TestSceneView : public QObject {
   void trailsAndVelocityArrowsAreDrawn();
   void renderPictureDrawsAtItsOwnSize();
   void renderPictureWithoutHighlights();
+  void infiniteShapesReachTowardsTheHorizon();
+  void ballsOutOfViewAreMarkedAtTheEdge();
   void crowdsDrawSmallBallsAsSprites();
   void hugeScenesAreDrawnInPieces();
 
@@ -261,28 +278,35 @@ void TestSceneView::renderSceneClipsToTheRoom() {
   QCOMPARE(b.min.y(), -3.2);
   QVERIFY(b.max.y() > 3.2 + 0.1 && b.max.y() < 5.0);  // a bit above the highest ball
 
+  // Infinite planes and cylinders are drawn out to the horizon, a box as much larger on every
+  // side.
+  const Bounds& h = scene.horizon;
+  const double margin = carom::render::kHorizonRadii * b.radius();
+  QVERIFY((h.min - (b.min - Vec3::Constant(margin))).norm() < 1e-9);
+  QVERIFY((h.max - (b.max + Vec3::Constant(margin))).norm() < 1e-9);
   QCOMPARE(scene.planes.size(), std::size_t{5});
   for (const auto& plane : scene.planes) {
-    QCOMPARE(plane.polygon.size(), std::size_t{4});  // each face of the box is a rectangle
+    QCOMPARE(plane.polygon.size(), std::size_t{4});  // each cuts the horizon in a rectangle
     for (std::size_t i = 0; i < plane.polygon.size(); ++i) {
       const Vec3& p = plane.polygon[i];
-      QVERIFY(((p - b.min).array() >= -1e-9).all() && ((b.max - p).array() >= -1e-9).all());
+      QVERIFY(((p - h.min).array() >= -1e-9).all() && ((h.max - p).array() >= -1e-9).all());
       // Counter-clockwise seen from the normal's side: the room's inside.
       const Vec3 turn = (plane.polygon[(i + 1) % 4] - p).cross(plane.polygon[(i + 2) % 4] - p);
       QVERIFY(turn.dot(plane.normal) > 0.0);
     }
   }
   const Vec3 floorSize = scene.planes[0].polygon[2] - scene.planes[0].polygon[0];
-  QVERIFY(std::abs(std::abs(floorSize.x()) - 6.4) < 1e-9);
-  QVERIFY(std::abs(std::abs(floorSize.z()) - 6.4) < 1e-9);
+  QVERIFY(std::abs(std::abs(floorSize.x()) - (6.4 + 2 * margin)) < 1e-9);
+  QVERIFY(std::abs(std::abs(floorSize.z()) - (6.4 + 2 * margin)) < 1e-9);
 
-  // The slanted rod runs from the floor at the back to the front wall.
+  // The slanted rod runs through the room from the bottom of the horizon at the back to its
+  // front.
   QCOMPARE(scene.cylinders.size(), std::size_t{1});
   const auto& rod = scene.cylinders[0];
   const Vec3 low = rod.start.y() < rod.end.y() ? rod.start : rod.end;
   const Vec3 high = rod.start.y() < rod.end.y() ? rod.end : rod.start;
-  QVERIFY((low - Vec3(-2, -3.2, -3.2)).norm() < 1e-9);
-  QVERIFY((high - Vec3(-2, 3.2, 3.2)).norm() < 1e-9);
+  QVERIFY((low - Vec3(-2, h.min.z(), h.min.z())).norm() < 1e-9);
+  QVERIFY((high - Vec3(-2, h.max.z(), h.max.z())).norm() < 1e-9);
 
   // A plane that misses the box has nothing to draw.
   QVERIFY(carom::render::clipPlaneToBounds(Vec3(0, 50, 0), Vec3(0, 1, 0), b).empty());
@@ -996,4 +1020,99 @@ void TestSceneView::hugeScenesAreDrawnInPieces() {
 }
 
 QTEST_MAIN(TestSceneView)
+// Infinite planes and cylinders go on beyond the scene's bounds, fading, instead of ending at
+// them: seen from twice as far as Home, a green rod along x and a blue floor reach the view's
+// sides, where before the bounds ended well inside it and only the background showed.
+void TestSceneView::infiniteShapesReachTowardsTheHorizon() {
+  carom::Scene scene;
+  carom::Plane floor;
+  floor.color = "#0000ff";
+  scene.planes.push_back(floor);
+  carom::Cylinder rod;
+  rod.point = Vec3(0, 1.5, 0);
+  rod.axis = Vec3(1, 0, 0);
+  rod.radius = 0.3;
+  rod.color = "#00ff00";
+  scene.cylinders.push_back(rod);
+  scene.balls.push_back(ball(Vec3(0, 0.5, 1.5), "#ff0000"));
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  view.camera().zoom(-4.0);  // 1.9 times as far
+  view.update();
+  const int frames = *shown.frames;
+  QTRY_VERIFY(*shown.frames > frames);
+  const QImage image = view.grabFramebuffer();
+  if (const QString folder = qEnvironmentVariable("CAROM_SCREENSHOT_DIR"); !folder.isEmpty())
+    image.save(folder + "/infinite-shapes.png");
+  // The bounds end this far inside the view: nothing of them in the side strips.
+  const Bounds& bounds = view.scene()->bounds;
+  double leftmost = image.width(), rightmost = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 point((corner & 1) ? bounds.max.x() : bounds.min.x(),
+                     (corner & 2) ? bounds.max.y() : bounds.min.y(),
+                     (corner & 4) ? bounds.max.z() : bounds.min.z());
+    const double x = view.project(point).x() * view.devicePixelRatioF();
+    leftmost = std::min(leftmost, x);
+    rightmost = std::max(rightmost, x);
+  }
+  QVERIFY2(leftmost > 40 && rightmost < image.width() - 40,
+           qPrintable(QStringLiteral("bounds from x = %1 to %2").arg(leftmost).arg(rightmost)));
+  for (const QRect strip :
+       {QRect(0, 0, 12, image.height()), QRect(image.width() - 12, 0, 12, image.height())}) {
+    const int rod = countPixels(image, strip, [](QRgb p) { return hasHue(p, Green); });
+    const int floorSeen = countPixels(image, strip, [](QRgb p) { return hasHue(p, Blue); });
+    QVERIFY2(rod > 12, qPrintable(QStringLiteral("%1 rod pixels").arg(rod)));
+    QVERIFY2(floorSeen > 100, qPrintable(QStringLiteral("%1 floor pixels").arg(floorSeen)));
+  }
+  // Fading: far out the floor is darker than under the ball, nearer the background.
+  const QRgb near = pixelAt(view, image, Vec3(1.5, 0, 1.5));
+  const QRgb far = image.pixel(6, image.height() - 6);
+  QVERIFY2(qBlue(far) < qBlue(near) - 20, qPrintable(describe(near) + " vs " + describe(far)));
+}
+
+// A selected ball whose centre is out of the view gets a marker in the selection's colour at
+// the view's edge on its side (right, left, and behind the camera somewhere); an unselected one
+// gets none, nor does a selected ball in view.
+void TestSceneView::ballsOutOfViewAreMarkedAtTheEdge() {
+  const carom::Scene scene = testScene();
+  ShownView shown = showView(scene);
+  SceneView& view = *shown.view;
+  QTRY_VERIFY(*shown.frames > 0);
+  const auto frameWith = [&](const Vec3& redBall, std::vector<int> selected) {
+    view.setHighlighted(std::move(selected), {}, {}, {});
+    view.setBallPositions({redBall, scene.balls[1].position, scene.balls[2].position});
+    const int frames = *shown.frames;
+    [&] { QTRY_VERIFY(*shown.frames > frames); }();
+    return view.grabFramebuffer();
+  };
+  const auto marks = [](const QImage& image, const QRect& area) {
+    return countPixels(image, area, isSelectionColour);
+  };
+  const QVector3D eye = view.camera().eye();
+  const QVector3D target = view.camera().target();
+  const Vec3 forward = Vec3(target.x() - eye.x(), 0, target.z() - eye.z()).normalized();
+  const Vec3 right = forward.cross(Vec3::UnitY());
+  const Vec3 centre(target.x(), target.y(), target.z());
+  QImage image = frameWith(centre + 40 * right, {0});
+  const int w = image.width(), h = image.height();
+  const QRect rightEdge(w - 30, 0, 30, h), leftEdge(0, 0, 30, h), middle(30, 30, w - 60, h - 60);
+  if (const QString folder = qEnvironmentVariable("CAROM_SCREENSHOT_DIR"); !folder.isEmpty())
+    image.save(folder + "/offscreen-marker.png");
+  QVERIFY2(marks(image, rightEdge) > 40, qPrintable(QString::number(marks(image, rightEdge))));
+  QCOMPARE(marks(image, leftEdge), 0);
+  image = frameWith(centre - 40 * right, {0});
+  QVERIFY2(marks(image, leftEdge) > 40, qPrintable(QString::number(marks(image, leftEdge))));
+  QCOMPARE(marks(image, rightEdge), 0);
+  // Behind the camera: marked at some edge, never in the middle.
+  image = frameWith(Vec3(eye.x(), eye.y(), eye.z()) - 5 * forward, {0});
+  QVERIFY(marks(image, image.rect()) > 40);
+  QCOMPARE(marks(image, middle), 0);
+  // Not selected, or in view: no marker.
+  image = frameWith(centre + 40 * right, {});
+  QCOMPARE(marks(image, image.rect()), 0);
+  image = frameWith(scene.balls[0].position, {0});
+  QCOMPARE(marks(image, rightEdge) + marks(image, leftEdge), 0);
+}
+
 #include "test_scene_view.moc"

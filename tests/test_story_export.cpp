@@ -37,6 +37,7 @@ class TestStoryExport : public carom::testing::EditorFixture {
   void anEditRestartsTheStory();
   void dockIsInTheViewMenu();
   void exportWritesTheChosenSize();
+  void exportLeavesOutTheEditorsMarks();
   void exportRefusesBadSizesAndUnwritablePaths();
   void exportImageMenuAsksSizeThenFile();
   void screenshotOfTheMagicRoom();
@@ -268,6 +269,51 @@ void TestStoryExport::exportWritesTheChosenSize() {
            qPrintable(sizes));
   QVERIFY2(std::abs(inPicture.height() - scale * inView.height()) <= 0.15 * inPicture.height() + 2,
            qPrintable(sizes));
+}
+
+// With the floor selected, the view shows its normal's handle in the selection's colour and the
+// floor tinted by it; the exported image, at the view's own size, shows neither: it is the
+// picture of the scene with nothing selected.
+void TestStoryExport::exportLeavesOutTheEditorsMarks() {
+  const auto isHandle = [](const QColor& c) {
+    return c.red() > 225 && std::abs(c.green() - 140) < 30 && c.blue() < 60;
+  };
+  const auto handlePixels = [&](const QImage& image) {
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) count += isHandle(image.pixelColor(x, y));
+    return count;
+  };
+  const QSize size = view().size() * view().devicePixelRatio();
+  const Vec3 onFloor(2.0, 0.0, 1.0);
+  const auto floorPixel = [&](const QImage& image) {
+    return image.pixelColor((view().project(onFloor) * view().devicePixelRatioF()).toPoint());
+  };
+  const QColor unselectedFloor = floorPixel(view().grabFramebuffer());
+
+  document().setSelection({{ObjectKind::Plane, 0}});
+  const QImage shown = view().grabFramebuffer();
+  QVERIFY2(handlePixels(shown) > 20, qPrintable(QString::number(handlePixels(shown))));
+  QVERIFY2(floorPixel(shown) != unselectedFloor, qPrintable(floorPixel(shown).name()));
+
+  QTemporaryDir folder;
+  const QString file = folder.filePath("selected.png");
+  QCOMPARE(window_->imageExport()->write(file, size), QString());
+  const QImage exported(file);
+  QCOMPARE(exported.size(), size);
+  if (qEnvironmentVariableIsSet("CAROM_SCREENSHOT_DIR")) {
+    shown.save(qEnvironmentVariable("CAROM_SCREENSHOT_DIR") + "/export-view.png");
+    exported.save(qEnvironmentVariable("CAROM_SCREENSHOT_DIR") + "/export-image.png");
+  }
+  QCOMPARE(handlePixels(exported), 0);
+  const QColor exportedFloor = floorPixel(exported);
+  const int difference = std::abs(exportedFloor.red() - unselectedFloor.red()) +
+                         std::abs(exportedFloor.green() - unselectedFloor.green()) +
+                         std::abs(exportedFloor.blue() - unselectedFloor.blue());
+  QVERIFY2(difference <= 6, qPrintable(exportedFloor.name() + " vs " + unselectedFloor.name()));
+  // The view keeps its marks.
+  QCOMPARE(document().selection().size(), std::size_t(1));
+  QVERIFY(handlePixels(view().grabFramebuffer()) > 20);
 }
 
 void TestStoryExport::exportRefusesBadSizesAndUnwritablePaths() {

@@ -23,12 +23,18 @@ namespace {
 
 // Errors of exactly zero cannot sit on a log axis: they are drawn at this floor.
 constexpr double kErrorFloor = 1e-16;
+// No escape is the tolerance, and zero sits at the floor: the line runs between none and one.
+constexpr double kEscapedLine = 0.5;
 
 QString caseName(const StudyCase& c) {
   if (c.method == Method::Exact) return QString::fromUtf8(methodName(c.method));
   return QString("%1, %2, dt %3 s")
-      .arg(QString::fromUtf8(methodName(c.method)), QString::fromUtf8(integratorName(c.integrator)))
-      .arg(c.timeStep, 0, 'g', 4);
+      .arg(QString::fromUtf8(methodName(c.method)), QString::fromUtf8(integratorName(c.integrator)),
+           QLocale().toString(c.timeStep, 'g', 4));
+}
+
+QString number(double value) {
+  return QLocale().toString(value, 'g', 3);
 }
 
 }  // namespace
@@ -46,11 +52,16 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   connect(runner_.get(), &AccuracyStudyRunner::finished, this, &AccuracyWindow::finish);
   metricLabel_ = new QLabel;
   metric_ = new QComboBox;
-  metric_->addItems(QStringList(7));  // named by retranslate()
+  metric_->addItems(QStringList(kStudyMeasures));  // named by retranslate()
   connect(metric_, &QComboBox::currentIndexChanged, this, &AccuracyWindow::replot);
+
+  toleranceLabel_ = new QLabel;
+  toleranceLabel_->setObjectName("toleranceLabel");
+  toleranceLabel_->setWordWrap(true);
 
   chart_ = new QChart;
   chart_->legend()->setAlignment(Qt::AlignBottom);
+  chart_->setLocalizeNumbers(true);
   timeAxis_ = new QLogValueAxis;
   timeAxis_->setLabelFormat("%.0e");
   errorAxis_ = new QLogValueAxis;
@@ -70,17 +81,29 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
     series_.push_back(series);
   }
   toleranceLine_ = new QLineSeries;
+  toleranceLine_->setObjectName("toleranceLine");
   toleranceLine_->setPen(QPen(Qt::darkRed, 1.5, Qt::DashLine));
   chart_->addSeries(toleranceLine_);
   toleranceLine_->attachAxis(timeAxis_);
   toleranceLine_->attachAxis(errorAxis_);
   cheapestMarker_ = new QScatterSeries;
+  cheapestMarker_->setObjectName("cheapestRun");
   cheapestMarker_->setMarkerSize(20);
   cheapestMarker_->setBrush(Qt::NoBrush);
   cheapestMarker_->setPen(QPen(Qt::darkRed, 2.0));
   chart_->addSeries(cheapestMarker_);
   cheapestMarker_->attachAxis(timeAxis_);
   cheapestMarker_->attachAxis(errorAxis_);
+  // The run chosen in the table: a square around its point, unlike the cheapest run's ring.
+  chosenMarker_ = new QScatterSeries;
+  chosenMarker_->setObjectName("chosenRun");
+  chosenMarker_->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+  chosenMarker_->setMarkerSize(18);
+  chosenMarker_->setBrush(Qt::NoBrush);
+  chosenMarker_->setPen(QPen(Qt::black, 2.0));
+  chart_->addSeries(chosenMarker_);
+  chosenMarker_->attachAxis(timeAxis_);
+  chosenMarker_->attachAxis(errorAxis_);
   auto* chartView = new QChartView(chart_);
   chartView->setRenderHint(QPainter::Antialiasing);
   chartView->setMinimumSize(520, 360);
@@ -100,8 +123,10 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   applyButton_ = new QPushButton;
   applyButton_->setEnabled(false);
   connect(applyButton_, &QPushButton::clicked, this, &AccuracyWindow::applySelected);
-  connect(table_, &QTableWidget::itemSelectionChanged, this,
-          [this] { applyButton_->setEnabled(!table_->selectedItems().isEmpty()); });
+  connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
+    applyButton_->setEnabled(!table_->selectedItems().isEmpty());
+    showChosen();
+  });
   connect(table_, &QTableWidget::cellDoubleClicked, this, [this] { applySelected(); });
   note_ = new QLabel;
   note_->setWordWrap(true);
@@ -119,7 +144,8 @@ AccuracyWindow::AccuracyWindow(const carom::Scene& scene, QWidget* parent)
   bottom->addWidget(applyButton_);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(top);
-  layout->addWidget(chartView, 2);
+  layout->addWidget(toleranceLabel_);
+  layout->addWidget(chartView, 3);
   layout->addWidget(table_, 1);
   layout->addWidget(note_);
   layout->addWidget(summaryLabel_);
@@ -142,9 +168,11 @@ void AccuracyWindow::retranslate() {
                             tr("Position distribution against exact (KS distance)"),
                             tr("Energy error per simulated second (auto's measure)")};
   for (int i = 0; i < metrics.size(); ++i) metric_->setItemText(i, metrics[i]);
+  chart_->setLocale(QLocale());
   timeAxis_->setTitleText(tr("Computing time (s)"));
   toleranceLine_->setName(tr("Tolerance"));
   cheapestMarker_->setName(tr("Cheapest within the tolerance"));
+  chosenMarker_->setName(tr("Chosen run"));
   table_->setHorizontalHeaderLabels(
       {tr("Run"), tr("Computing time (s)"), tr("Position error at horizon (m)"), tr("Energy drift"),
        tr("Penetration (m)"), tr("Escaped"), tr("Speeds (KS)"), tr("Positions (KS)")});
@@ -157,6 +185,7 @@ void AccuracyWindow::retranslate() {
          "exact, and whole runs are judged by energy, penetration, escapes and distributions."));
   showDuration();
   showSummary();
+  for (int row = 0; row < table_->rowCount(); ++row) showRow(row);  // numbers in the locale's form
   replot();  // the error axis is named after the metric
 }
 
@@ -201,20 +230,29 @@ void AccuracyWindow::addResult(const StudyResult& result) {
   const int row = static_cast<int>(at - results_.begin());
   results_.insert(at, result);
   table_->insertRow(row);
-  const QStringList cells{caseName(result.settings),
-                          QString::number(result.computeSeconds, 'g', 3),
-                          std::isnan(result.positionError)
-                              ? QStringLiteral("\u2014")  // no horizon: nothing to measure
-                              : QString::number(result.positionError, 'g', 3),
-                          QString::number(result.energyDrift, 'g', 3),
-                          QString::number(result.maxPenetration, 'g', 3),
-                          QString::number(result.escaped),
-                          QString::number(result.speedDistribution, 'g', 3),
-                          QString::number(result.positionDistribution, 'g', 3)};
-  for (int column = 0; column < cells.size(); ++column)
-    table_->setItem(row, column, new QTableWidgetItem(cells[column]));
+  showRow(row);
   progress_->setValue(progress_->value() + 1);
   replot();
+}
+
+void AccuracyWindow::showRow(int row) {
+  const StudyResult& result = results_[static_cast<std::size_t>(row)];
+  const QStringList cells{caseName(result.settings),
+                          number(result.computeSeconds),
+                          std::isnan(result.positionError)
+                              ? QStringLiteral("\u2014")  // no horizon: nothing to measure
+                              : number(result.positionError),
+                          number(result.energyDrift),
+                          number(result.maxPenetration),
+                          QLocale().toString(result.escaped),
+                          number(result.speedDistribution),
+                          number(result.positionDistribution)};
+  for (int column = 0; column < cells.size(); ++column) {
+    if (QTableWidgetItem* item = table_->item(row, column))
+      item->setText(cells[column]);
+    else
+      table_->setItem(row, column, new QTableWidgetItem(cells[column]));
+  }
 }
 
 void AccuracyWindow::finish(const StudySummary& summary) {
@@ -253,23 +291,77 @@ void AccuracyWindow::showSummary() {
                              .arg(runs, wall, threads, locale.toString(speedUp, 'f', 1)));
 }
 
+StudyMeasure AccuracyWindow::measure() const {
+  return static_cast<StudyMeasure>(std::clamp(metric_->currentIndex(), 0, kStudyMeasures - 1));
+}
+
 double AccuracyWindow::errorOf(const StudyResult& result) const {
-  switch (metric_->currentIndex()) {
-    case 1:
-      return result.energyDrift;
-    case 2:
-      return result.maxPenetration;
-    case 3:
-      return result.escaped;
-    case 4:
-      return result.speedDistribution;
-    case 5:
-      return result.positionDistribution;
-    case 6:
-      return result.energyErrorPerSecond;
-    default:
-      return result.positionError;
+  return measureOf(result, measure());
+}
+
+double AccuracyWindow::tolerance() const {
+  return toleranceOf(measure(), tolerance_, scene_, duration_);
+}
+
+QPointF AccuracyWindow::plotted(const StudyResult& result) const {
+  return {std::max(result.computeSeconds, 1e-7), std::max(errorOf(result), kErrorFloor)};
+}
+
+void AccuracyWindow::showTolerance() {
+  const double bound = tolerance();
+  const QLocale locale;
+  const auto value = [&](double v) { return locale.toString(v, 'g', 3); };
+  QString name, within;
+  switch (measure()) {
+    case StudyMeasure::PositionError:
+      name = tr("position error at the horizon");
+      within = tr("at most %1 m, a tenth of the mean radius: as close as the finest setting "
+                  "stays to exact up to the horizon")
+                   .arg(value(bound));
+      break;
+    case StudyMeasure::EnergyDrift:
+      name = tr("relative energy drift");
+      within = tr("at most %1: auto's energy error per second times the %2 s of the run")
+                   .arg(value(bound), value(duration_));
+      break;
+    case StudyMeasure::Penetration:
+      name = tr("deepest penetration");
+      within = tr("at most %1 m: auto's %2 % of the smallest radius")
+                   .arg(value(bound), value(100.0 * tolerance_.penetrationFraction));
+      break;
+    case StudyMeasure::Escaped:
+      name = tr("escaped balls");
+      within = tr("none, as auto asks");
+      break;
+    case StudyMeasure::SpeedDistribution:
+    case StudyMeasure::PositionDistribution:
+      name = measure() == StudyMeasure::SpeedDistribution
+                 ? tr("speed distribution against exact")
+                 : tr("position distribution against exact");
+      within = tr("a KS distance of at most %1: %Ln balls cannot tell it from exact's at 5 % "
+                  "significance",
+                  nullptr, static_cast<int>(scene_.balls.size()))
+                   .arg(value(bound));
+      break;
+    case StudyMeasure::EnergyErrorPerSecond:
+      name = tr("energy error per simulated second");
+      within = tr("at most %1 per second, auto's accuracy").arg(value(bound));
+      break;
   }
+  toleranceLabel_->setText(
+      tr("Tolerance on %1: %2. Ringed: the cheapest run within it.").arg(name, within));
+}
+
+void AccuracyWindow::showChosen() {
+  QList<QPointF> chosen;
+  const QList<QTableWidgetItem*> selected = table_->selectedItems();
+  if (!selected.isEmpty()) {
+    const int row = selected.first()->row();
+    if (row >= 0 && row < static_cast<int>(results_.size()) &&
+        !std::isnan(errorOf(results_[static_cast<std::size_t>(row)])))
+      chosen.append(plotted(results_[static_cast<std::size_t>(row)]));
+  }
+  chosenMarker_->replace(chosen);
 }
 
 void AccuracyWindow::replot() {
@@ -278,9 +370,10 @@ void AccuracyWindow::replot() {
     QList<QPointF> points;
     for (const StudyResult& r : results_) {
       if (r.settings.method != Method(m) || std::isnan(errorOf(r))) continue;
-      const double x = std::max(r.computeSeconds, 1e-7);
-      const double y = std::max(errorOf(r), kErrorFloor);
-      points.append({x, y});
+      const QPointF point = plotted(r);
+      const double x = point.x();
+      const double y = point.y();
+      points.append(point);
       lowTime = std::min(lowTime, x);
       highTime = std::max(highTime, x);
       lowError = std::min(lowError, y);
@@ -288,29 +381,29 @@ void AccuracyWindow::replot() {
     }
     series_[m]->replace(points);
   }
-  // The tolerance where it bounds the metric shown: auto's energy measure, and penetration (as
-  // a depth, the fraction of the smallest radius).
-  std::optional<double> bound;
-  if (metric_->currentIndex() == 6) bound = tolerance_.energyPerSecond;
-  if (metric_->currentIndex() == 2 && !scene_.balls.empty()) {
-    double smallest = scene_.balls.front().radius;
-    for (const Ball& ball : scene_.balls) smallest = std::min(smallest, ball.radius);
-    bound = tolerance_.penetrationFraction * smallest;
-  }
+  // The tolerance of the measure shown, and the cheapest run under it: the ring, the line and
+  // the points all speak of the same measure (auto's accuracy bounds only some of them).
+  const double bound = tolerance();
+  const double lineAt = measure() == StudyMeasure::Escaped ? kEscapedLine : bound;
   QList<QPointF> line;
-  if (bound && highTime > 0) {
-    line = {{lowTime / 2, *bound}, {highTime * 2, *bound}};
-    lowError = std::min(lowError, *bound);
-    highError = std::max(highError, *bound);
+  if (highTime > 0 && lineAt > 0.0 && std::isfinite(lineAt)) {
+    line = {{lowTime / 2, lineAt}, {highTime * 2, lineAt}};
+    lowError = std::min(lowError, lineAt);
+    highError = std::max(highError, lineAt);
   }
   toleranceLine_->replace(line);
   QList<QPointF> cheapest;
-  if (const std::optional<std::size_t> best = cheapestWithinTolerance();
-      best && !std::isnan(errorOf(results_[*best])))
-    cheapest.append({std::max(results_[*best].computeSeconds, 1e-7),
-                     std::max(errorOf(results_[*best]), kErrorFloor)});
+  if (const std::optional<std::size_t> best = cheapestWithinTolerance())
+    cheapest.append(plotted(results_[*best]));
   cheapestMarker_->replace(cheapest);
-  errorAxis_->setTitleText(metric_->currentText());
+  showChosen();
+  showTolerance();
+  // Short: the axis is as long as the plot is high, and the box above names the metric in full.
+  const QStringList axisTitles{tr("Position error (m)"),     tr("Energy drift"),
+                               tr("Penetration (m)"),        tr("Escaped balls"),
+                               tr("Speeds (KS distance)"),   tr("Positions (KS distance)"),
+                               tr("Energy error per second")};
+  errorAxis_->setTitleText(axisTitles[static_cast<int>(measure())]);
   if (highTime > 0) {
     timeAxis_->setRange(lowTime / 2, highTime * 2);
     errorAxis_->setRange(lowError / 10, highError * 10);
@@ -322,19 +415,12 @@ void AccuracyWindow::replot() {
 
 void AccuracyWindow::setTolerance(const AccuracyTolerance& tolerance) {
   if (!validateTolerance(tolerance).empty()) return;
-  tolerance_ = tolerance;
+  tolerance_ = {tolerance.energyPerSecond, tolerance.penetrationFraction};
   replot();
 }
 
 std::optional<std::size_t> AccuracyWindow::cheapestWithinTolerance() const {
-  std::optional<std::size_t> best;
-  for (std::size_t i = 0; i < results_.size(); ++i) {
-    const StudyResult& r = results_[i];
-    if (!meetsTolerance(r.energyErrorPerSecond, r.penetrationFraction, r.escaped, tolerance_))
-      continue;
-    if (!best || r.computeSeconds < results_[*best].computeSeconds) best = i;
-  }
-  return best;
+  return cheapestWithin(results_, measure(), tolerance());
 }
 
 void AccuracyWindow::showDuration() {
@@ -356,8 +442,9 @@ void AccuracyWindow::selectNearest(Method method, const QPointF& point) {
   double bestDistance = 1e300;
   for (std::size_t i = 0; i < results_.size(); ++i) {
     if (results_[i].settings.method != method) continue;
-    const double dx = std::log10(std::max(results_[i].computeSeconds, 1e-7) / point.x());
-    const double dy = std::log10(std::max(errorOf(results_[i]), kErrorFloor) / point.y());
+    const QPointF at = plotted(results_[i]);
+    const double dx = std::log10(at.x() / point.x());
+    const double dy = std::log10(at.y() / point.y());
     if (dx * dx + dy * dy < bestDistance) {
       bestDistance = dx * dx + dy * dy;
       best = static_cast<int>(i);

@@ -18,6 +18,7 @@ class QLineSeries;
 class QLogValueAxis;
 class QScatterSeries;
 class QComboBox;
+class QPointF;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -36,9 +37,11 @@ class AccuracyWindow : public QDialog {
     duration_ = seconds;
     showDuration();
   }
-  // The accuracy the plots draw, and the cheapest run that meets it; auto's default unless set.
+  // Auto's accuracy, which sets the tolerance of the measures it bounds and of the energy drift
+  // (toleranceOf); auto's default unless set.
   void setTolerance(const AccuracyTolerance& tolerance);
-  // The cheapest finished run that meets the tolerance, an index into results().
+  // The cheapest finished run whose plotted measure is within its tolerance (the ringed one), an
+  // index into results().
   std::optional<std::size_t> cheapestWithinTolerance() const;
   void start();
   void cancel();
@@ -55,7 +58,19 @@ class AccuracyWindow : public QDialog {
 
  private:
   void retranslate();
+  // The measure plotted, chosen in the window.
+  carom::StudyMeasure measure() const;
+  // Its tolerance: the line drawn on the plot.
+  double tolerance() const;
   void addResult(const StudyResult& result);
+  // The table's row of results_[row], its numbers in the language's format.
+  void showRow(int row);
+  // What the tolerance of the measure shown is, and why, above the chart.
+  void showTolerance();
+  // The run chosen in the table, marked in the chart.
+  void showChosen();
+  // Where a run's point is drawn: zeros at the floor of the log axis.
+  QPointF plotted(const StudyResult& result) const;
   void finish(const StudySummary& summary);
   void showSummary();
   // The simulated duration, and the agreement horizon once known, in the chart's title.
@@ -79,9 +94,11 @@ class AccuracyWindow : public QDialog {
   QLogValueAxis* timeAxis_;
   QLogValueAxis* errorAxis_;
   std::vector<QScatterSeries*> series_;  // one per method, in Method order
-  AccuracyTolerance tolerance_;
-  QLineSeries* toleranceLine_;      // on the metrics the tolerance bounds
-  QScatterSeries* cheapestMarker_;  // ringing the cheapest run within the tolerance
+  StudyTolerance tolerance_;
+  QLabel* toleranceLabel_;
+  QLineSeries* toleranceLine_;      // the tolerance of the measure shown
+  QScatterSeries* cheapestMarker_;  // ringing the cheapest run within it
+  QScatterSeries* chosenMarker_;    // the run chosen in the table
   QTableWidget* table_;
   QProgressBar* progress_;
   QPushButton* cancelButton_;

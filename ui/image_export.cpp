@@ -130,7 +130,12 @@ QString ImageExport::write(const QString& fileName, const QSize& size) {
   const QString sizeError = ImageSizeDialog::readSize(QString::number(size.width()),
                                                       QString::number(size.height()), &checked);
   if (!sizeError.isEmpty()) return sizeError;
-  const QImage image = view_->renderPicture(view_->picture(), size);
+  // The scene as shown, without what belongs to the editor (handles, the selection's highlight),
+  // as Export Video draws it.
+  render::SceneView::Picture picture = view_->picture();
+  picture.handleArrows.clear();
+  picture.highlights = false;
+  const QImage image = view_->renderPicture(picture, size);
   if (image.isNull())
     return tr("The graphics driver could not draw a %1×%2 picture.")
         .arg(size.width())

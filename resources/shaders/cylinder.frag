@@ -4,5 +4,6 @@ in vec3 worldNormal;
 in vec3 baseColor;
 out vec4 fragColor;
 void main() {
-  fragColor = vec4(shade(baseColor, worldNormal, worldPosition, 24.0, 0.18), 1.0);
+  vec3 shaded = shade(baseColor, worldNormal, worldPosition, 24.0, 0.18);
+  fragColor = vec4(fadeBeyondBounds(shaded, worldPosition), 1.0);
 }

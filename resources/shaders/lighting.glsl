@@ -19,3 +19,16 @@ vec3 shade(vec3 base, vec3 normal, vec3 position, float shininess, float specula
   float highlight = diffuse > 0.0 ? pow(max(dot(n, halfway), 0.0), shininess) : 0.0;
   return base * (ambient + diffuseStrength * diffuse) + vec3(specularStrength * highlight);
 }
+
+// Infinite planes and cylinders fade into the background beyond the scene's bounds, so that
+// their far parts read as distance rather than as an edge (render::kFadeRadii).
+uniform vec3 boundsMin;
+uniform vec3 boundsMax;
+uniform float fadeLength;  // metres beyond the bounds to fade by e^-1; 0 for no fading
+uniform vec3 backgroundColor;
+
+vec3 fadeBeyondBounds(vec3 color, vec3 position) {
+  if (fadeLength <= 0.0) return color;
+  vec3 outside = max(max(boundsMin - position, position - boundsMax), vec3(0.0));
+  return mix(backgroundColor, color, exp(-length(outside) / fadeLength));
+}

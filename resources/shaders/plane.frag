@@ -14,5 +14,6 @@ void main() {
   float line = max(onLine.x, onLine.y);
   float dark = mod(floor(grid.x) + floor(grid.y), 2.0);
   vec3 textured = baseColor * (1.0 - fade * (0.06 * dark + 0.14 * line));
-  fragColor = vec4(shade(textured, worldNormal, worldPosition, 16.0, 0.04), 1.0);
+  vec3 shaded = shade(textured, worldNormal, worldPosition, 16.0, 0.04);
+  fragColor = vec4(fadeBeyondBounds(shaded, worldPosition), 1.0);
 }

@@ -58,9 +58,10 @@ QMatrix4x4 Camera::view() const {
 
 QMatrix4x4 Camera::projection() const {
   // The near plane follows the distance so that zooming in on a small ball does not cut it,
-  // the far plane reaches past the whole scene seen from the far side.
+  // the far plane reaches past the scene's horizon (whose half diagonal is under
+  // 1 + 2 kHorizonRadii scene radii) seen from the far side.
   const double nearPlane = std::max(distance_ * 0.01, kMinDistance * 0.1);
-  const double farPlane = distance_ + 4.0 * sceneRadius_ + nearPlane;
+  const double farPlane = distance_ + 4.0 * (1.0 + 2.0 * kHorizonRadii) * sceneRadius_ + nearPlane;
   QMatrix4x4 matrix;
   matrix.perspective(static_cast<float>(verticalFov_), static_cast<float>(aspectRatio_),
                      static_cast<float>(nearPlane), static_cast<float>(farPlane));

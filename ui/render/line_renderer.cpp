@@ -98,4 +98,17 @@ void LineRenderer::drawPath(const QMatrix4x4& viewProjection, const std::vector<
   gl_->glDrawArrays(GL_LINE_STRIP, 0, static_cast<GLsizei>(vertices.size()));
 }
 
+void LineRenderer::drawScreenTriangles(const std::vector<Float3>& vertices, const QColor& color) {
+  if (vertices.size() < 3) return;
+  uploadBuffer(gl_, buffer_, vertices, GL_STREAM_DRAW);
+  program_->bind();
+  program_->setUniformValue("viewProjection", QMatrix4x4());
+  program_->setUniformValue("lineColor", rgb(color));
+  gl_->glBindVertexArray(vao_);
+  gl_->glDisable(GL_DEPTH_TEST);
+  gl_->glDisable(GL_CULL_FACE);
+  gl_->glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+  gl_->glEnable(GL_DEPTH_TEST);
+}
+
 }  // namespace carom::render

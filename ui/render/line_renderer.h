@@ -1,9 +1,11 @@
 #pragma once
 // Plain lines in one colour each: the world's axes, the editor's handle arrows, the watched
-// balls' velocity arrows and trails, which share one program and one streamed buffer.
+// balls' velocity arrows and trails, which share one program and one streamed buffer; and flat
+// triangles on the screen (the markers of balls outside the view) through the same.
 
 #include "sim/scene.h"
 #include "ui/render/bounds.h"
+#include "ui/render/gl_util.h"
 
 #include <QColor>
 #include <QMatrix4x4>
@@ -33,6 +35,9 @@ class LineRenderer {
   // A line through `points` in order, hidden where the scene is in front of it.
   void drawPath(const QMatrix4x4& viewProjection, const std::vector<Vec3>& points,
                 const QColor& color);
+  // Filled triangles given in normalized device coordinates (three vertices each), on top of
+  // everything: marks on the picture itself rather than in the scene.
+  void drawScreenTriangles(const std::vector<Float3>& vertices, const QColor& color);
 
  private:
   QOpenGLFunctions_3_3_Core* gl_;

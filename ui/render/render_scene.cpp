@@ -222,13 +222,14 @@ bool clipLineToBounds(const Vec3& point, const Vec3& direction, const Bounds& bo
 RenderScene makeRenderScene(const Scene& scene) {
   RenderScene render;
   render.bounds = sceneBounds(scene);
+  render.horizon = render.bounds.grown(kHorizonRadii * render.bounds.radius());
   render.gridSpacing = niceStep(render.bounds.size().maxCoeff() / 12.0);
 
   for (const Plane& plane : scene.planes) {
     RenderPlane rendered;
     rendered.normal = plane.normal.normalized();
     rendered.color = colorOr(plane.color, kDefaultPlaneColor);
-    rendered.polygon = clipPlaneToBounds(plane.point, plane.normal, render.bounds);
+    rendered.polygon = clipPlaneToBounds(plane.point, plane.normal, render.horizon);
     render.planes.push_back(std::move(rendered));
   }
   for (const Cylinder& cylinder : scene.cylinders) {
@@ -239,7 +240,7 @@ RenderScene makeRenderScene(const Scene& scene) {
     if (shape.capped()) {
       rendered.start = shape.point - shape.halfLength * shape.axis;
       rendered.end = shape.point + shape.halfLength * shape.axis;
-    } else if (!clipLineToBounds(cylinder.point, cylinder.axis, render.bounds, &rendered.start,
+    } else if (!clipLineToBounds(cylinder.point, cylinder.axis, render.horizon, &rendered.start,
                                  &rendered.end)) {
       rendered.start = rendered.end = cylinder.point;
     }

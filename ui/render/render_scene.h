@@ -1,6 +1,7 @@
 #pragma once
 // The part of a scene the renderer needs that does not move while it runs: geometry of the
-// static objects already clipped to a finite box, ball sizes and colours. Built once per scene.
+// static objects already clipped to a finite box (the horizon), ball sizes and colours. Built
+// once per scene.
 
 #include "sim/scene.h"
 #include "ui/render/bounds.h"
@@ -16,14 +17,14 @@ namespace carom::render {
 struct RenderPlane {
   Vec3 normal = Vec3::UnitY();  // unit length
   QColor color;
-  // The plane clipped to the bounds: a convex polygon, counter-clockwise seen from the side the
-  // normal points to. Empty when the plane misses the bounds.
+  // The plane clipped to the scene's horizon: a convex polygon, counter-clockwise seen from the
+  // side the normal points to. Empty when the plane misses it.
   std::vector<Vec3> polygon;
 };
 
 struct RenderCylinder {
-  // The ends of a capped cylinder, or the axis clipped to the bounds (`start == end` when it
-  // misses them).
+  // The ends of a capped cylinder, or the axis clipped to the scene's horizon (`start == end`
+  // when it misses it).
   Vec3 start = Vec3::Zero();
   Vec3 end = Vec3::Zero();
   double radius = 1.0;
@@ -38,6 +39,8 @@ struct RenderBox {
 
 struct RenderScene {
   Bounds bounds;
+  // The bounds grown by kHorizonRadii of their radius: where infinite shapes end.
+  Bounds horizon;
   std::vector<RenderPlane> planes;
   std::vector<RenderCylinder> cylinders;
   std::vector<RenderBox> boxes;

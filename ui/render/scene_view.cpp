@@ -25,7 +25,6 @@ namespace {
 
 // ---- Vertex layouts -----------------------------------------------------------------------------
 
-const QColor kSelectionColor(255, 140, 13);
 // Velocity arrows of the watched balls: apart from the handles' orange, the sparks' yellow and
 // the trails' tints of the balls' colours.
 const QColor kVelocityColor(255, 255, 255);
@@ -85,6 +84,11 @@ constexpr int kExplosionFrameMilliseconds = 16;
 constexpr GLint kSamples = 4;  // multisampling, when antialiasing is on
 
 const Vec3 kLightDirection = Vec3(0.35, 1.0, 0.55).normalized();
+const QVector3D kBackground(0.16f, 0.17f, 0.20f);
+
+QVector3D toQVector(const Vec3& v) {
+  return QVector3D(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
+}
 
 // Multisampling's samples, when antialiasing is on: as many as asked if the driver has them.
 GLint multisamples(QOpenGLFunctions_3_3_Core* gl) {
@@ -354,7 +358,7 @@ void SceneView::createCylinderBuffers() {
 }
 
 void SceneView::createCylinderMesh() {
-  // A unit cylinder with both ends closed: clipped at the bounds, its cut faces show.
+  // A unit cylinder with both ends closed: clipped at the horizon, its cut faces show (faded).
   std::vector<CylinderVertex> vertices;
   const auto ring = [](int segment) {
     const double angle = 2.0 * std::numbers::pi * segment / kCylinderSegments;
@@ -523,7 +527,7 @@ void SceneView::uploadStaticData() {
     }
     for (std::size_t index = 0; index < scene_->cylinders.size(); ++index) {
       const RenderCylinder& cylinder = scene_->cylinders[index];
-      if ((cylinder.end - cylinder.start).norm() == 0.0) continue;  // misses the bounds
+      if ((cylinder.end - cylinder.start).norm() == 0.0) continue;  // misses the horizon
       cylinders.push_back({toFloat3(cylinder.start), toFloat3(cylinder.end),
                            static_cast<float>(cylinder.radius),
                            pack(shown(cylinder.color, selectedCylinders[index]))});
@@ -586,6 +590,7 @@ void SceneView::drawAfterBalls(const FrameCamera& frame,
     lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kVelocityColor);
   for (const auto& [base, tip] : handleArrows)
     lineRenderer_->drawArrow(frame.viewProjection, frame.eye, base, tip, kSelectionColor);
+  drawOffscreenMarkers(frame);
 }
 
 void SceneView::advanceExplosions() {
@@ -604,7 +609,7 @@ bool SceneView::beginFrame() {
 }
 
 void SceneView::clearFrame() {
-  glClearColor(0.16f, 0.17f, 0.20f, 1.0f);
+  glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -626,12 +631,22 @@ void SceneView::useProgram(QOpenGLShaderProgram& program, const FrameCamera& fra
   program.setUniformValue("lightDirection", frame.light);
 }
 
+void SceneView::setFadeBeyondBounds(QOpenGLShaderProgram& program) {
+  if (!scene_) return;
+  const Bounds& bounds = scene_->bounds;
+  program.setUniformValue("boundsMin", toQVector(bounds.min));
+  program.setUniformValue("boundsMax", toQVector(bounds.max));
+  program.setUniformValue("fadeLength", static_cast<float>(kFadeRadii * bounds.radius()));
+  program.setUniformValue("backgroundColor", kBackground);
+}
+
 void SceneView::drawStatics(const FrameCamera& frame) {
   // Also hides the walls seen from outside (their front faces point into the room), which is
   // what lets the camera look in from beyond them.
   glEnable(GL_CULL_FACE);
   if (cylinderInstanceCount_ > 0) {
     useProgram(*cylinderProgram_, frame);
+    setFadeBeyondBounds(*cylinderProgram_);
     glBindVertexArray(cylinderVao_);
     glDrawArraysInstanced(GL_TRIANGLES, 0, cylinderVertexCount_, cylinderInstanceCount_);
   }
@@ -643,6 +658,7 @@ void SceneView::drawStatics(const FrameCamera& frame) {
   }
   if (planeVertexCount_ > 0) {
     useProgram(*planeProgram_, frame);
+    setFadeBeyondBounds(*planeProgram_);
     glBindVertexArray(planeVao_);
     // Pushed back by a step of depth, so that lines lying in a plane (the axes) show on it.
     glEnable(GL_POLYGON_OFFSET_FILL);

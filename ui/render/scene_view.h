@@ -55,8 +55,9 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     std::vector<Arrow> velocityArrows;
     std::vector<Arrow> handleArrows;
     Camera camera;  // its aspect ratio is the picture's own
-    // The selection in its highlight colour, as the view shows it; off for a picture of the
-    // scene alone (a video).
+    // The selection in its highlight colour and the markers of selected or followed balls out
+    // of the picture, as the view shows them; off for a picture of the scene alone (an exported
+    // image or video).
     bool highlights = true;
   };
   // Sides of a rendered picture, in pixels.
@@ -104,7 +105,8 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   // Its inverse: the eye and the unit direction of the ray under a point of the widget.
   std::pair<Vec3, Vec3> rayAt(const QPointF& widgetPosition) const;
 
-  // The box the view clips infinite planes and cylinders to: picking ignores what lies outside.
+  // The scene's bounds: infinite planes and cylinders are drawn beyond them, fading out, but
+  // picking ignores what lies outside.
   Eigen::AlignedBox3d clipBox() const;
   // Shown in the selection's colour (indices into the scene's balls, planes, cylinders, boxes).
   void setHighlighted(std::vector<int> balls, std::vector<int> planes, std::vector<int> cylinders,
@@ -227,6 +229,11 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
                       const std::vector<Trail>& trails, const std::vector<Arrow>& velocityArrows,
                       const std::vector<Arrow>& handleArrows);
   void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
+  // The fading of infinite shapes beyond the scene's bounds (lighting.glsl), for a bound program.
+  void setFadeBeyondBounds(QOpenGLShaderProgram& program);
+  // At the view's edge, pointing to each selected or followed ball whose centre is outside the
+  // picture (scene_view_markers.cpp).
+  void drawOffscreenMarkers(const FrameCamera& frame);
   // Fills the element buffer with the balls nearest first: the squares' triangles, then the
   // point sprites' vertices (in scenes of kPointSpriteBalls or more, the balls whose sprite fits
   // the renderer's largest point).

@@ -44,6 +44,8 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
     ownHighlights[2] = std::exchange(highlightedCylinders_, {});
     ownHighlights[3] = std::exchange(highlightedBoxes_, {});
   }
+  // Without the selection, the followed ball gets no marker either.
+  const int ownFollowed = picture.highlights ? followedBall_ : std::exchange(followedBall_, -1);
   if (otherScene) markBallAttributesDirty();
   if (otherScene || staticDataDirty_ || plain) uploadStaticData();
   uploadBallPositions();
@@ -81,6 +83,7 @@ QImage SceneView::renderPicture(const Picture& picture, const QSize& size) {
     highlightedCylinders_ = std::move(ownHighlights[2]);
     highlightedBoxes_ = std::move(ownHighlights[3]);
   }
+  followedBall_ = ownFollowed;
   if (otherScene || plain) staticDataDirty_ = true;
   if (otherScene) markBallAttributesDirty();
   positionsDirty_ = true;

@@ -1,6 +1,6 @@
 #pragma once
 // The vertex data the scene view's files share: packed colours, the balls' per-vertex
-// attributes, and which items of a list are selected.
+// attributes, which items of a list are selected, and the selection's colour.
 
 #include <QColor>
 
@@ -9,6 +9,9 @@
 #include <vector>
 
 namespace carom::render {
+
+// The editor's handles, the selection's tint and the markers of selected balls out of view.
+inline const QColor kSelectionColor(255, 140, 13);
 
 struct PackedColor {
   std::uint8_t r, g, b, a;
