@@ -13,6 +13,8 @@
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/simulation_snapshot.h"
 
 #include <QChartView>
 #include <QClipboard>
@@ -29,6 +31,7 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoStack>
+#include <QUndoView>
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +56,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void selectingInTheOutlineSelectsInTheView();
   void selectingInTheViewSelectsInTheOutline();
   void renamingInTheOutline();
+  void viewKeysWorkWhereverTheFocusIs();
   void editsAFieldAsOneCommand();
   void refusesBadValues_data();
   void refusesBadValues();
@@ -109,6 +113,12 @@ class TestEditorDocks : public carom::testing::EditorFixture {
     tree().scrollTo(index);
     QTest::mouseClick(tree().viewport(), Qt::LeftButton, modifiers,
                       tree().visualRect(index).center());
+  }
+  // A double click opens the row's name for editing (F2 follows a ball wherever the focus is).
+  void startRenaming(const QModelIndex& index) {
+    tree().scrollTo(index);
+    QTest::mouseDClick(tree().viewport(), Qt::LeftButton, Qt::NoModifier,
+                       tree().visualRect(index).center());
   }
   // Pixels of the view's image, in the square round the ball, that differ from `before`.
   int changedPixelsAroundBall(const QImage& before) {
@@ -275,10 +285,69 @@ void TestEditorDocks::selectingInTheViewSelectsInTheOutline() {
   QVERIFY(outlineSelection().empty());
 }
 
+// Issue 34: after a click in the Outline, Home moved the tree's current row and F2 renamed the
+// object instead of framing the scene and following a ball. The view's keys are the window's,
+// wherever the focus is, except in a text field being edited.
+void TestEditorDocks::viewKeysWorkWhereverTheFocusIs() {
+  view().frameScene();
+  const double framed = view().camera().distance();
+  auto* run = window_->findChild<QAction*>("run");
+  auto* timeStep = window_->findChild<QDoubleSpinBox*>("timeStep");
+  QVERIFY(run && timeStep);
+  auto* history = window_->findChild<QUndoView*>();
+  QVERIFY(history);
+  const QModelIndex wall = outline().index(1, 0, outline().groupIndex(ObjectKind::Plane));
+  for (QWidget* focus : {static_cast<QWidget*>(&tree()), static_cast<QWidget*>(history)}) {
+    if (focus == &tree()) {
+      clickRow(wall);
+    } else {
+      QTest::mouseClick(history->viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(5, 5));
+    }
+    QTRY_VERIFY(focus->hasFocus());
+    const QModelIndex current = tree().currentIndex();
+    view().camera().zoom(-3);
+    QTest::keyClick(focus, Qt::Key_Home);
+    QVERIFY2(std::abs(view().camera().distance() - framed) < 1e-9,
+             qPrintable(QString("distance %1, framed %2")
+                            .arg(view().camera().distance())
+                            .arg(framed)));
+    QCOMPARE(tree().currentIndex(), current);
+    QTest::keyClick(focus, Qt::Key_F2);
+    QCOMPARE(view().followedBall(), 0);
+    QVERIFY(!tree().viewport()->findChild<QLineEdit*>() ||
+            !tree().viewport()->findChild<QLineEdit*>()->isVisible());
+    QTest::keyClick(focus, Qt::Key_F2);
+    QCOMPARE(view().followedBall(), -1);
+    QTest::keyClick(focus, Qt::Key_Space);
+    QVERIFY(run->isChecked());
+    QTest::keyClick(focus, Qt::Key_Space);
+    QVERIFY(!run->isChecked());
+    const double step = timeStep->value();
+    QTest::keyClick(focus, Qt::Key_Plus);
+    QCOMPARE(timeStep->value(), step * 1.25);
+    QTest::keyClick(focus, Qt::Key_Minus);
+    QVERIFY(std::abs(timeStep->value() - step) < 1e-15);
+    QTest::keyClick(focus, Qt::Key_S);
+    QTRY_VERIFY(window_->simulation().latest()->time > 0.0);
+    QTest::keyClick(focus, Qt::Key_R);
+    QTRY_COMPARE(window_->simulation().latest()->time, 0.0);
+    QVERIFY(focus->hasFocus());  // the keys did not take the focus away
+  }
+  // In a text field being edited, the keys are the field's.
+  startRenaming(wall);
+  auto* editor = tree().viewport()->findChild<QLineEdit*>();
+  QTRY_VERIFY(editor && editor->isVisible());
+  QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(editor, "s r+-");
+  QCOMPARE(editor->text(), QString("s r+-"));
+  QVERIFY(!run->isChecked());
+  QTest::keyClick(editor, Qt::Key_Escape);
+}
+
 void TestEditorDocks::renamingInTheOutline() {
   const QModelIndex wall = outline().index(1, 0, outline().groupIndex(ObjectKind::Plane));
   clickRow(wall);
-  QTest::keyClick(&tree(), Qt::Key_F2);
+  startRenaming(wall);
   auto* editor = tree().viewport()->findChild<QLineEdit*>();
   QTRY_VERIFY(editor && editor->isVisible());
   QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
@@ -1209,7 +1278,7 @@ void TestEditorDocks::outlineRefusesNamesOverTheLimit() {
   const QModelIndex floor = outline().index(0, 0, outline().groupIndex(ObjectKind::Plane));
   clickRow(floor);
   const carom::Scene before = document().scene();
-  QTest::keyClick(&tree(), Qt::Key_F2);
+  startRenaming(floor);
   auto* editor = tree().viewport()->findChild<QLineEdit*>();
   QTRY_VERIFY(editor && editor->isVisible());
   QApplication::clipboard()->setText(QString(300, QChar(0x00e9)));

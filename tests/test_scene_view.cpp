@@ -162,7 +162,7 @@ class TestSceneView : public QObject {
   void antialiasingChangesOnlyEdges();
   void leftDragOrbits();
   void wheelZooms();
-  void arrowKeysRotateAndHomeFrames();
+  void arrowKeysRotateAndFramingResets();
   void followingKeepsTheBallCentred();
   void explosionsKeepToTheirLimit();
   void explosionsFadeOutWhilePaused();
@@ -604,7 +604,7 @@ void TestSceneView::wheelZooms() {
   QVERIFY(view.camera().distance() > distance);
 }
 
-void TestSceneView::arrowKeysRotateAndHomeFrames() {
+void TestSceneView::arrowKeysRotateAndFramingResets() {
   const carom::Scene scene = testScene();
   ShownView shown = showView(scene);
   SceneView& view = *shown.view;
@@ -624,7 +624,7 @@ void TestSceneView::arrowKeysRotateAndHomeFrames() {
 
   view.camera().zoom(-3);
   view.camera().pan(0.3, 0.1);
-  QTest::keyClick(&view, Qt::Key_Home);
+  view.frameScene();  // Home, in the window (test_main_window)
   QCOMPARE(view.camera().yaw(), Camera::kDefaultYaw);
   QCOMPARE(view.camera().pitch(), Camera::kDefaultPitch);
   QVERIFY(std::abs(view.camera().distance() - home.distance()) < 1e-9);

@@ -136,7 +136,7 @@ QString HelpWindow::keyboardAndMouseHtml() {
         {tr("Dropping a file on the window"), tr("Open it")}}},
       {tr("Outline and Properties"),
        {{tr("Click, Ctrl+click, Shift+click"), tr("Select objects, as in the view")},
-        {tr("Double-click, F2 (in the outline)"), tr("Rename the object")},
+        {tr("Double-click (in the outline)"), tr("Rename the object")},
         {tr("Enter, or leaving a field"), tr("Apply the typed value")}}},
       {tr("Speed vs Accuracy"),
        {{tr("Click a point"), tr("Select its run in the table")},

@@ -223,6 +223,13 @@ void MainWindow::buildActions() {
   connect(fullScreenAction_, &QAction::toggled, this,
           [this](bool on) { on ? showFullScreen() : showNormal(); });
 
+  // The view's keys are the window's: they work wherever the focus is, except in a text field
+  // being edited (which takes its own keys first).
+  frameAction_ = new QAction(this);
+  frameAction_->setObjectName("frameScene");
+  frameAction_->setShortcut(Qt::Key_Home);
+  connect(frameAction_, &QAction::triggered, this, [this] { view_->frameScene(); });
+
   followAction_ = new QAction(this);
   followAction_->setShortcut(Qt::Key_F2);
   followAction_->setCheckable(true);
@@ -343,7 +350,8 @@ void MainWindow::buildMenus() {
 
   viewMenu_ = menuBar()->addMenu(QString());
   viewMenu_->addActions(
-      {followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_, muteAction_});
+      {frameAction_, followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_,
+       muteAction_});
   viewMenu_->addSeparator();
   viewMenu_->addAction(energyDock_->toggleViewAction());
   viewMenu_->addAction(storyDock_->toggleViewAction());
@@ -480,6 +488,7 @@ void MainWindow::retranslate() {
   files_->retranslate();
 
   viewMenu_->setTitle(tr("&View"));
+  frameAction_->setText(tr("F&rame Scene"));
   followAction_->setText(tr("&Follow Ball"));
   fullScreenAction_->setText(tr("&Full Screen"));
   explosionsAction_->setText(tr("&Explosions"));

@@ -196,6 +196,7 @@ class MainWindow : public QMainWindow {
   QAction* stepAction_ = nullptr;
   QAction* resetAction_ = nullptr;
   QAction* fullScreenAction_ = nullptr;
+  QAction* frameAction_ = nullptr;
   QAction* followAction_ = nullptr;
   QToolBar* toolsBar_ = nullptr;
   QToolBar* simulationBar_ = nullptr;

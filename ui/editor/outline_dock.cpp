@@ -193,14 +193,14 @@ OutlineDock::OutlineDock(SceneDocument* document, QWidget* parent)
   tree_->setModel(model_);
   tree_->setHeaderHidden(true);
   tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
-  tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+  // F2, the usual key, is the window's for following a ball, wherever the focus is.
+  tree_->setEditTriggers(QAbstractItemView::DoubleClicked);
   // Every row is one line: the view need not measure 100,000 of them.
   tree_->setUniformRowHeights(true);
   // Long names keep their start and their end, where names of a series differ ("post 12").
   tree_->setTextElideMode(Qt::ElideMiddle);
   tree_->expandAll();
   setWidget(tree_);
-  tree_->installEventFilter(this);
   connect(tree_->selectionModel(), &QItemSelectionModel::selectionChanged, this,
           &OutlineDock::selectionEdited);
   // After the model has caught up with the scene (it connected first).
@@ -218,17 +218,6 @@ void OutlineDock::changeEvent(QEvent* event) {
 void OutlineDock::retranslate() {
   setWindowTitle(tr("Outline"));
   model_->retranslate();
-}
-
-bool OutlineDock::eventFilter(QObject* watched, QEvent* event) {
-  // F2 renames while the outline has the focus, as in any tree, though the window uses it to
-  // follow a ball.
-  if (watched == tree_ && event->type() == QEvent::ShortcutOverride &&
-      static_cast<QKeyEvent*>(event)->key() == Qt::Key_F2) {
-    event->accept();
-    return true;
-  }
-  return QDockWidget::eventFilter(watched, event);
 }
 
 void OutlineDock::showSelection() {

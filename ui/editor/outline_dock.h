@@ -61,7 +61,6 @@ class OutlineDock : public QDockWidget {
   OutlineModel* model() const { return model_; }
 
  protected:
-  bool eventFilter(QObject* watched, QEvent* event) override;
   void changeEvent(QEvent* event) override;
 
  private:

@@ -100,7 +100,9 @@ GLint multisamples(QOpenGLFunctions_3_3_Core* gl) {
 }  // namespace
 
 SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent) {
-  setFocusPolicy(Qt::StrongFocus);
+  // The arrow keys are the view's: a wheel turn or a middle or right drag gives it the focus as a
+  // click does, without adding or deselecting anything.
+  setFocusPolicy(Qt::WheelFocus);
   setMinimumSize(160, 120);
   camera_.setAspectRatio(static_cast<double>(width()) / std::max(1, height()));
   clock_.start();

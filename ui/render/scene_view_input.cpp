@@ -77,9 +77,6 @@ void SceneView::keyPressEvent(QKeyEvent* event) {
     case Qt::Key_Down:
       camera_.rotateByKeys(0, -1);
       break;
-    case Qt::Key_Home:
-      frameScene();
-      return;
     default:
       QOpenGLWidget::keyPressEvent(event);
       return;
