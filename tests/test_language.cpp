@@ -336,7 +336,7 @@ void TestLanguage::keyboardAndMouseReference() {
   for (const char* expected :
        {"Space", "Run or pause the simulation", "F11, F1", "Home", "Add Cylinder", "Ctrl+Z",
         "Ctrl+Shift+Z, Ctrl+Y", "Ctrl+D", "Middle drag", "Alt+drag from a ball",
-        "Double-click, F2 (in the outline)", "X, Y or Z held while dragging", "F3"})
+        "Double-click (in the outline)", "X, Y or Z held while dragging", "F3"})
     QVERIFY2(text.contains(expected), expected);
   keepPicture(help, "keyboard-en");
 
