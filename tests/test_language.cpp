@@ -25,7 +25,10 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QToolBar>
 #include <QUndoView>
 
@@ -63,7 +66,7 @@ class TestLanguage : public carom::testing::EditorFixture {
   void examplesAreListedByTitle();
   void keyboardAndMouseReference();
   void aboutBox();
-  void physicsNotes();
+  void userGuide();
   void countsTakeTheirPluralForms_data();
   void countsTakeTheirPluralForms();
   void exampleTitleAndToolbarMessagesFollowTheLanguage();
@@ -366,19 +369,46 @@ void TestLanguage::aboutBox() {
   QVERIFY(text.contains("MIT"));
 }
 
-void TestLanguage::physicsNotes() {
-  window_->findChild<QAction*>("physicsNotes")->trigger();
-  auto* notes = window_->findChild<carom::ui::HelpWindow*>();
-  QVERIFY(notes && notes->page() == carom::ui::HelpWindow::Page::PhysicsNotes);
-  QTRY_VERIFY(notes->isVisible());
-  QCOMPARE(notes->windowTitle(), QString("Physics Notes"));
-  // docs/physics.md, rendered: headings without their marks.
-  QVERIFY(notes->text().contains("Carom's physics"));
-  QVERIFY(notes->text().contains("Contact times"));
-  QVERIFY(!notes->text().contains("## "));
-  auto* browser = notes->findChild<QTextBrowser*>();
+// Help > User Guide shows the page written for users (docs/user-guide.md), not the developers'
+// notes; its link opens those notes in the same window, and Back returns to the guide.
+void TestLanguage::userGuide() {
+  window_->findChild<QAction*>("userGuide")->trigger();
+  auto* guide = window_->findChild<carom::ui::HelpWindow*>();
+  QVERIFY(guide && guide->page() == carom::ui::HelpWindow::Page::UserGuide);
+  QTRY_VERIFY(guide->isVisible());
+  QCOMPARE(guide->windowTitle(), QString("User Guide"));
+  // Rendered: the guide's headings without their marks, and none of the notes' file table.
+  for (const char* heading :
+       {"Carom User Guide", "What is in a scene", "The world's settings",
+        "Methods: which one to choose", "What to expect of the energy", "auto: let Carom choose",
+        "What else to expect", "Your hands on the running world", "For developers"})
+    QVERIFY2(guide->text().contains(heading), heading);
+  QVERIFY(!guide->text().contains("## "));
+  QVERIFY(!guide->text().contains("Where things are"));
+  auto* browser = guide->findChild<QTextBrowser*>();
   QVERIFY(browser && browser->isReadOnly());
-  keepPicture(notes, "physics-notes");
+  auto* back = guide->findChild<QPushButton*>("back");
+  QVERIFY(back && !back->isEnabled());
+  keepPicture(guide, "user-guide");
+
+  // A click on the link, as a user makes it.
+  const QTextCursor link = browser->document()->find("physics notes");
+  QVERIFY(!link.isNull() && link.charFormat().isAnchor());
+  browser->setTextCursor(link);
+  browser->ensureCursorVisible();
+  QTextCursor middle = link;
+  middle.setPosition((link.selectionStart() + link.selectionEnd()) / 2);
+  const QPoint at = browser->cursorRect(middle).center();
+  QTest::mouseClick(browser->viewport(), Qt::LeftButton, {}, at);
+  QTRY_VERIFY2(guide->text().contains("Carom's physics"), qPrintable(guide->text().left(200)));
+  QVERIFY(guide->text().contains("Where things are"));
+  QVERIFY(!guide->text().contains("## "));
+  QVERIFY(back->isEnabled());
+  keepPicture(guide, "physics-notes");
+
+  back->click();
+  QTRY_VERIFY(guide->text().contains("What is in a scene"));
+  QVERIFY(!back->isEnabled());
 }
 
 // "1 ball", "2 balls"; in Russian "1 шар", "2 шара", "5 шаров": the status line's count and the

@@ -3,10 +3,11 @@
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QEvent>
-#include <QFile>
 #include <QKeySequence>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QTextBrowser>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include <initializer_list>
@@ -39,14 +40,20 @@ HelpWindow::HelpWindow(Page page, QWidget* parent) : QDialog(parent), page_(page
   browser_->setOpenExternalLinks(true);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
+  if (page == Page::UserGuide) {
+    // The guide links to the developer notes (docs/physics.md), which the browser opens in
+    // place; Back returns to the guide.
+    back_ = buttons->addButton(QString(), QDialogButtonBox::ActionRole);
+    back_->setObjectName("back");
+    back_->setEnabled(false);
+    connect(back_, &QPushButton::clicked, browser_, &QTextBrowser::backward);
+    connect(browser_, &QTextBrowser::backwardAvailable, back_, &QPushButton::setEnabled);
+    browser_->setSource(QUrl("qrc:/docs/user-guide.md"));
+  }
   auto* layout = new QVBoxLayout(this);
   layout->addWidget(browser_);
   layout->addWidget(buttons);
-  if (page == Page::PhysicsNotes) {
-    QFile notes(":/docs/physics.md");
-    if (notes.open(QIODevice::ReadOnly)) browser_->setMarkdown(QString::fromUtf8(notes.readAll()));
-  }
-  resize(page == Page::PhysicsNotes ? 820 : 720, 760);
+  resize(page == Page::UserGuide ? 820 : 720, 760);
   retranslate();
 }
 
@@ -65,9 +72,10 @@ void HelpWindow::retranslate() {
       setWindowTitle(tr("Keyboard and Mouse"));
       browser_->setHtml(keyboardAndMouseHtml());
       return;
-    case Page::PhysicsNotes:
-      // The notes themselves are in English only.
-      setWindowTitle(tr("Physics Notes"));
+    case Page::UserGuide:
+      // The guide itself is in English only, so it is loaded once, in the constructor.
+      setWindowTitle(tr("User Guide"));
+      back_->setText(tr("Back"));
       return;
   }
 }

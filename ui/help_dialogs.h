@@ -1,10 +1,12 @@
 #pragma once
-// The Help menu's windows: every key and mouse action of the program, the physics notes
-// (docs/physics.md, built in), and the About box. The two windows are not modal, so they can stay
-// open beside the scene while it is used.
+// The Help menu's windows: every key and mouse action of the program, the user guide
+// (docs/user-guide.md, built in, with a link to the developers' physics notes, docs/physics.md),
+// and the About box. The two windows are not modal, so they can stay open
+// beside the scene while it is used.
 
 #include <QDialog>
 
+class QPushButton;
 class QTextBrowser;
 class QWidget;
 
@@ -16,12 +18,12 @@ class HelpWindow : public QDialog {
  public:
   enum class Page {
     KeyboardAndMouse,  // every key and mouse action, translated
-    PhysicsNotes,      // docs/physics.md, in English
+    UserGuide,         // docs/user-guide.md, in English
   };
   explicit HelpWindow(Page page, QWidget* parent = nullptr);
   Page page() const { return page_; }
 
-  // The page as plain text.
+  // The page shown, as plain text.
   QString text() const;
 
  protected:
@@ -34,6 +36,7 @@ class HelpWindow : public QDialog {
 
   Page page_;
   QTextBrowser* browser_;
+  QPushButton* back_ = nullptr;  // the user guide's, back from the developer notes
 };
 
 // Carom's version, Qt's, the licence and what Carom is, in a modal message box.

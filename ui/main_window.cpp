@@ -391,9 +391,9 @@ void MainWindow::buildHelpMenu() {
   keyboardHelpAction_ =
       helpMenu_->addAction(QString(), this, [show] { show(HelpWindow::Page::KeyboardAndMouse); });
   keyboardHelpAction_->setObjectName("keyboardHelp");
-  physicsNotesAction_ =
-      helpMenu_->addAction(QString(), this, [show] { show(HelpWindow::Page::PhysicsNotes); });
-  physicsNotesAction_->setObjectName("physicsNotes");
+  userGuideAction_ =
+      helpMenu_->addAction(QString(), this, [show] { show(HelpWindow::Page::UserGuide); });
+  userGuideAction_->setObjectName("userGuide");
   helpMenu_->addSeparator();
   aboutAction_ = helpMenu_->addAction(QString(), this, [this] { showAbout(this); });
   aboutAction_->setObjectName("about");
@@ -500,7 +500,7 @@ void MainWindow::retranslate() {
 
   helpMenu_->setTitle(tr("&Help"));
   keyboardHelpAction_->setText(tr("&Keyboard and Mouse"));
-  physicsNotesAction_->setText(tr("&Physics Notes"));
+  userGuideAction_->setText(tr("&User Guide"));
   aboutAction_->setText(tr("&About Carom"));
 
   updateTitle();

@@ -173,7 +173,7 @@ class MainWindow : public QMainWindow {
   QAction* systemLanguageAction_ = nullptr;
   QMenu* helpMenu_ = nullptr;
   QAction* keyboardHelpAction_ = nullptr;
-  QAction* physicsNotesAction_ = nullptr;
+  QAction* userGuideAction_ = nullptr;
   QAction* aboutAction_ = nullptr;
   QAction* undoAction_ = nullptr;
   QAction* redoAction_ = nullptr;
