@@ -41,6 +41,15 @@ void keepPicture(QWidget* widget, const QString& name) {
   QVERIFY(widget->grab().save(QDir(folder).filePath(name + ".png")));
 }
 
+// Whether `edit` shows its whole text from the first character on: the left end of its text
+// area is the text's start and the right end is past its last character.
+bool showsWholeText(QLineEdit* edit) {
+  const QRect inner = edit->contentsRect();
+  const int y = inner.center().y();
+  return edit->cursorPositionAt(QPoint(inner.left() + 1, y)) == 0 &&
+         edit->cursorPositionAt(QPoint(inner.right() - 1, y)) == edit->text().size();
+}
+
 }  // namespace
 
 class TestLanguage : public carom::testing::EditorFixture {
@@ -69,6 +78,10 @@ class TestLanguage : public carom::testing::EditorFixture {
   void exampleTitleAndToolbarMessagesFollowTheLanguage();
   void ballStoryAndExportImageFollowTheLanguage_data();
   void ballStoryAndExportImageFollowTheLanguage();
+  void propertiesShowSignedValuesWholeAtTheDefaultSize_data();
+  void propertiesShowSignedValuesWholeAtTheDefaultSize();
+  void exponentsAreLowerCase_data();
+  void exponentsAreLowerCase();
 
  private:
   QMenu* menu(const QString& title) {
@@ -255,8 +268,8 @@ void TestLanguage::toolbarFitsAtTheDefaultWidth_data() {
   QTest::newRow("ru") << "ru";
 }
 
-// At 1280 x 800 no toolbar control goes into an overflow menu, and the view keeps most of the
-// window.
+// At 1280 x 800 no toolbar control goes into an overflow menu, and the view keeps two thirds of
+// the window's width beside the docks (as wide as three signed values a row need them).
 void TestLanguage::toolbarFitsAtTheDefaultWidth() {
   QFETCH(QString, code);
   window_.reset();
@@ -289,7 +302,7 @@ void TestLanguage::toolbarFitsAtTheDefaultWidth() {
     }
   }
   QVERIFY2(
-      window_->view()->width() > 900 && window_->view()->height() > 450,
+      window_->view()->width() * 3 > window_->width() * 2 && window_->view()->height() > 450,
       qPrintable(QString("%1x%2").arg(window_->view()->width()).arg(window_->view()->height())));
   keepPicture(window_.get(), "toolbar-" + code);
 }
@@ -510,6 +523,124 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
   video.to = 2.5;
   video.size = QSize(320, 240);
   QCOMPARE(carom::ui::VideoExport::check(video, 2.0, true), badEnd);
+}
+
+void TestLanguage::propertiesShowSignedValuesWholeAtTheDefaultSize_data() {
+  QTest::addColumn<QString>("code");
+  QTest::newRow("en") << "en";
+  QTest::newRow("de") << "de";
+  QTest::newRow("ru") << "ru";
+}
+
+// Issue 34: in a window of the default size (1280 x 800) the Properties dock showed "642395"
+// for -0.642395, the sign and the first digit scrolled out of the field. Every vector's three
+// fields show six-digit values with their signs whole, in every language.
+void TestLanguage::propertiesShowSignedValuesWholeAtTheDefaultSize() {
+  QFETCH(QString, code);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  carom::Scene scene = carom::testing::floorScene();
+  const carom::Vec3 signedValues(-0.642395, -1.59698, -0.253112);
+  scene.balls[0].velocity = signedValues;
+  carom::Plane plane;
+  plane.point = carom::Vec3(3.5, 0, 0);
+  plane.normal = carom::Vec3(-0.96741, -0.253112, -0.642395);
+  scene.planes.push_back(plane);
+  carom::Box box;
+  box.center = carom::Vec3(-0.642395, -1.59698, -2.71828);
+  box.halfExtents = carom::Vec3(0.5, 0.253112, 0.5);
+  box.rotation = carom::Rotation{carom::Vec3(-0.577350, -0.577350, -0.577350), -33.3333};
+  scene.boxes.push_back(box);
+  scene.world.gravity = carom::Vec3(-0.642395, -9.81, -0.253112);
+  // The window at the size it opens with, not the fixture's.
+  window_ = std::make_unique<carom::ui::MainWindow>();
+  window_->openScene(scene, {}, "signs");
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  QCOMPARE(window_->size(), QSize(1280, 800));
+  const int planeIndex = int(scene.planes.size()) - 1;
+  struct Case {
+    QString picture;
+    carom::editor::Selection selection;
+    QStringList fields;
+  };
+  const std::vector<Case> cases = {
+      {"ball", {{ObjectKind::Ball, 0}}, {"velocity.x", "velocity.y", "velocity.z"}},
+      {"plane", {{ObjectKind::Plane, planeIndex}}, {"normal.x", "normal.y", "normal.z"}},
+      {"box",
+       {{ObjectKind::Box, 0}},
+       {"center.x", "center.y", "center.z", "rotationAxis.x", "rotationAxis.y", "rotationAxis.z",
+        "rotationDegrees"}},
+      {"world", {}, {"gravity.x", "gravity.y", "gravity.z"}}};
+  for (const auto& [picture, selection, names] : cases) {
+    document().setSelection(selection);
+    for (const QString& name : names) {
+      auto* field = window_->propertiesDock()->findChild<QLineEdit*>(name);
+      QVERIFY2(field && field->isVisible(), qPrintable(name));
+      QVERIFY2(field->text().startsWith(QLocale().negativeSign()),
+               qPrintable(name + ": " + field->text()));
+      // Once the rows the selection shows are laid out at their height.
+      QTRY_VERIFY2(field->height() >= field->minimumSizeHint().height() && showsWholeText(field),
+                   qPrintable(QString("%1: \"%2\" in %3 pixels, cursor at %4")
+                                  .arg(name, field->text())
+                                  .arg(field->width())
+                                  .arg(field->cursorPosition())));
+    }
+    keepPicture(window_->propertiesDock(), QString("properties-%1-%2").arg(picture, code));
+  }
+  // The view keeps two thirds of the window's width.
+  QVERIFY2(window_->view()->width() * 3 > window_->width() * 2,
+           qPrintable(QString::number(window_->view()->width())));
+  keepPicture(window_.get(), "window-signs-" + code);
+}
+
+void TestLanguage::exponentsAreLowerCase_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("en") << "en"
+                      << "-2.5e12"
+                      << "Gravity x: must be between -1e+12 and 1e+12 (got -2.5e+12)";
+  QTest::newRow("de")
+      << "de"
+      << "-2,5e12"
+      << "Schwerkraft x: muss zwischen -1e+12 und 1e+12 liegen (erhalten: -2,5e+12)";
+  QTest::newRow("ru") << "ru"
+                      << "-2,5e12"
+                      << "Гравитация x: должно быть от -1e+12 до 1e+12 (получено -2,5e+12)";
+}
+
+// Issue 34: the locales' own exponent, a capital E, showed "-1E+12", which reads as a digit at a
+// glance: the toolbar, the properties and the refusals write "-1e+12", in each language's own
+// decimal separator, and a value typed with it is read.
+void TestLanguage::exponentsAreLowerCase() {
+  QFETCH(QString, code);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  openWindow();
+  document().setSelection({});
+  carom::Scene edited = document().scene();
+  edited.world.gravity.x() = -1e12;
+  QVERIFY(carom::testing::applyEdit(document(), edited, "far").isEmpty());
+  auto* toolbarX = window_->findChild<QDoubleSpinBox*>("gravityX");
+  QVERIFY(toolbarX);
+  QCOMPARE(toolbarX->text(), QString("-1e+12"));
+  auto* propertiesX = window_->propertiesDock()->findChild<QLineEdit*>("gravity.x");
+  QCOMPARE(propertiesX->text(), QString("-1e+12"));
+  QCOMPARE(propertiesX->toolTip().section(' ', -1), QString("-1e+12"));
+  QTest::mouseClick(toolbarX, Qt::LeftButton);
+  QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(toolbarX, typed);
+  QTest::keyClick(toolbarX, Qt::Key_Return);
+  QCOMPARE(window_->statusMessage(), message);
+  // Within the range, the same separator is read.
+  QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(toolbarX, QString(typed).replace("12", "11"));
+  QTest::keyClick(toolbarX, Qt::Key_Return);
+  QCOMPARE(document().scene().world.gravity.x(), -2.5e11);
+  QCOMPARE(toolbarX->text(), QString(typed).replace("e12", "e+11"));
 }
 
 QTEST_MAIN(TestLanguage)

@@ -117,7 +117,6 @@ MainWindow::MainWindow(QWidget* parent)
   propertiesDock_ = new editor::PropertiesDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
   connect(propertiesDock_, &editor::PropertiesDock::refused, this, &MainWindow::showMessage);
-  resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   recovery_ = new editor::SceneRecovery(document_, this);
   connect(recovery_, &editor::SceneRecovery::autosaveFailed, this, [this](const QString& reason) {
     showMessage(tr("The recovery copy could not be written (%1); the last one is kept. Save "
@@ -167,6 +166,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(view_, &SceneView::frameRendered, status_, &StatusReadout::countFrame);
   retranslate();
   resize(1280, 800);
+  // The docks share a column, as wide as the properties' vector rows need in this language.
+  resizeDocks({outlineDock_}, {std::max(kDockWidth, propertiesDock_->sizeHint().width())},
+              Qt::Horizontal);
 }
 
 MainWindow::~MainWindow() {
