@@ -7,27 +7,38 @@
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "ui/ball_story_dock.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
+#include "ui/energy_plot.h"
 #include "ui/help_dialogs.h"
 #include "ui/image_export.h"
 #include "ui/language.h"
+#include "ui/status_readout.h"
 #include "ui/video_export.h"
 #include "ui/watch_menu.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
+#include <QGraphicsTextItem>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QTextBrowser>
 #include <QToolBar>
 #include <QUndoView>
+
+#include <algorithm>
+#include <cmath>
 
 using carom::editor::ObjectKind;
 
@@ -48,6 +59,52 @@ bool showsWholeText(QLineEdit* edit) {
   const int y = inner.center().y();
   return edit->cursorPositionAt(QPoint(inner.left() + 1, y)) == 0 &&
          edit->cursorPositionAt(QPoint(inner.right() - 1, y)) == edit->text().size();
+}
+
+// A chart's texts as drawn: its tick labels below and left of the plot area, and the rest.
+struct ChartTexts {
+  QStringList bottomTicks, leftTicks, others;
+};
+
+ChartTexts chartTexts(QChartView* view) {
+  ChartTexts texts;
+  const QRectF plot = view->chart()->mapRectToScene(view->chart()->plotArea());
+  QList<QGraphicsTextItem*> items;
+  for (QGraphicsItem* item : view->scene()->items())
+    if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible())
+      items << text;
+  // Left to right, top to bottom.
+  std::sort(items.begin(), items.end(), [](QGraphicsTextItem* a, QGraphicsTextItem* b) {
+    const QPointF pa = a->sceneBoundingRect().center(), pb = b->sceneBoundingRect().center();
+    return pa.x() != pb.x() ? pa.x() < pb.x() : pa.y() > pb.y();
+  });
+  for (QGraphicsTextItem* item : items) {
+    const QString text = item->toPlainText();
+    // Written in the language's format or not, a number is a tick label.
+    bool number = false;
+    carom::editor::numberLocale().toDouble(text, &number);
+    if (!number) QLocale::c().toDouble(text, &number);
+    const QRectF box = item->sceneBoundingRect();
+    if (number && box.top() >= plot.bottom())
+      texts.bottomTicks << text;
+    else if (number && box.right() <= plot.left())
+      texts.leftTicks << text;
+    else
+      texts.others << text;
+  }
+  return texts;
+}
+
+// Whether `labels`, read in the language's format, step evenly: each says its tick's value.
+bool stepEvenly(const QStringList& labels) {
+  if (labels.size() < 3) return false;
+  QList<double> values;
+  for (const QString& label : labels) values << carom::editor::numberLocale().toDouble(label);
+  std::sort(values.begin(), values.end());
+  const double step = values[1] - values[0];
+  for (qsizetype i = 2; i < values.size(); ++i)
+    if (std::abs(values[i] - values[i - 1] - step) > 1e-9 * std::abs(step)) return false;
+  return step > 0.0;
 }
 
 }  // namespace
@@ -82,6 +139,8 @@ class TestLanguage : public carom::testing::EditorFixture {
   void propertiesShowSignedValuesWholeAtTheDefaultSize();
   void exponentsAreLowerCase_data();
   void exponentsAreLowerCase();
+  void numbersOfARunAreReadableInTheLanguage_data();
+  void numbersOfARunAreReadableInTheLanguage();
 
  private:
   QMenu* menu(const QString& title) {
@@ -641,6 +700,75 @@ void TestLanguage::exponentsAreLowerCase() {
   QTest::keyClick(toolbarX, Qt::Key_Return);
   QCOMPARE(document().scene().world.gravity.x(), -2.5e11);
   QCOMPARE(toolbarX->text(), QString(typed).replace("e12", "e+11"));
+}
+
+void TestLanguage::numbersOfARunAreReadableInTheLanguage_data() {
+  QTest::addColumn<QString>("code");
+  QTest::newRow("en") << "en";
+  QTest::newRow("de") << "de";
+  QTest::newRow("ru") << "ru";
+}
+
+// Issue 34: in Russian the status line said "t = 23.367 s" beside the timeline's "t = 23,367 с"
+// and the plots' ticks had points; the Energy plot's ticks at 0.25 and 0.75 read "0.3" and
+// "0.8"; and the Ball Story's plot, at the size it opens with, showed every tick label and its
+// axis title as "...". Every number follows the language's format, and both plots show whole
+// labels that say their ticks' values, at the window's default size.
+void TestLanguage::numbersOfARunAreReadableInTheLanguage() {
+  QFETCH(QString, code);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  openWindow();
+  window_->resize(1280, 800);
+  const QString point = carom::editor::numberLocale().decimalPoint();
+  const QString otherPoint = point == "." ? "," : ".";
+  auto* energyView = window_->energyPlot()->findChild<QChartView*>();
+  QVERIFY(energyView);
+  // Before the run the time axis spans 0 to 1 s: "0.0 0.3 0.5 0.8 1.0" did not step evenly.
+  QTRY_VERIFY(!chartTexts(energyView).bottomTicks.isEmpty());
+  QVERIFY2(stepEvenly(chartTexts(energyView).bottomTicks),
+           qPrintable(chartTexts(energyView).bottomTicks.join(" ")));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  carom::Scene bouncing = document().scene();
+  bouncing.balls[0].position.y() = 2.0;
+  QVERIFY(carom::testing::applyEdit(document(), bouncing, "higher").isEmpty());
+  QAction* run = window_->findChild<QAction*>("run");
+  run->trigger();
+  auto* status = window_->findChild<carom::ui::StatusReadout*>();
+  auto* timeline = window_->findChild<QLabel*>("timelineLabel");
+  QVERIFY(status && timeline);
+  // t = 1.234: the run's time, in each line.
+  const QRegularExpression time(
+      QString(R"(t = (\d+)%1(\d{3}) )").arg(QRegularExpression::escape(point)));
+  QTRY_VERIFY_WITH_TIMEOUT(
+      time.match(status->text()).hasMatch() && time.match(status->text()).captured(1).toInt() >= 1,
+      20000);
+  run->trigger();
+  QTRY_COMPARE(time.match(status->text()).captured(0), time.match(timeline->text()).captured(0));
+  QVERIFY2(!QRegularExpression(QString(R"(\d%1\d)").arg(QRegularExpression::escape(otherPoint)))
+                .match(status->text())
+                .hasMatch(),
+           qPrintable(status->text()));
+  // Both plots: no text cut short, ticks that say their values, in the language's format.
+  auto* storyView = window_->ballStoryDock()->findChild<QChartView*>();
+  QVERIFY(storyView);
+  for (const auto& [dockName, view] :
+       {std::pair{"energyDock", energyView}, std::pair{"ballStoryDock", storyView}}) {
+    auto* dock = window_->findChild<QDockWidget*>(dockName);
+    QVERIFY(dock);
+    dock->raise();
+    keepPicture(dock, QString("%1-%2").arg(dockName, code));
+    QTRY_VERIFY2(view->isVisible() && chartTexts(view).leftTicks.size() >= 3,
+                 qPrintable(chartTexts(view).others.join(" | ")));
+    const ChartTexts texts = chartTexts(view);
+    const QString all = (texts.bottomTicks + texts.leftTicks + texts.others).join(" | ");
+    QVERIFY2(!all.contains("...") && !all.contains(QChar(0x2026)), qPrintable(all));
+    QVERIFY2(stepEvenly(texts.bottomTicks), qPrintable(texts.bottomTicks.join(" ")));
+    QVERIFY2(stepEvenly(texts.leftTicks), qPrintable(texts.leftTicks.join(" ")));
+    QVERIFY2(!all.contains(QRegularExpression(
+                 QString(R"(\d%1\d)").arg(QRegularExpression::escape(otherPoint)))),
+             qPrintable(all));
+  }
 }
 
 QTEST_MAIN(TestLanguage)

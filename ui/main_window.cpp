@@ -4,6 +4,7 @@
 #include "ui/ball_story_dock.h"
 #include "ui/edit_actions.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
@@ -448,8 +449,8 @@ void MainWindow::retranslate() {
         toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
   }
   snapAction_->setText(tr("Snap to &Grid"));
-  snapAction_->setToolTip(
-      tr("Moves land on multiples of %1 m").arg(editor::EditorTools::gridStep()));
+  snapAction_->setToolTip(tr("Moves land on multiples of %1 m")
+                              .arg(editor::formatNumber(editor::EditorTools::gridStep())));
 
   simulationMenu_->setTitle(tr("&Simulation"));
   playAction_->setText(playAction_->isChecked() ? tr("&Pause") : tr("&Run"));
