@@ -82,6 +82,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void toolbarRefusesBadValues_data();
   void toolbarRefusesBadValues();
   void toolbarShowsShortButKeepsExactValues();
+  void narrowFieldsShowTheStartOfTheirValues();
   void fieldsShowSixDigitsAndEditAllOfThem();
   void fieldsLeftAsTheyWereKeepExactValues();
   void refusalGoesOnceTheFieldIsValidAgain();
@@ -1150,6 +1151,53 @@ void TestEditorDocks::toolbarShowsShortButKeepsExactValues() {
   QTest::keyClick(step, Qt::Key_Return);
   QCOMPARE(document().scene().world.timeStep, 0.000123456789);
   QCOMPARE(step->text(), QString("0.000123457"));
+}
+
+// Issue 34: a field narrower than its text scrolled to its end, so that -0.642395 read
+// "642395". However narrow, a number field at rest shows its value's start (the sign and the
+// leading digits), also once a value typed in is left; so do the toolbar's boxes.
+void TestEditorDocks::narrowFieldsShowTheStartOfTheirValues() {
+  // The position under the left end of a field's text area: 0 when its text shows from the
+  // start.
+  const auto firstShown = [](QLineEdit* edit) {
+    const QRect inner = edit->contentsRect();
+    return edit->cursorPositionAt(QPoint(inner.left() + 1, inner.center().y()));
+  };
+  carom::Scene edited = document().scene();
+  edited.balls[0].velocity = Vec3(-0.642395, -1.59698, -2.71828);
+  QVERIFY(carom::testing::applyEdit(document(), edited, "set").isEmpty());
+  document().setSelection({{ObjectKind::Ball, 0}});
+  window_->resizeDocks({window_->propertiesDock()}, {150}, Qt::Horizontal);
+  for (const char* name : {"velocity.x", "velocity.y", "velocity.z"}) {
+    QLineEdit* edit = field(name);
+    // Too narrow for the whole value, as it is to be.
+    QTRY_VERIFY2(edit->fontMetrics().horizontalAdvance(edit->text()) > edit->contentsRect().width(),
+                 qPrintable(QString("%1: %2 pixels").arg(name).arg(edit->width())));
+    QVERIFY2(edit->text().startsWith('-'), qPrintable(edit->text()));
+    QTRY_COMPARE(firstShown(edit), 0);
+  }
+  type("velocity.x", "-0.6423951");
+  QCOMPARE(document().scene().balls[0].velocity.x(), -0.6423951);
+  QTest::mouseClick(field("mass"), Qt::LeftButton);
+  QCOMPARE(field("velocity.x")->text(), QString("-0.642395"));
+  QTRY_COMPARE(firstShown(field("velocity.x")), 0);
+  // The toolbar's gravity x, made as narrow, typed in and left.
+  auto* gravityX = window_->findChild<QDoubleSpinBox*>("gravityX");
+  QVERIFY(gravityX);
+  auto* gravityText = gravityX->findChild<QLineEdit*>();
+  gravityX->setFixedWidth(gravityX->minimumSizeHint().width());
+  QTest::mouseClick(gravityText, Qt::LeftButton);
+  QTest::keyClick(gravityText, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(gravityText, "-1.234567");
+  QTest::keyClick(gravityText, Qt::Key_Return);
+  QCOMPARE(document().scene().world.gravity.x(), -1.234567);
+  QTest::mouseClick(field("mass"), Qt::LeftButton);
+  QTRY_VERIFY(!gravityX->hasFocus());
+  QCOMPARE(gravityX->text(), QString("-1.23457"));
+  QVERIFY2(gravityText->fontMetrics().horizontalAdvance(gravityText->text()) >
+               gravityText->contentsRect().width(),
+           qPrintable(QString::number(gravityText->width())));
+  QTRY_COMPARE(firstShown(gravityText), 0);
 }
 
 // As the toolbar does: six significant digits to read; every digit while editing and in the

@@ -7,30 +7,41 @@
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "ui/ball_story_dock.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
+#include "ui/energy_plot.h"
 #include "ui/help_dialogs.h"
 #include "ui/image_export.h"
 #include "ui/language.h"
+#include "ui/status_readout.h"
 #include "ui/video_export.h"
 #include "ui/watch_menu.h"
 
+#include <QChart>
+#include <QChartView>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
+#include <QGraphicsTextItem>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QTextBrowser>
 #include <QTextCursor>
 #include <QTextDocument>
 #include <QToolBar>
 #include <QUndoView>
+
+#include <algorithm>
+#include <cmath>
 
 using carom::editor::ObjectKind;
 
@@ -42,6 +53,61 @@ void keepPicture(QWidget* widget, const QString& name) {
   if (folder.isEmpty()) return;
   QDir().mkpath(folder);
   QVERIFY(widget->grab().save(QDir(folder).filePath(name + ".png")));
+}
+
+// Whether `edit` shows its whole text from the first character on: the left end of its text
+// area is the text's start and the right end is past its last character.
+bool showsWholeText(QLineEdit* edit) {
+  const QRect inner = edit->contentsRect();
+  const int y = inner.center().y();
+  return edit->cursorPositionAt(QPoint(inner.left() + 1, y)) == 0 &&
+         edit->cursorPositionAt(QPoint(inner.right() - 1, y)) == edit->text().size();
+}
+
+// A chart's texts as drawn: its tick labels below and left of the plot area, and the rest.
+struct ChartTexts {
+  QStringList bottomTicks, leftTicks, others;
+};
+
+ChartTexts chartTexts(QChartView* view) {
+  ChartTexts texts;
+  const QRectF plot = view->chart()->mapRectToScene(view->chart()->plotArea());
+  QList<QGraphicsTextItem*> items;
+  for (QGraphicsItem* item : view->scene()->items())
+    if (auto* text = dynamic_cast<QGraphicsTextItem*>(item); text && text->isVisible())
+      items << text;
+  // Left to right, top to bottom.
+  std::sort(items.begin(), items.end(), [](QGraphicsTextItem* a, QGraphicsTextItem* b) {
+    const QPointF pa = a->sceneBoundingRect().center(), pb = b->sceneBoundingRect().center();
+    return pa.x() != pb.x() ? pa.x() < pb.x() : pa.y() > pb.y();
+  });
+  for (QGraphicsTextItem* item : items) {
+    const QString text = item->toPlainText();
+    // Written in the language's format or not, a number is a tick label.
+    bool number = false;
+    carom::editor::numberLocale().toDouble(text, &number);
+    if (!number) QLocale::c().toDouble(text, &number);
+    const QRectF box = item->sceneBoundingRect();
+    if (number && box.top() >= plot.bottom())
+      texts.bottomTicks << text;
+    else if (number && box.right() <= plot.left())
+      texts.leftTicks << text;
+    else
+      texts.others << text;
+  }
+  return texts;
+}
+
+// Whether `labels`, read in the language's format, step evenly: each says its tick's value.
+bool stepEvenly(const QStringList& labels) {
+  if (labels.size() < 3) return false;
+  QList<double> values;
+  for (const QString& label : labels) values << carom::editor::numberLocale().toDouble(label);
+  std::sort(values.begin(), values.end());
+  const double step = values[1] - values[0];
+  for (qsizetype i = 2; i < values.size(); ++i)
+    if (std::abs(values[i] - values[i - 1] - step) > 1e-9 * std::abs(step)) return false;
+  return step > 0.0;
 }
 
 }  // namespace
@@ -72,6 +138,12 @@ class TestLanguage : public carom::testing::EditorFixture {
   void exampleTitleAndToolbarMessagesFollowTheLanguage();
   void ballStoryAndExportImageFollowTheLanguage_data();
   void ballStoryAndExportImageFollowTheLanguage();
+  void propertiesShowSignedValuesWholeAtTheDefaultSize_data();
+  void propertiesShowSignedValuesWholeAtTheDefaultSize();
+  void exponentsAreLowerCase_data();
+  void exponentsAreLowerCase();
+  void numbersOfARunAreReadableInTheLanguage_data();
+  void numbersOfARunAreReadableInTheLanguage();
 
  private:
   QMenu* menu(const QString& title) {
@@ -258,8 +330,8 @@ void TestLanguage::toolbarFitsAtTheDefaultWidth_data() {
   QTest::newRow("ru") << "ru";
 }
 
-// At 1280 x 800 no toolbar control goes into an overflow menu, and the view keeps most of the
-// window.
+// At 1280 x 800 no toolbar control goes into an overflow menu, and the view keeps two thirds of
+// the window's width beside the docks (as wide as three signed values a row need them).
 void TestLanguage::toolbarFitsAtTheDefaultWidth() {
   QFETCH(QString, code);
   window_.reset();
@@ -292,7 +364,7 @@ void TestLanguage::toolbarFitsAtTheDefaultWidth() {
     }
   }
   QVERIFY2(
-      window_->view()->width() > 900 && window_->view()->height() > 450,
+      window_->view()->width() * 3 > window_->width() * 2 && window_->view()->height() > 450,
       qPrintable(QString("%1x%2").arg(window_->view()->width()).arg(window_->view()->height())));
   keepPicture(window_.get(), "toolbar-" + code);
 }
@@ -540,6 +612,193 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
   video.to = 2.5;
   video.size = QSize(320, 240);
   QCOMPARE(carom::ui::VideoExport::check(video, 2.0, true), badEnd);
+}
+
+void TestLanguage::propertiesShowSignedValuesWholeAtTheDefaultSize_data() {
+  QTest::addColumn<QString>("code");
+  QTest::newRow("en") << "en";
+  QTest::newRow("de") << "de";
+  QTest::newRow("ru") << "ru";
+}
+
+// Issue 34: in a window of the default size (1280 x 800) the Properties dock showed "642395"
+// for -0.642395, the sign and the first digit scrolled out of the field. Every vector's three
+// fields show six-digit values with their signs whole, in every language.
+void TestLanguage::propertiesShowSignedValuesWholeAtTheDefaultSize() {
+  QFETCH(QString, code);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  carom::Scene scene = carom::testing::floorScene();
+  const carom::Vec3 signedValues(-0.642395, -1.59698, -0.253112);
+  scene.balls[0].velocity = signedValues;
+  carom::Plane plane;
+  plane.point = carom::Vec3(3.5, 0, 0);
+  plane.normal = carom::Vec3(-0.96741, -0.253112, -0.642395);
+  scene.planes.push_back(plane);
+  carom::Box box;
+  box.center = carom::Vec3(-0.642395, -1.59698, -2.71828);
+  box.halfExtents = carom::Vec3(0.5, 0.253112, 0.5);
+  box.rotation = carom::Rotation{carom::Vec3(-0.577350, -0.577350, -0.577350), -33.3333};
+  scene.boxes.push_back(box);
+  scene.world.gravity = carom::Vec3(-0.642395, -9.81, -0.253112);
+  // The window at the size it opens with, not the fixture's.
+  window_ = std::make_unique<carom::ui::MainWindow>();
+  window_->openScene(scene, {}, "signs");
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  QCOMPARE(window_->size(), QSize(1280, 800));
+  const int planeIndex = int(scene.planes.size()) - 1;
+  struct Case {
+    QString picture;
+    carom::editor::Selection selection;
+    QStringList fields;
+  };
+  const std::vector<Case> cases = {
+      {"ball", {{ObjectKind::Ball, 0}}, {"velocity.x", "velocity.y", "velocity.z"}},
+      {"plane", {{ObjectKind::Plane, planeIndex}}, {"normal.x", "normal.y", "normal.z"}},
+      {"box",
+       {{ObjectKind::Box, 0}},
+       {"center.x", "center.y", "center.z", "rotationAxis.x", "rotationAxis.y", "rotationAxis.z",
+        "rotationDegrees"}},
+      {"world", {}, {"gravity.x", "gravity.y", "gravity.z"}}};
+  for (const auto& [picture, selection, names] : cases) {
+    document().setSelection(selection);
+    for (const QString& name : names) {
+      auto* field = window_->propertiesDock()->findChild<QLineEdit*>(name);
+      QVERIFY2(field && field->isVisible(), qPrintable(name));
+      QVERIFY2(field->text().startsWith(QLocale().negativeSign()),
+               qPrintable(name + ": " + field->text()));
+      // Once the rows the selection shows are laid out at their height.
+      QTRY_VERIFY2(field->height() >= field->minimumSizeHint().height() && showsWholeText(field),
+                   qPrintable(QString("%1: \"%2\" in %3 pixels, cursor at %4")
+                                  .arg(name, field->text())
+                                  .arg(field->width())
+                                  .arg(field->cursorPosition())));
+    }
+    keepPicture(window_->propertiesDock(), QString("properties-%1-%2").arg(picture, code));
+  }
+  // The view keeps two thirds of the window's width.
+  QVERIFY2(window_->view()->width() * 3 > window_->width() * 2,
+           qPrintable(QString::number(window_->view()->width())));
+  keepPicture(window_.get(), "window-signs-" + code);
+}
+
+void TestLanguage::exponentsAreLowerCase_data() {
+  QTest::addColumn<QString>("code");
+  QTest::addColumn<QString>("typed");
+  QTest::addColumn<QString>("message");
+  QTest::newRow("en") << "en"
+                      << "-2.5e12"
+                      << "Gravity x: must be between -1e+12 and 1e+12 (got -2.5e+12)";
+  QTest::newRow("de")
+      << "de"
+      << "-2,5e12"
+      << "Schwerkraft x: muss zwischen -1e+12 und 1e+12 liegen (erhalten: -2,5e+12)";
+  QTest::newRow("ru") << "ru"
+                      << "-2,5e12"
+                      << "Гравитация x: должно быть от -1e+12 до 1e+12 (получено -2,5e+12)";
+}
+
+// Issue 34: the locales' own exponent, a capital E, showed "-1E+12", which reads as a digit at a
+// glance: the toolbar, the properties and the refusals write "-1e+12", in each language's own
+// decimal separator, and a value typed with it is read.
+void TestLanguage::exponentsAreLowerCase() {
+  QFETCH(QString, code);
+  QFETCH(QString, typed);
+  QFETCH(QString, message);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  openWindow();
+  document().setSelection({});
+  carom::Scene edited = document().scene();
+  edited.world.gravity.x() = -1e12;
+  QVERIFY(carom::testing::applyEdit(document(), edited, "far").isEmpty());
+  auto* toolbarX = window_->findChild<QDoubleSpinBox*>("gravityX");
+  QVERIFY(toolbarX);
+  QCOMPARE(toolbarX->text(), QString("-1e+12"));
+  auto* propertiesX = window_->propertiesDock()->findChild<QLineEdit*>("gravity.x");
+  QCOMPARE(propertiesX->text(), QString("-1e+12"));
+  QCOMPARE(propertiesX->toolTip().section(' ', -1), QString("-1e+12"));
+  QTest::mouseClick(toolbarX, Qt::LeftButton);
+  QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(toolbarX, typed);
+  QTest::keyClick(toolbarX, Qt::Key_Return);
+  QCOMPARE(window_->statusMessage(), message);
+  // Within the range, the same separator is read.
+  QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(toolbarX, QString(typed).replace("12", "11"));
+  QTest::keyClick(toolbarX, Qt::Key_Return);
+  QCOMPARE(document().scene().world.gravity.x(), -2.5e11);
+  QCOMPARE(toolbarX->text(), QString(typed).replace("e12", "e+11"));
+}
+
+void TestLanguage::numbersOfARunAreReadableInTheLanguage_data() {
+  QTest::addColumn<QString>("code");
+  QTest::newRow("en") << "en";
+  QTest::newRow("de") << "de";
+  QTest::newRow("ru") << "ru";
+}
+
+// Issue 34: in Russian the status line said "t = 23.367 s" beside the timeline's "t = 23,367 с"
+// and the plots' ticks had points; the Energy plot's ticks at 0.25 and 0.75 read "0.3" and
+// "0.8"; and the Ball Story's plot, at the size it opens with, showed every tick label and its
+// axis title as "...". Every number follows the language's format, and both plots show whole
+// labels that say their ticks' values, at the window's default size.
+void TestLanguage::numbersOfARunAreReadableInTheLanguage() {
+  QFETCH(QString, code);
+  window_.reset();
+  QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
+  openWindow();
+  window_->resize(1280, 800);
+  const QString point = carom::editor::numberLocale().decimalPoint();
+  const QString otherPoint = point == "." ? "," : ".";
+  auto* energyView = window_->energyPlot()->findChild<QChartView*>();
+  QVERIFY(energyView);
+  // Before the run the time axis spans 0 to 1 s: "0.0 0.3 0.5 0.8 1.0" did not step evenly.
+  QTRY_VERIFY(!chartTexts(energyView).bottomTicks.isEmpty());
+  QVERIFY2(stepEvenly(chartTexts(energyView).bottomTicks),
+           qPrintable(chartTexts(energyView).bottomTicks.join(" ")));
+  document().setSelection({{ObjectKind::Ball, 0}});
+  carom::Scene bouncing = document().scene();
+  bouncing.balls[0].position.y() = 2.0;
+  QVERIFY(carom::testing::applyEdit(document(), bouncing, "higher").isEmpty());
+  QAction* run = window_->findChild<QAction*>("run");
+  run->trigger();
+  auto* status = window_->findChild<carom::ui::StatusReadout*>();
+  auto* timeline = window_->findChild<QLabel*>("timelineLabel");
+  QVERIFY(status && timeline);
+  // t = 1.234: the run's time, in each line.
+  const QRegularExpression time(
+      QString(R"(t = (\d+)%1(\d{3}) )").arg(QRegularExpression::escape(point)));
+  QTRY_VERIFY_WITH_TIMEOUT(
+      time.match(status->text()).hasMatch() && time.match(status->text()).captured(1).toInt() >= 1,
+      20000);
+  run->trigger();
+  QTRY_COMPARE(time.match(status->text()).captured(0), time.match(timeline->text()).captured(0));
+  QVERIFY2(!QRegularExpression(QString(R"(\d%1\d)").arg(QRegularExpression::escape(otherPoint)))
+                .match(status->text())
+                .hasMatch(),
+           qPrintable(status->text()));
+  // Both plots: no text cut short, ticks that say their values, in the language's format.
+  auto* storyView = window_->ballStoryDock()->findChild<QChartView*>();
+  QVERIFY(storyView);
+  for (const auto& [dockName, view] :
+       {std::pair{"energyDock", energyView}, std::pair{"ballStoryDock", storyView}}) {
+    auto* dock = window_->findChild<QDockWidget*>(dockName);
+    QVERIFY(dock);
+    dock->raise();
+    keepPicture(dock, QString("%1-%2").arg(dockName, code));
+    QTRY_VERIFY2(view->isVisible() && chartTexts(view).leftTicks.size() >= 3,
+                 qPrintable(chartTexts(view).others.join(" | ")));
+    const ChartTexts texts = chartTexts(view);
+    const QString all = (texts.bottomTicks + texts.leftTicks + texts.others).join(" | ");
+    QVERIFY2(!all.contains("...") && !all.contains(QChar(0x2026)), qPrintable(all));
+    QVERIFY2(stepEvenly(texts.bottomTicks), qPrintable(texts.bottomTicks.join(" ")));
+    QVERIFY2(stepEvenly(texts.leftTicks), qPrintable(texts.leftTicks.join(" ")));
+    QVERIFY2(!all.contains(QRegularExpression(
+                 QString(R"(\d%1\d)").arg(QRegularExpression::escape(otherPoint)))),
+             qPrintable(all));
+  }
 }
 
 QTEST_MAIN(TestLanguage)

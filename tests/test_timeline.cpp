@@ -209,6 +209,29 @@ class TimelineTest : public EditorFixture {
 
   // Simulation > Timeline Memory and Throw Speed Limit ask over the window and keep the answer;
   // Cancel keeps the value before.
+  // Issue 34: the line beside the slider grows with its numbers ("frame 0 of 0" at the start,
+  // "frame 31 of 62 · … · replayed in 1.2 ms" scrubbing a run) and took its width from the
+  // slider, which shrank under the hand.
+  void sliderKeepsItsWidthAsTheLineGrows() {
+    auto* label = window_->findChild<QLabel*>("timelineLabel");
+    QVERIFY(label);
+    QTRY_VERIFY(label->width() >= label->sizeHint().width());
+    const int width = slider_->width();
+    const QString startLine = label->text();
+    runUntil(1.0);
+    const auto paused = pause();
+    const std::uint64_t back = paused->frameCount / 2;
+    slider_->setValue(int(back));
+    QVERIFY(waitFor([back](const SimulationSnapshot& s) { return s.frame == back; }));
+    QTRY_VERIFY(label->text().contains(" ms"));  // its longest, with the replay's time
+    QVERIFY2(label->fontMetrics().horizontalAdvance(label->text()) >
+                 label->fontMetrics().horizontalAdvance(startLine),
+             qPrintable(label->text()));
+    // Once the layout has caught up with the longer line.
+    QTRY_VERIFY(label->width() >= label->sizeHint().width());
+    QCOMPARE(slider_->width(), width);
+  }
+
   void simulationMenuSettingsAreAskedAndKept() {
     QCOMPARE(ui::TimelineBar::memoryBudget(), std::size_t(256) << 20);
     const auto answer = [](int mebibytes) {

@@ -1,10 +1,9 @@
 #include "ui/auto_method.h"
 
 #include "ui/call_queue.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/scene_document.h"
 #include "ui/thread_handover.h"
-
-#include <QLocale>
 
 #include <functional>
 
@@ -24,7 +23,7 @@ QString settingsText(const StudyCase& settings) {
   if (settings.method == Method::Exact) return method;
   return AutoMethod::tr("%1 (%2, step %3 s)")
       .arg(method, text(integratorName(settings.integrator)),
-           QLocale().toString(settings.timeStep, 'g', 4));
+           editor::formatNumber(settings.timeStep, 'g', 4));
 }
 
 }  // namespace
@@ -96,8 +95,7 @@ void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
   }
   const MethodChoice& choice = pilot->choice;
   if (choice.cancelled || choice.candidates.empty()) return;
-  const QLocale locale;
-  const QString tolerance = locale.toString(pilot->tolerance.energyPerSecond, 'g', 3);
+  const QString tolerance = editor::formatNumber(pilot->tolerance.energyPerSecond, 'g', 3);
   const PilotMeasure& pick = choice.pick();
   const QString settings = settingsText(pick.settings);
   if (!choice.chosen) {
@@ -120,8 +118,8 @@ void AutoMethod::apply(const std::shared_ptr<Pilot>& pilot) {
   emit finished(tr("Auto chose %1").arg(settings),
                 tr("Auto chose %1: the cheapest setting with an energy error under %2 per "
                    "second (%3 s of computing per simulated second; pilot %4 s).")
-                    .arg(settings, tolerance, locale.toString(pick.costPerSecond, 'g', 2),
-                         locale.toString(choice.pilotSeconds, 'g', 2)));
+                    .arg(settings, tolerance, editor::formatNumber(pick.costPerSecond, 'g', 2),
+                         editor::formatNumber(choice.pilotSeconds, 'g', 2)));
 }
 
 }  // namespace carom::ui

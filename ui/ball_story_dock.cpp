@@ -3,6 +3,7 @@
 #include "sim/measures.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/scene_document.h"
+#include "ui/plot_axis.h"
 #include "ui/render/scene_view.h"
 #include "ui/simulation_snapshot.h"
 
@@ -31,6 +32,9 @@ namespace {
 constexpr int kRedrawMilliseconds = 150;
 // At most about this many points a line: the story may hold thousands of samples a ball.
 constexpr int kPlotPoints = 600;
+// At most this many ticks an axis: their labels stay whole at the dock's opening size.
+constexpr int kTimeTicks = 6;
+constexpr int kValueTicks = 5;
 
 QColor ballColor(const Scene& scene, int ball) {
   const QColor color(QString::fromStdString(scene.balls[ball].color));
@@ -63,8 +67,7 @@ BallStoryDock::BallStoryDock(editor::SceneDocument* document, render::SceneView*
   chart_->addAxis(timeAxis_, Qt::AlignBottom);
   chart_->addAxis(valueAxis_, Qt::AlignLeft);
   chart_->legend()->setAlignment(Qt::AlignRight);
-  timeAxis_->setLabelFormat("%.1f");
-  valueAxis_->setLabelFormat("%.4g");
+  fitToDock(chart_);
   chart_->addSeries(cursor_);
   cursor_->attachAxis(timeAxis_);
   cursor_->attachAxis(valueAxis_);
@@ -100,6 +103,7 @@ void BallStoryDock::changeEvent(QEvent* event) {
 
 void BallStoryDock::retranslate() {
   setWindowTitle(tr("Ball Story"));
+  localizeNumbers(chart_);
   quantity_->setItemText(int(Quantity::Height), tr("Height (m)"));
   quantity_->setItemText(int(Quantity::Speed), tr("Speed (m/s)"));
   quantity_->setItemText(int(Quantity::Energy), tr("Energy (J)"));
@@ -292,9 +296,9 @@ void BallStoryDock::plot() {
   if (!std::isfinite(first)) first = last = 0.0;
   if (!std::isfinite(low)) low = high = 0.0;
   const double t = shownTime();
-  timeAxis_->setRange(first, std::max({first + 1.0, last, t}));
+  setRoundRange(timeAxis_, first, std::max({first + 1.0, last, t}), kTimeTicks);
   const double margin = 0.05 * std::max(high - low, 1e-9);
-  valueAxis_->setRange(low - margin, high + margin);
+  setRoundRange(valueAxis_, low - margin, high + margin, kValueTicks);
   cursor_->replace({QPointF(t, low - margin), QPointF(t, high + margin)});
 }
 

@@ -1,5 +1,6 @@
 #include "ui/energy_plot.h"
 
+#include "ui/plot_axis.h"
 #include "ui/simulation_snapshot.h"
 
 #include <QChart>
@@ -21,6 +22,9 @@ constexpr double kWindowSeconds = 30.0;
 // Redrawing the chart for every point would cost the GUI thread several milliseconds a frame;
 // points gathered in between are drawn together at this pace.
 constexpr int kRedrawMilliseconds = 100;
+// At most this many ticks an axis: their labels stay whole at the dock's opening size.
+constexpr int kTimeTicks = 6;
+constexpr int kEnergyTicks = 5;
 
 }  // namespace
 
@@ -41,8 +45,7 @@ EnergyPlot::EnergyPlot(QWidget* parent)
     series->attachAxis(energyAxis_);
   }
   chart_->legend()->setAlignment(Qt::AlignRight);
-  timeAxis_->setLabelFormat("%.1f");
-  energyAxis_->setLabelFormat("%.4g");
+  fitToDock(chart_);
   auto* view = new QChartView(chart_);
   view->setRenderHint(QPainter::Antialiasing);
   auto* layout = new QVBoxLayout(this);
@@ -60,6 +63,7 @@ void EnergyPlot::changeEvent(QEvent* event) {
 }
 
 void EnergyPlot::retranslate() {
+  localizeNumbers(chart_);
   kinetic_->setName(tr("Kinetic"));
   potential_->setName(tr("Potential"));
   total_->setName(tr("Total"));
@@ -73,8 +77,8 @@ void EnergyPlot::clear() {
   redrawTimer_.stop();
   lastTime_ = -1.0;
   low_ = high_ = 0.0;
-  timeAxis_->setRange(0.0, 1.0);
-  energyAxis_->setRange(-1.0, 1.0);
+  setRoundRange(timeAxis_, 0.0, 1.0, kTimeTicks);
+  setRoundRange(energyAxis_, -1.0, 1.0, kEnergyTicks);
 }
 
 int EnergyPlot::pointCount() const {
@@ -110,7 +114,8 @@ void EnergyPlot::truncateAfter(double t) {
   for (QLineSeries* s : {kinetic_, potential_, total_})
     s->removePoints(static_cast<int>(keep), static_cast<int>(s->count() - keep));
   lastTime_ = total_->at(keep - 1).x();
-  timeAxis_->setRange(total_->at(0).x(), std::max(total_->at(0).x() + 1.0, lastTime_));
+  setRoundRange(timeAxis_, total_->at(0).x(), std::max(total_->at(0).x() + 1.0, lastTime_),
+                kTimeTicks);
 }
 
 void EnergyPlot::drawPending() {
@@ -126,9 +131,9 @@ void EnergyPlot::drawPending() {
   if (old > 0)
     for (QLineSeries* s : series) s->removePoints(0, static_cast<int>(old));
   const double first = total_->count() > 0 ? total_->at(0).x() : 0.0;
-  timeAxis_->setRange(first, std::max(first + 1.0, t));
+  setRoundRange(timeAxis_, first, std::max(first + 1.0, t), kTimeTicks);
   const double margin = 0.05 * std::max(high_ - low_, 1e-9);
-  energyAxis_->setRange(low_ - margin, high_ + margin);
+  setRoundRange(energyAxis_, low_ - margin, high_ + margin, kEnergyTicks);
 }
 
 }  // namespace carom::ui

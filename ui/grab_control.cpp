@@ -1,11 +1,11 @@
 #include "ui/grab_control.h"
 
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
 
 #include <QInputDialog>
-#include <QLocale>
 #include <QSettings>
 
 #include <algorithm>
@@ -72,11 +72,10 @@ void GrabControl::showSnapshot(const SimulationSnapshot& snapshot) {
   // At the scene's start the Select tool edits the scene; once the run has begun it grabs.
   const bool inProgress = snapshot.running || snapshot.time > 0.0;
   tools_->setRunningBalls(inProgress ? snapshot.positions : std::vector<Vec3>{});
-  const QLocale locale;
   if (snapshot.grabStop && lastStopTime_ != snapshot.grabStop->time) {
     lastStopTime_ = snapshot.grabStop->time;
     const GrabStop& stop = *snapshot.grabStop;
-    const QString time = locale.toString(stop.time, 'f', 4);
+    const QString time = editor::formatNumber(stop.time, 'f', 4);
     if (stop.kind == GrabStopKind::Crush)
       emit message(tr("The grab stopped at t = %1 s: ball %2 would have been crushed against "
                       "what is behind it.")
@@ -87,7 +86,7 @@ void GrabControl::showSnapshot(const SimulationSnapshot& snapshot) {
   }
   if (snapshot.throwCapped && !throwCapped_)
     emit message(tr("Thrown at the throw limit, %1 m/s (Simulation > Throw Speed Limit).")
-                     .arg(locale.toString(throwLimit_)));
+                     .arg(editor::formatNumber(throwLimit_)));
   throwCapped_ = snapshot.throwCapped;
 }
 

@@ -5,6 +5,7 @@
 #include "ui/edit_actions.h"
 #include "ui/editor/cylinder_length_field.h"
 #include "ui/editor/editor_tools.h"
+#include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/running_state.h"
@@ -118,7 +119,6 @@ MainWindow::MainWindow(QWidget* parent)
   propertiesDock_ = new editor::PropertiesDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, propertiesDock_);
   connect(propertiesDock_, &editor::PropertiesDock::refused, this, &MainWindow::showMessage);
-  resizeDocks({outlineDock_}, {kDockWidth}, Qt::Horizontal);
   recovery_ = new editor::SceneRecovery(document_, this);
   connect(recovery_, &editor::SceneRecovery::autosaveFailed, this, [this](const QString& reason) {
     showMessage(tr("The recovery copy could not be written (%1); the last one is kept. Save "
@@ -164,6 +164,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(view_, &SceneView::frameRendered, status_, &StatusReadout::countFrame);
   retranslate();
   resize(1280, 800);
+  // The docks share a column, as wide as the properties' vector rows need in this language.
+  resizeDocks({outlineDock_}, {std::max(kDockWidth, propertiesDock_->sizeHint().width())},
+              Qt::Horizontal);
 }
 
 MainWindow::~MainWindow() {
@@ -451,8 +454,8 @@ void MainWindow::retranslate() {
         toolTexts[i], toolActions_[i]->shortcut().toString(QKeySequence::NativeText)));
   }
   snapAction_->setText(tr("Snap to &Grid"));
-  snapAction_->setToolTip(
-      tr("Moves land on multiples of %1 m").arg(editor::EditorTools::gridStep()));
+  snapAction_->setToolTip(tr("Moves land on multiples of %1 m")
+                              .arg(editor::formatNumber(editor::EditorTools::gridStep())));
 
   simulationMenu_->setTitle(tr("&Simulation"));
   playAction_->setText(playAction_->isChecked() ? tr("&Pause") : tr("&Run"));

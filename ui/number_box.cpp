@@ -3,6 +3,7 @@
 #include "ui/editor/number_text.h"
 
 #include <QFontMetrics>
+#include <QLineEdit>
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,13 @@ QSize NumberBox::sizeHint() const {
                             metrics.horizontalAdvance(textFromValue(maximum()) + ' '));
   size.rwidth() += metrics.horizontalAdvance(QStringLiteral("-0.0166667 ")) - ends;
   return size;
+}
+
+void NumberBox::focusOutEvent(QFocusEvent* event) {
+  QDoubleSpinBox::focusOutEvent(event);
+  // The box keeps the cursor where typing left it, at the end, and a text wider than the box
+  // would then hide its sign and leading digits; new values keep the cursor at the start.
+  lineEdit()->setCursorPosition(0);
 }
 
 void NumberBox::reportRefusal() {

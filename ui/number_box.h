@@ -26,6 +26,9 @@ class NumberBox : public QDoubleSpinBox {
   // A typed text was not taken; the box shows its value again.
   void refused(const QString& message);
 
+ protected:
+  void focusOutEvent(QFocusEvent* event) override;
+
  private:
   // Why `text` cannot be the value, or nothing when it can.
   QString problem(const QString& text) const;

@@ -1,5 +1,6 @@
 #include "ui/status_readout.h"
 
+#include "ui/editor/number_text.h"
 #include "ui/simulation_snapshot.h"
 #include "ui/sound_thread.h"
 
@@ -8,6 +9,8 @@
 #include <cmath>
 
 namespace carom::ui {
+
+using editor::formatNumber;
 
 StatusReadout::StatusReadout(const SoundThread* sound, QWidget* parent)
     : QLabel(parent), sound_(sound) {
@@ -72,15 +75,14 @@ void StatusReadout::refresh() {
   const double drift = snapshot->initialEnergy != 0.0
                            ? (energy - snapshot->initialEnergy) / std::abs(snapshot->initialEnergy)
                            : 0.0;
-  QString line = tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   "
-                    "E = %5 J (drift %6)",
-                    nullptr, static_cast<int>(snapshot->positions.size()))
-                     .arg(snapshot->time, 0, 'f', 3)
-                     .arg(snapshot->realTimeFactor, 0, 'f', 2)
-                     .arg(framesPerSecond_, 0, 'f', framesPerSecond_ < 10.0 ? 1 : 0)
-                     .arg(collisionsPerSecond_, 0, 'f', 0)
-                     .arg(energy, 0, 'g', 6)
-                     .arg(drift, 0, 'e', 1);
+  QString line =
+      tr("t = %1 s   ×%2 real time   %3 fps   %4 collisions/s   %n balls   "
+         "E = %5 J (drift %6)",
+         nullptr, static_cast<int>(snapshot->positions.size()))
+          .arg(formatNumber(snapshot->time, 'f', 3), formatNumber(snapshot->realTimeFactor, 'f', 2),
+               formatNumber(framesPerSecond_, 'f', framesPerSecond_ < 10.0 ? 1 : 0),
+               formatNumber(collisionsPerSecond_, 'f', 0), formatNumber(energy, 'g', 6),
+               formatNumber(drift, 'e', 1));
   if (!sound_->available())
     line += tr("   sound unavailable");
   else if (sound_->muted())

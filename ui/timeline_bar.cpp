@@ -1,6 +1,7 @@
 #include "ui/timeline_bar.h"
 
 #include "sim/run_recording.h"
+#include "ui/editor/number_text.h"
 #include "ui/simulation_snapshot.h"
 
 #include <QEvent>
@@ -84,15 +85,23 @@ void TimelineBar::retranslate() {
   slider_->setToolTip(
       tr("The recorded run: drag back to see an earlier moment; Run goes on "
          "from the moment shown and forgets what came after it."));
+  // Room for the line of a long run being scrubbed, so that the slider does not shrink as the
+  // numbers grow (and grow back as the replay's time comes and goes).
+  label_->setMinimumWidth(label_->fontMetrics().horizontalAdvance(
+      line(1000.0, 100000, 100000, 1000, std::size_t(1000) << 20, 100.0)));
+  label_->setText(line(time_, frame_, frameCount_, keyframes_, bytes_, scrubMilliseconds_));
+}
+
+QString TimelineBar::line(double time, std::uint64_t frame, std::uint64_t frameCount,
+                          std::uint64_t keyframes, std::size_t bytes, double scrubMilliseconds) {
   const QLocale locale;
-  QString text = tr("t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes", nullptr, int(keyframes_))
-                     .arg(locale.toString(time_, 'f', 3))
-                     .arg(locale.toString(qulonglong(frame_)))
-                     .arg(locale.toString(qulonglong(frameCount_)))
-                     .arg(locale.toString(double(bytes_) / (1 << 20), 'f', 1));
-  if (scrubMilliseconds_ > 0.0)
-    text += " · " + tr("replayed in %1 ms").arg(locale.toString(scrubMilliseconds_, 'f', 1));
-  label_->setText(text);
+  QString text = tr("t = %1 s · frame %2 of %3 · %4 MiB in %n keyframes", nullptr, int(keyframes))
+                     .arg(editor::formatNumber(time, 'f', 3), locale.toString(qulonglong(frame)),
+                          locale.toString(qulonglong(frameCount)),
+                          editor::formatNumber(double(bytes) / (1 << 20), 'f', 1));
+  if (scrubMilliseconds > 0.0)
+    text += " · " + tr("replayed in %1 ms").arg(editor::formatNumber(scrubMilliseconds, 'f', 1));
+  return text;
 }
 
 }  // namespace carom::ui

@@ -4,6 +4,7 @@
 // Dragging it, or its keys, asks for an earlier frame; the run pauses there. It keeps the
 // recording's memory budget (a setting, Simulation > Timeline Memory).
 
+#include <QString>
 #include <QWidget>
 
 #include <cstddef>
@@ -39,6 +40,9 @@ class TimelineBar : public QWidget {
 
  private:
   void retranslate();
+  // The line beside the slider for these numbers.
+  static QString line(double time, std::uint64_t frame, std::uint64_t frameCount,
+                      std::uint64_t keyframes, std::size_t bytes, double scrubMilliseconds);
 
   QSlider* slider_;
   QLabel* label_;

@@ -1,5 +1,6 @@
 #include "ui/video_export.h"
 
+#include "ui/editor/number_text.h"
 #include "ui/image_export.h"
 #include "ui/simulation_controller.h"
 #include "ui/video_frames.h"
@@ -56,9 +57,7 @@ bool readWhole(const QString& text, int* value) {
 }
 
 QString seconds(double value) {
-  QLocale locale;
-  locale.setNumberOptions(QLocale::OmitGroupSeparator);
-  return locale.toString(value, 'g', 12);
+  return editor::formatNumber(value, 'g', 12);
 }
 
 }  // namespace

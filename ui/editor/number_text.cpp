@@ -11,13 +11,20 @@ QLocale numberLocale() {
   return locale;
 }
 
+QString formatNumber(double value, char format, int precision) {
+  const QLocale locale = numberLocale();
+  QString text = locale.toString(value, format, precision);
+  const QString exponent = locale.exponential();
+  return text.replace(exponent, exponent.toLower());
+}
+
 QString formatNumber(double value) {
-  return numberLocale().toString(value, 'g', QLocale::FloatingPointShortest);
+  return formatNumber(value, 'g', QLocale::FloatingPointShortest);
 }
 
 QString formatShortNumber(double value) {
   constexpr int kShownDigits = 6;
-  return numberLocale().toString(value, 'g', kShownDigits);
+  return formatNumber(value, 'g', kShownDigits);
 }
 
 ParsedNumber parseNumber(const QString& typed) {

@@ -1,6 +1,7 @@
 #pragma once
 
-// Numbers as the editor shows and reads them, shared by the properties dock and the toolbar.
+// Numbers as the window shows and reads them: the docks, the toolbar, the status line, the
+// timeline and the plots all write them in the language's locale through these.
 
 #include <QLocale>
 #include <QString>
@@ -11,6 +12,10 @@ namespace carom::editor {
 
 // The user's locale without group separators.
 QLocale numberLocale();
+
+// `value` in the user's locale as QLocale::toString() writes it, with a lower-case exponent
+// ("-1e+12"): the locales' own capital E reads as a digit at a glance.
+QString formatNumber(double value, char format, int precision);
 
 // The shortest text that reads back as the same double.
 QString formatNumber(double value);

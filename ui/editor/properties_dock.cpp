@@ -13,10 +13,12 @@
 #include <QLineEdit>
 #include <QPixmap>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <bit>
 #include <optional>
 
@@ -38,6 +40,14 @@ class NumberField : public QLineEdit {
     value_ = value;
     showValue();
   }
+  // Room for a six-digit value with its sign ("-0.642395") instead of QLineEdit's 17 x's.
+  QSize sizeHint() const override {
+    QSize size = QLineEdit::sizeHint();
+    const QFontMetrics metrics = fontMetrics();
+    size.rwidth() += metrics.horizontalAdvance(formatNumber(-0.888888, 'f', 6)) -
+                     17 * metrics.horizontalAdvance(QLatin1Char('x')) + kCursorWidth;
+    return size;
+  }
 
  protected:
   void focusInEvent(QFocusEvent* event) override {
@@ -57,12 +67,19 @@ class NumberField : public QLineEdit {
     QString text;
     if (value_) text = editing ? formatNumber(*value_) : formatShortNumber(*value_);
     setText(text);
+    // setText() leaves the cursor at the end, and a field too narrow for its text scrolls to
+    // show the cursor: "-0.642395" read "642395". Shown at rest, the value's start (its sign
+    // and leading digits) matters most.
+    if (!editing) setCursorPosition(0);
     setModified(false);
     QStringList tip{value_ ? PropertiesDock::tr("%1: %2").arg(name_, formatNumber(*value_))
                            : name_};
     if (!hint_.isEmpty()) tip << hint_;
     setToolTip(tip.join('\n'));
   }
+
+  // The text cursor's width, which QLineEdit's own size hint leaves room for as well.
+  static constexpr int kCursorWidth = 1;
 
   QString name_;
   QString hint_;
@@ -149,10 +166,14 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
               return r.kind == ObjectKind::Plane ? &scene.planes[r.index].point
                                                  : &scene.cylinders[r.index].point;
             });
-  addVector(kPlanes, "normal", QT_TR_NOOP("Normal"), QT_TR_NOOP("Turn Plane"), direction,
-            [](const Scene& scene, const ObjectRef& r) { return &scene.planes[r.index].normal; });
-  addVector(kCylinders, "axis", QT_TR_NOOP("Axis"), QT_TR_NOOP("Turn Cylinder"), direction,
-            [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].axis; });
+  addVector(
+      kPlanes, "normal", QT_TR_NOOP("Normal"), QT_TR_NOOP("Turn Plane"), direction,
+      [](const Scene& scene, const ObjectRef& r) { return &scene.planes[r.index].normal; },
+      UnitPlace::Below);
+  addVector(
+      kCylinders, "axis", QT_TR_NOOP("Axis"), QT_TR_NOOP("Turn Cylinder"), direction,
+      [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].axis; },
+      UnitPlace::Below);
   addNumber(
       kCylinders, "cylinderRadius", QT_TR_NOOP("Radius"), QT_TR_NOOP("Change Radius"), m,
       [](const Scene& scene, const ObjectRef& r) { return &scene.cylinders[r.index].radius; });
@@ -241,19 +262,46 @@ QString PropertiesDock::message() const {
   return message_->text();
 }
 
+QSize PropertiesDock::sizeHint() const {
+  // Hidden rows count too: the dock should not need more room when the selection changes.
+  int labels = 0;
+  int fields = 0;
+  for (const Row& row : rows_) {
+    labels = std::max(labels, row.labelWidget->sizeHint().width());
+    fields = std::max(fields, row.widgets.back()->sizeHint().width());
+  }
+  auto* scroll = static_cast<QScrollArea*>(widget());
+  const QMargins margins = scroll->widget()->layout()->contentsMargins();
+  // A scroll bar may come with a long selection's rows; it takes its width from the fields.
+  const int body = margins.left() + labels + form_->horizontalSpacing() + fields + margins.right() +
+                   scroll->verticalScrollBar()->sizeHint().width();
+  QSize size = QDockWidget::sizeHint();
+  size.setWidth(std::max(size.width(), size.width() - scroll->sizeHint().width() + body));
+  return size;
+}
+
 int PropertiesDock::addRow(int kinds, const char* label, const char* change, QWidget* field,
-                           const char* unit) {
+                           const char* unit, UnitPlace place) {
   auto* labelWidget = new QLabel;
   std::vector<QWidget*> widgets = {labelWidget};
   QWidget* shown = field;
   QLabel* unitWidget = nullptr;
   if (unit) {
     shown = new QWidget;
-    auto* line = new QHBoxLayout(shown);
-    line->setContentsMargins(0, 0, 0, 0);
-    line->addWidget(field, 1);
     unitWidget = new QLabel;
-    line->addWidget(unitWidget);
+    if (place == UnitPlace::Beside) {
+      auto* line = new QHBoxLayout(shown);
+      line->setContentsMargins(0, 0, 0, 0);
+      line->addWidget(field, 1);
+      line->addWidget(unitWidget);
+    } else {
+      auto* column = new QVBoxLayout(shown);
+      column->setContentsMargins(0, 0, 0, 0);
+      column->setSpacing(0);
+      column->addWidget(field);
+      column->addWidget(unitWidget);
+      unitWidget->setForegroundRole(QPalette::PlaceholderText);
+    }
   }
   widgets.push_back(shown);
   labelWidget->setBuddy(field);
@@ -273,11 +321,11 @@ void PropertiesDock::addNumber(int kinds, const char* name, const char* label, c
 }
 
 void PropertiesDock::addVector(int kinds, const char* name, const char* label, const char* change,
-                               const char* unit, VectorAccess access) {
+                               const char* unit, VectorAccess access, UnitPlace place) {
   auto* fields = new QWidget;
   auto* line = new QHBoxLayout(fields);
   line->setContentsMargins(0, 0, 0, 0);
-  const int row = addRow(kinds, label, change, fields, unit);
+  const int row = addRow(kinds, label, change, fields, unit, place);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
     auto* edit = new NumberField;
@@ -344,7 +392,7 @@ void PropertiesDock::addRotation() {
   auto* line = new QHBoxLayout(axisFields);
   line->setContentsMargins(0, 0, 0, 0);
   rotationAxisRow_ = addRow(kBoxes, QT_TR_NOOP("Rotation axis"), QT_TR_NOOP("Turn Box"), axisFields,
-                            QT_TR_NOOP("(any length)"));
+                            QT_TR_NOOP("(any length)"), UnitPlace::Below);
   const char* axes[3] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a) {
     rotationFields_[a] = new NumberField;

@@ -37,6 +37,9 @@ class PropertiesDock : public QDockWidget {
   // The last refusal, shown under the fields until a field is entered or left with a valid
   // value, or the scene or the selection changes.
   QString message() const;
+  // Wide enough for every row any selection shows, so that three six-digit values with their
+  // signs fit each vector row whole; the window opens the dock this wide.
+  QSize sizeHint() const override;
 
  signals:
   // A typed value was refused; the text says why.
@@ -78,12 +81,15 @@ class PropertiesDock : public QDockWidget {
     TextAccess text;
   };
 
+  // A unit stands beside its field; a direction's "(any length)" goes under its three fields,
+  // which need the dock's width for their values.
+  enum class UnitPlace { Beside, Below };
   int addRow(int kinds, const char* label, const char* change, QWidget* field,
-             const char* unit = nullptr);
+             const char* unit = nullptr, UnitPlace place = UnitPlace::Beside);
   void addNumber(int kinds, const char* name, const char* label, const char* change,
                  const char* unit, NumberAccess access);
   void addVector(int kinds, const char* name, const char* label, const char* change,
-                 const char* unit, VectorAccess access);
+                 const char* unit, VectorAccess access, UnitPlace place = UnitPlace::Beside);
   void addText(int kinds, const char* name, const char* label, const char* change,
                TextAccess access, QToolButton* extra = nullptr);
   void addRestitution();
