@@ -573,7 +573,7 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage_data() {
                       << "Экспорт изображения…"
                       << "Ширина: должно быть от 16 до 8192 пикселей (получено 9000)"
                       << "Экспорт видео…"
-                      << "Конец: прогон записан только до 2 s (получено 2,5 s)";
+                      << "Конец: прогон записан только до 2 с (получено 2,5 с)";
 }
 
 // The Ball story dock is listed in the View menu under its title in the language, and File >
