@@ -6,6 +6,9 @@
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
+#include "ui/accuracy_window.h"
+#include "ui/simulation_controller.h"
+#include "ui/simulation_snapshot.h"
 #include "ui/render/render_scene.h"
 
 #include <QAction>
@@ -15,6 +18,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
+#include <QSlider>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -107,6 +111,8 @@ class TestUserSession : public carom::testing::EditorFixture {
   void newGivesAFloorToBuildOn();
   void statusMessagesLeaveTheReadout();
   void openEditDeleteSaveReopen();
+  void wholeSessionInEveryLanguage_data();
+  void wholeSessionInEveryLanguage();
   void buildWithBoxesSaveReopen();
   void buildWithCappedCylindersSaveReopen();
 
@@ -467,6 +473,150 @@ void TestUserSession::statusMessagesLeaveTheReadout() {
 
 // Open a file, edit each kind of object, delete from the start, middle and end, save, open it
 // again in a new window, and compare every field of every object with what was meant.
+void TestUserSession::wholeSessionInEveryLanguage_data() {
+  QTest::addColumn<QString>("language");
+  for (const char* code : {"en", "de", "ru"}) QTest::newRow(code) << QString(code);
+}
+
+// Issue 34's whole scenario, in each language: open an example, add one of each shape, type
+// negative values, drag and cancel, run, grab, scrub, study, save, reopen and compare every
+// field of every object.
+void TestUserSession::wholeSessionInEveryLanguage() {
+  QFETCH(QString, language);
+  QAction* chooseLanguage = window_->findChild<QAction*>("language:" + language);
+  QVERIFY(chooseLanguage);
+  chooseLanguage->trigger();
+  const QChar point = QLocale().decimalPoint().front();
+  const auto number = [point](QString text) { return text.replace('.', point); };
+
+  // An example: the Galton board, which stands on an open floor (y = 0).
+  window_->findChild<QAction*>("example:galton-board")->trigger();
+  const Scene board = *carom::io::loadSceneFile(":/scenes/galton-board.json").scene;
+  QTRY_VERIFY(document().scene() == board);
+  QTRY_VERIFY(window_->framesRendered() > 2);
+  const std::size_t ball = board.balls.size(), peg = board.cylinders.size();
+
+  // One of each shape, on the floor in front of the board and behind it.
+  QTest::keyClick(window_.get(), Qt::Key_B);
+  click(Vec3(1.5, 0, 1.0));
+  QVERIFY2(document().scene().balls.size() == ball + 1, qPrintable(window_->statusMessage()));
+  QTest::keyClick(window_.get(), Qt::Key_K);
+  click(Vec3(-1.5, 0, 1.0));
+  QVERIFY2(document().scene().boxes.size() == board.boxes.size() + 1,
+           qPrintable(window_->statusMessage()));
+  const std::size_t box = board.boxes.size();
+  const carom::Box& placed = document().scene().boxes[box];
+  QVERIFY(std::abs(placed.center.y() - placed.halfExtents.y()) < 1e-9);  // on the floor
+  QTest::keyClick(window_.get(), Qt::Key_C);
+  auto* toolLength = window_->findChild<QLineEdit*>("toolCylinderLength");
+  QTRY_VERIFY(toolLength && toolLength->isVisible());
+  QTest::mouseClick(toolLength, Qt::LeftButton);
+  QTest::keyClick(toolLength, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(toolLength, number("1.5"));
+  QTest::keyClick(toolLength, Qt::Key_Return);
+  click(Vec3(1.5, 0, -1.0));
+  QVERIFY2(document().scene().cylinders.size() == peg + 1, qPrintable(window_->statusMessage()));
+  const carom::Cylinder post = document().scene().cylinders[peg];
+  QCOMPARE(post.length, std::optional(1.5));
+  QVERIFY2(std::abs(post.point.y() - 0.75) < 1e-9, qPrintable(QString::number(post.point.y())));
+  QTest::keyClick(window_.get(), Qt::Key_P);
+  // A wall behind the board, as the camera looks: everything stays on its side.
+  const QVector3D eye = view().camera().eye(), target = view().camera().target();
+  const Vec3 away = Vec3(target.x() - eye.x(), 0, target.z() - eye.z()).normalized();
+  const Vec3 aside(-away.z(), 0, away.x());  // past the board's side, not through it
+  click(Vec3(target.x(), 0, target.z()) + 1.2 * away + 1.2 * aside);
+  QVERIFY2(document().scene().planes.size() == board.planes.size() + 1,
+           qPrintable(window_->statusMessage()));
+
+  // Negative values typed in the language's format, each shown from its sign.
+  QTest::keyClick(window_.get(), Qt::Key_V);
+  document().setSelection({{ObjectKind::Ball, int(ball)}});
+  type("velocity.x", number("-0.5"));
+  type("velocity.z", number("-0.25"));
+  QCOMPARE(document().scene().balls[ball].velocity, Vec3(-0.5, 0, -0.25));
+  document().setSelection({{ObjectKind::Box, int(box)}});
+  type("center.x", number("-1.642395"));
+  QCOMPARE(document().scene().boxes[box].center.x(), -1.642395);
+  auto* centreX = window_->propertiesDock()->findChild<QLineEdit*>("center.x");
+  centreX->clearFocus();  // the user moves on: the field shows six digits, from the sign
+  QVERIFY2(centreX->text().startsWith(number("-1.642")), qPrintable(centreX->text()));
+  QCOMPARE(centreX->cursorPosition(), 0);
+  type("halfExtents.x", number("0.25"));
+
+  // A drag of the box, cancelled with Escape: nothing changes.
+  const Scene edited = document().scene();
+  const int steps = document().undoStack()->count();
+  const carom::Box& crate = edited.boxes[box];
+  const QPoint from = at(crate.center + Vec3(0, crate.halfExtents.y(), 0));
+  const QPoint to = from + QPoint(60, 40);
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
+  for (int i = 1; i <= 10; ++i) QTest::mouseMove(&view(), from + (to - from) * i / 10);
+  QTRY_VERIFY(!(document().scene() == edited));
+  QTest::keyClick(&view(), Qt::Key_Escape);
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, to);
+  QVERIFY(document().scene() == edited);
+  QCOMPARE(document().undoStack()->count(), steps);
+
+  // Run, then pause.
+  QTest::keyClick(window_.get(), Qt::Key_Space);
+  QVERIFY(QTest::qWaitFor(
+      [&] {
+        const auto s = window_->simulation().latest();
+        return s && s->running && s->time > 0.5;
+      },
+      20000));
+  QTest::keyClick(window_.get(), Qt::Key_Space);
+  QVERIFY(QTest::qWaitFor([&] { return !window_->simulation().latest()->running; }, 10000));
+
+  // Grab the added ball and lift it: the run's state, not an edit.
+  const auto paused = window_->simulation().latest();
+  const Vec3 held = paused->positions[ball];
+  const QPoint grabAt = at(held);
+  QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, grabAt);
+  for (int i = 1; i <= 10; ++i) QTest::mouseMove(&view(), grabAt + QPoint(0, -3 * i));
+  QVERIFY(QTest::qWaitFor(
+      [&] {
+        const auto s = window_->simulation().latest();
+        return s->grabbed == int(ball) && s->positions[ball].y() > held.y() + 0.05;
+      },
+      10000));
+  QTest::mouseRelease(&view(), Qt::LeftButton, Qt::NoModifier, grabAt + QPoint(0, -30));
+  QVERIFY(document().scene() == edited);
+
+  // Scrub back along the timeline with its keys.
+  auto* slider = window_->findChild<QSlider*>("timelineSlider");
+  QVERIFY(slider);
+  QTest::mouseClick(slider, Qt::LeftButton, Qt::NoModifier, QPoint(slider->width() / 2, 3));
+  QTest::keyClick(slider, Qt::Key_PageDown);
+  QVERIFY(QTest::qWaitFor(
+      [&] {
+        const auto s = window_->simulation().latest();
+        return s->frame < s->frameCount;
+      },
+      10000));
+
+  // A short study of speed against accuracy.
+  carom::ui::AccuracyWindow* study = window_->openAccuracyWindow(0.5);
+  QVERIFY(study);
+  QTRY_VERIFY_WITH_TIMEOUT(!study->isRunning(), 120000);
+  QVERIFY(!study->results().empty());
+  study->close();
+
+  // Save, open something else, reopen: every field of every object as it was.
+  const QString file = folder_.filePath("session-" + language + ".carom");
+  saveAsThroughTheDialog(file);
+  QVERIFY(!document().isModified());
+  window_->findChild<QAction*>("example:gas-box")->trigger();
+  QTRY_VERIFY(document().scene().planes.size() != edited.planes.size() ||
+              document().scene().balls.size() != edited.balls.size());
+  openThroughTheDialog(file);
+  QCOMPARE(document().fileName(), QFileInfo(file).absoluteFilePath());
+  compareObjects(document().scene(), edited);
+  QVERIFY(document().scene().world == edited.world);
+  QVERIFY(document().scene() == edited);
+  QVERIFY(!document().isModified());
+}
+
 void TestUserSession::openEditDeleteSaveReopen() {
   Scene start = magicRoom();
   const QString file = folder_.filePath("session.carom");
