@@ -17,10 +17,6 @@ QString translated(const char* context, const char* text) {
   return QCoreApplication::translate(context, text);
 }
 
-QString sentence(const char* text) {
-  return QCoreApplication::translate("ValidationText", text);
-}
-
 std::optional<ObjectKind> kindOf(ValidationSubject subject) {
   switch (subject) {
     case ValidationSubject::Balls:
@@ -172,43 +168,51 @@ QString validationText(const ValidationError& error, const Scene& scene) {
     const QString ball = objectName(object, scene);
     const QString other = error.other ? objectName(*error.other, scene) : QString();
     if (error.problem == P::BehindSurface)
-      return sentence("%1 would be %2 behind the surface of %3")
+      return QCoreApplication::translate("ValidationText",
+                                         "%1 would be %2 behind the surface of %3")
           .arg(ball, distance(error.value), other);
-    return sentence("%1 would overlap %2 by %3").arg(ball, other, distance(error.value));
+    return QCoreApplication::translate("ValidationText", "%1 would overlap %2 by %3")
+        .arg(ball, other, distance(error.value));
   }
   if (error.problem == P::TooMany)
-    return sentence("%1: at most %2 in a scene (this would make %3)")
+    return QCoreApplication::translate("ValidationText",
+                                       "%1: at most %2 in a scene (this would make %3)")
         .arg(kindPluralName(*kindOf(object.subject)), number(error.high), number(error.value));
 
   // The field, of its object when it has one ("Radius of Ball 3"); the world's settings alone.
   const QString what = kindOf(object.subject)
-                           ? sentence("%1 of %2").arg(fieldLabel(field), objectName(object, scene))
+                           ? QCoreApplication::translate("ValidationText", "%1 of %2")
+                                 .arg(fieldLabel(field), objectName(object, scene))
                            : fieldLabel(field);
   switch (error.problem) {
     case P::NotFinite:
-      return sentence("%1 must be a finite number").arg(what);
+      return QCoreApplication::translate("ValidationText", "%1 must be a finite number").arg(what);
     case P::TooLarge:
-      return sentence("%1 must lie within ±%2 (got %3)")
+      return QCoreApplication::translate("ValidationText", "%1 must lie within ±%2 (got %3)")
           .arg(what, quantity(error.high, field), quantity(error.value, field));
     case P::NotPositive:
     case P::NotAboveZero:
-      return sentence("%1 must be above zero (got %2)").arg(what, quantity(error.value, field));
+      return QCoreApplication::translate("ValidationText", "%1 must be above zero (got %2)")
+          .arg(what, quantity(error.value, field));
     case P::TooSmall:
-      return sentence("%1 must be at least %2 (got %3)")
+      return QCoreApplication::translate("ValidationText", "%1 must be at least %2 (got %3)")
           .arg(what, quantity(error.low, field), quantity(error.value, field));
     case P::NotBetween:
-      return sentence("%1 must be between %2 and %3 (got %4)")
+      return QCoreApplication::translate("ValidationText", "%1 must be between %2 and %3 (got %4)")
           .arg(what, quantity(error.low, field), quantity(error.high, field),
                quantity(error.value, field));
     case P::ZeroLength:
-      return sentence("%1 must not be zero: it gives a direction").arg(what);
+      return QCoreApplication::translate("ValidationText",
+                                         "%1 must not be zero: it gives a direction")
+          .arg(what);
     case P::NameTooLong:
       return QCoreApplication::translate("ValidationText",
                                          "%1 must be at most %n characters long (got %2)", nullptr,
-                                         static_cast<int>(error.high))
+                                         int(error.high))
           .arg(what, number(error.value));
     case P::BadColor:
-      return sentence("%1 must be empty or a colour such as #ff8000 (got “%2”)")
+      return QCoreApplication::translate("ValidationText",
+                                         "%1 must be empty or a colour such as #ff8000 (got “%2”)")
           .arg(what, QString::fromStdString(error.quoted));
     case P::TooMany:
     case P::Overlaps:
