@@ -34,7 +34,8 @@ std::optional<ObjectKind> kindOf(ValidationSubject subject) {
   return std::nullopt;
 }
 
-// As the Outline names it, shortened as the window's other messages shorten names.
+// As the Outline names it, shortened as the window's other messages shorten names. An object
+// `scene` lacks (a caller's wrong scene) is named by kind and index rather than read past the end.
 QString objectName(const ValidationObject& object, const Scene& scene) {
   const ObjectRef ref{*kindOf(object.subject), static_cast<int>(object.index.value_or(0))};
   const QString label =
