@@ -48,8 +48,104 @@ std::string formatDepth(double value) {
   return formatNumber(value, 6);
 }
 
-std::string indexed(std::string_view list, std::size_t index) {
-  return std::string(list) + "[" + std::to_string(index) + "]";
+// The subject's name in paths: the file's key.
+std::string_view subjectKey(ValidationSubject subject) {
+  switch (subject) {
+    case ValidationSubject::World:
+      return "world";
+    case ValidationSubject::Tolerance:
+      return "tolerance";
+    case ValidationSubject::Planes:
+      return "planes";
+    case ValidationSubject::Cylinders:
+      return "cylinders";
+    case ValidationSubject::Boxes:
+      return "boxes";
+    case ValidationSubject::Balls:
+      return "balls";
+  }
+  return {};
+}
+
+std::string objectPath(const ValidationObject& object) {
+  std::string path(subjectKey(object.subject));
+  if (object.index) path += "[" + std::to_string(*object.index) + "]";
+  return path;
+}
+
+// The path below the object, such as ".position"; a tolerance is spelled as its subject's file
+// or command line spells it.
+std::string_view fieldPath(ValidationField field, ValidationSubject subject) {
+  using F = ValidationField;
+  const bool alone = subject == ValidationSubject::Tolerance;
+  switch (field) {
+    case F::None:
+      return {};
+    case F::Position:
+      return ".position";
+    case F::Velocity:
+      return ".velocity";
+    case F::Radius:
+      return ".radius";
+    case F::Mass:
+      return ".mass";
+    case F::Point:
+      return ".point";
+    case F::Normal:
+      return ".normal";
+    case F::Axis:
+      return ".axis";
+    case F::Length:
+      return ".length";
+    case F::Center:
+      return ".center";
+    case F::HalfExtentX:
+      return ".halfExtents[0]";
+    case F::HalfExtentY:
+      return ".halfExtents[1]";
+    case F::HalfExtentZ:
+      return ".halfExtents[2]";
+    case F::RotationAxis:
+      return ".rotation.axis";
+    case F::RotationDegrees:
+      return ".rotation.degrees";
+    case F::Name:
+      return ".name";
+    case F::Restitution:
+      return ".restitution";
+    case F::Color:
+      return ".color";
+    case F::Gravity:
+      return ".gravity";
+    case F::TimeStep:
+      return ".timeStep";
+    case F::EnergyTolerance:
+      return alone ? ".energy" : ".tolerance[0]";
+    case F::PenetrationTolerance:
+      return alone ? ".penetration" : ".tolerance[1]";
+  }
+  return {};
+}
+
+// A ball's overlap with `other`, reported on the ball's position: by `depth`, or, for a plane,
+// with its centre `behind` the surface.
+ValidationError overlapError(std::size_t ball, ValidationObject other, double depth,
+                             std::optional<double> behind = std::nullopt) {
+  ValidationError error;
+  error.object = {ValidationSubject::Balls, ball};
+  error.path = objectPath(error.object) + ".position";
+  error.other = other;
+  if (behind) {
+    error.problem = ValidationProblem::BehindSurface;
+    error.value = *behind;
+    error.message =
+        "overlaps " + objectPath(other) + " (is " + formatDepth(*behind) + " behind its surface)";
+  } else {
+    error.problem = ValidationProblem::Overlaps;
+    error.value = depth;
+    error.message = "overlaps " + objectPath(other) + " by " + formatDepth(depth);
+  }
+  return error;
 }
 
 class ErrorList {
@@ -58,8 +154,8 @@ class ErrorList {
 
   bool full() const { return errors_.size() >= maxErrors_; }
   std::size_t room() const { return full() ? 0 : maxErrors_ - errors_.size(); }
-  void add(std::string path, std::string message) {
-    if (!full()) errors_.push_back({std::move(path), std::move(message)});
+  void add(ValidationError error) {
+    if (!full()) errors_.push_back(std::move(error));
   }
   std::vector<ValidationError> take() { return std::move(errors_); }
 
@@ -68,85 +164,95 @@ class ErrorList {
   std::vector<ValidationError> errors_;
 };
 
+// The numbers and text a problem quotes (ValidationError's).
+struct Quoted {
+  double value = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+  std::string quoted{};
+};
+
 // The checks below report into `errors` when given one and only answer otherwise, so the same
 // rules decide both whether an object can take part in overlap tests and what is reported.
 class FieldChecker {
  public:
-  // Fields of `object` (such as "world"), or of entry `index` of list `object` (such as
-  // "balls"); paths are spelled only for a message, since a scene may hold a million balls.
-  FieldChecker(ErrorList* errors, std::string_view object,
+  // Fields of `subject` (the world, a tolerance), or of entry `index` of its list; paths are
+  // spelled only for a message, since a scene may hold a million balls.
+  FieldChecker(ErrorList* errors, ValidationSubject subject,
                std::optional<std::size_t> index = std::nullopt)
-      : errors_(errors), object_(object), index_(index) {}
+      : errors_(errors), object_{subject, index} {}
 
   bool ok() const { return ok_; }
 
-  void finiteBounded(std::string_view path, double value) {
-    if (!std::isfinite(value)) return fail(path, "must be finite");
-    if (std::abs(value) > tol::kMaxMagnitude)
-      fail(path, "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
-                     formatNumber(value) + ")");
+  void finiteBounded(ValidationField field, double value) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (std::abs(value) > tol::kMaxMagnitude) tooLarge(field, value);
   }
 
   // Returns whether the vector passed, so that a direction check can follow.
-  bool vector(std::string_view path, const Vec3& value) {
+  bool vector(ValidationField field, const Vec3& value) {
     for (int i = 0; i < 3; ++i) {
       if (!std::isfinite(value[i])) {
-        fail(path, "must be finite");
+        fail(field, ValidationProblem::NotFinite, "must be finite");
         return false;
       }
     }
     for (int i = 0; i < 3; ++i) {
       if (std::abs(value[i]) > tol::kMaxMagnitude) {
-        fail(path, "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
-                       formatNumber(value[i]) + ")");
+        tooLarge(field, value[i]);
         return false;
       }
     }
     return true;
   }
 
-  void direction(std::string_view path, const Vec3& value) {
-    if (vector(path, value) && value.norm() <= tol::kMinDirectionLength)
-      fail(path, "must not be zero-length");
+  void direction(ValidationField field, const Vec3& value) {
+    if (vector(field, value) && value.norm() <= tol::kMinDirectionLength)
+      fail(field, ValidationProblem::ZeroLength, "must not be zero-length");
   }
 
-  void radius(std::string_view path, double value) {
-    if (!std::isfinite(value)) return fail(path, "must be finite");
-    if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
+  void radius(ValidationField field, double value) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (value <= 0.0) return notPositive(field, value);
     if (value < tol::kMinRadius)
-      return fail(path, "must be at least " + formatNumber(tol::kMinRadius) + " (got " +
-                            formatNumber(value) + ")");
-    finiteBounded(path, value);
+      return fail(field, ValidationProblem::TooSmall,
+                  "must be at least " + formatNumber(tol::kMinRadius) + " (got " +
+                      formatNumber(value) + ")",
+                  {.value = value, .low = tol::kMinRadius});
+    finiteBounded(field, value);
   }
 
-  void positiveBetween(std::string_view path, double value, double low, double high) {
-    if (!std::isfinite(value)) return fail(path, "must be finite");
-    if (value <= 0.0) return fail(path, "must be positive (got " + formatNumber(value) + ")");
-    if (value < low || value > high)
-      fail(path, "must be between " + formatNumber(low) + " and " + formatNumber(high) + " (got " +
-                     formatNumber(value) + ")");
+  void positiveBetween(ValidationField field, double value, double low, double high) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (value <= 0.0) return notPositive(field, value);
+    if (value < low || value > high) between(field, value, low, high);
   }
 
-  void aboveZero(std::string_view path, double value) {
+  void aboveZero(ValidationField field, double value) {
     if (!std::isfinite(value) || !(value > 0.0))
-      fail(path, "must be a number above zero (got " + formatNumber(value) + ")");
+      fail(field, ValidationProblem::NotAboveZero,
+           "must be a number above zero (got " + formatNumber(value) + ")", {.value = value});
   }
 
-  void restitution(std::string_view path, const std::optional<double>& value) {
+  void restitution(ValidationField field, const std::optional<double>& value) {
     if (!value) return;
-    if (!std::isfinite(*value)) return fail(path, "must be finite");
-    if (*value < 0.0 || *value > 1.0)
-      fail(path, "must be between 0 and 1 (got " + formatNumber(*value) + ")");
+    if (!std::isfinite(*value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (*value < 0.0 || *value > 1.0) between(field, *value, 0.0, 1.0);
   }
 
   void info(const ObjectInfo& info) {
     const std::size_t nameLength = characterCount(info.name);
     if (nameLength > tol::kMaxNameCharacters)
-      fail(".name", "must be at most " + std::to_string(tol::kMaxNameCharacters) +
-                        " characters (got " + std::to_string(nameLength) + ")");
-    restitution(".restitution", info.restitution);
-    if (!isColor(info.color))
-      fail(".color", "must be empty or \"#rrggbb\" (got \"" + excerpt(info.color) + "\")");
+      fail(ValidationField::Name, ValidationProblem::NameTooLong,
+           "must be at most " + std::to_string(tol::kMaxNameCharacters) + " characters (got " +
+               std::to_string(nameLength) + ")",
+           {.value = double(nameLength), .high = double(tol::kMaxNameCharacters)});
+    restitution(ValidationField::Restitution, info.restitution);
+    if (!isColor(info.color)) {
+      std::string quoted = excerpt(info.color);
+      fail(ValidationField::Color, ValidationProblem::BadColor,
+           "must be empty or \"#rrggbb\" (got \"" + quoted + "\")", {.quoted = quoted});
+    }
   }
 
  private:
@@ -158,78 +264,112 @@ class FieldChecker {
     });
   }
 
-  // `field` is the path below the object, such as ".position".
-  void fail(std::string_view field, std::string message) {
+  void tooLarge(ValidationField field, double value) {
+    fail(field, ValidationProblem::TooLarge,
+         "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
+             formatNumber(value) + ")",
+         {.value = value, .high = tol::kMaxMagnitude});
+  }
+
+  void notPositive(ValidationField field, double value) {
+    fail(field, ValidationProblem::NotPositive,
+         "must be positive (got " + formatNumber(value) + ")", {.value = value});
+  }
+
+  void between(ValidationField field, double value, double low, double high) {
+    fail(field, ValidationProblem::NotBetween,
+         "must be between " + formatNumber(low) + " and " + formatNumber(high) + " (got " +
+             formatNumber(value) + ")",
+         {.value = value, .low = low, .high = high});
+  }
+
+  void fail(ValidationField field, ValidationProblem problem, std::string message,
+            Quoted quoted = {}) {
     ok_ = false;
     if (!errors_) return;
-    std::string path(object_);
-    if (index_) path += "[" + std::to_string(*index_) + "]";
-    errors_->add(path + std::string(field), std::move(message));
+    ValidationError error;
+    error.path = objectPath(object_) + std::string(fieldPath(field, object_.subject));
+    error.message = std::move(message);
+    error.problem = problem;
+    error.object = object_;
+    error.field = field;
+    error.value = quoted.value;
+    error.low = quoted.low;
+    error.high = quoted.high;
+    error.quoted = std::move(quoted.quoted);
+    errors_->add(std::move(error));
   }
 
   ErrorList* errors_;
-  std::string_view object_;
-  std::optional<std::size_t> index_;
+  ValidationObject object_;
   bool ok_ = true;
 };
 
+using F = ValidationField;
+
 bool checkPlane(const Plane& plane, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors, "planes", index);
-  check.vector(".point", plane.point);
-  check.direction(".normal", plane.normal);
+  FieldChecker check(errors, ValidationSubject::Planes, index);
+  check.vector(F::Point, plane.point);
+  check.direction(F::Normal, plane.normal);
   check.info(plane);
   return check.ok();
 }
 
 bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors, "cylinders", index);
-  check.vector(".point", cylinder.point);
-  check.direction(".axis", cylinder.axis);
-  check.radius(".radius", cylinder.radius);
-  if (cylinder.length) check.radius(".length", *cylinder.length);
+  FieldChecker check(errors, ValidationSubject::Cylinders, index);
+  check.vector(F::Point, cylinder.point);
+  check.direction(F::Axis, cylinder.axis);
+  check.radius(F::Radius, cylinder.radius);
+  if (cylinder.length) check.radius(F::Length, *cylinder.length);
   check.info(cylinder);
   return check.ok();
 }
 
 bool checkBox(const Box& box, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors, "boxes", index);
-  check.vector(".center", box.center);
-  constexpr std::string_view kHalfExtents[] = {".halfExtents[0]", ".halfExtents[1]",
-                                               ".halfExtents[2]"};
+  FieldChecker check(errors, ValidationSubject::Boxes, index);
+  check.vector(F::Center, box.center);
+  constexpr F kHalfExtents[] = {F::HalfExtentX, F::HalfExtentY, F::HalfExtentZ};
   for (int k = 0; k < 3; ++k) check.radius(kHalfExtents[k], box.halfExtents[k]);
   if (box.rotation) {
-    check.direction(".rotation.axis", box.rotation->axis);
-    check.finiteBounded(".rotation.degrees", box.rotation->degrees);
+    check.direction(F::RotationAxis, box.rotation->axis);
+    check.finiteBounded(F::RotationDegrees, box.rotation->degrees);
   }
   check.info(box);
   return check.ok();
 }
 
 bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
-  FieldChecker check(errors, "balls", index);
-  check.vector(".position", ball.position);
-  check.vector(".velocity", ball.velocity);
-  check.radius(".radius", ball.radius);
-  check.positiveBetween(".mass", ball.mass, tol::kMinMass, tol::kMaxMass);
+  FieldChecker check(errors, ValidationSubject::Balls, index);
+  check.vector(F::Position, ball.position);
+  check.vector(F::Velocity, ball.velocity);
+  check.radius(F::Radius, ball.radius);
+  check.positiveBetween(F::Mass, ball.mass, tol::kMinMass, tol::kMaxMass);
   check.info(ball);
   return check.ok();
 }
 
 void checkWorld(const World& world, ErrorList& errors) {
-  FieldChecker check(&errors, "world");
-  check.vector(".gravity", world.gravity);
-  check.positiveBetween(".timeStep", world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
-  check.restitution(".restitution", world.restitution);
+  FieldChecker check(&errors, ValidationSubject::World);
+  check.vector(F::Gravity, world.gravity);
+  check.positiveBetween(F::TimeStep, world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
+  check.restitution(F::Restitution, world.restitution);
   if (world.autoMethod) {
-    check.aboveZero(".tolerance[0]", world.autoMethod->energyPerSecond);
-    check.aboveZero(".tolerance[1]", world.autoMethod->penetrationFraction);
+    check.aboveZero(F::EnergyTolerance, world.autoMethod->energyPerSecond);
+    check.aboveZero(F::PenetrationTolerance, world.autoMethod->penetrationFraction);
   }
 }
 
-bool checkCount(std::string_view list, std::size_t count, std::size_t limit, ErrorList& errors) {
+bool checkCount(ValidationSubject list, std::size_t count, std::size_t limit, ErrorList& errors) {
   if (count <= limit) return true;
-  errors.add(std::string(list), "must have at most " + std::to_string(limit) + " entries (got " +
-                                    std::to_string(count) + ")");
+  ValidationError error;
+  error.object = {list, std::nullopt};
+  error.path = objectPath(error.object);
+  error.message =
+      "must have at most " + std::to_string(limit) + " entries (got " + std::to_string(count) + ")";
+  error.problem = ValidationProblem::TooMany;
+  error.value = double(count);
+  error.high = double(limit);
+  errors.add(std::move(error));
   return false;
 }
 
@@ -475,13 +615,10 @@ void checkBallAgainstPlane(const Ball& ball, std::size_t ballIndex, const Indexe
                            ErrorList& errors) {
   const double distance = plane.shape.gap(ball.position, 0.0);
   if (!overlaps(ball.radius - distance, ball.radius)) return;
-  const std::string path = indexed("balls", ballIndex) + ".position";
-  const std::string other = indexed("planes", plane.index);
-  if (distance < 0.0)
-    errors.add(path,
-               "overlaps " + other + " (is " + formatDepth(-distance) + " behind its surface)");
-  else
-    errors.add(path, "overlaps " + other + " by " + formatDepth(ball.radius - distance));
+  const ValidationObject other{ValidationSubject::Planes, plane.index};
+  const double depth = ball.radius - distance;
+  errors.add(distance < 0.0 ? overlapError(ballIndex, other, depth, -distance)
+                            : overlapError(ballIndex, other, depth));
 }
 
 void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
@@ -490,16 +627,14 @@ void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
   // An infinite cylinder's overlap is judged against the radii's sum, as its distance is taken.
   const double scale = cylinder.shape.capped() ? ball.radius : ball.radius + cylinder.shape.radius;
   if (overlaps(depth, scale))
-    errors.add(indexed("balls", ballIndex) + ".position",
-               "overlaps " + indexed("cylinders", cylinder.index) + " by " + formatDepth(depth));
+    errors.add(overlapError(ballIndex, {ValidationSubject::Cylinders, cylinder.index}, depth));
 }
 
 void checkBallAgainstBox(const Ball& ball, std::size_t ballIndex, const IndexedBox& box,
                          ErrorList& errors) {
   const double depth = -box.shape.contact(ball.position, ball.radius).gap;
   if (overlaps(depth, ball.radius))
-    errors.add(indexed("balls", ballIndex) + ".position",
-               "overlaps " + indexed("boxes", box.index) + " by " + formatDepth(depth));
+    errors.add(overlapError(ballIndex, {ValidationSubject::Boxes, box.index}, depth));
 }
 
 void checkBallAgainstStatics(const Ball& ball, std::size_t ballIndex, const StaticShapes& shapes,
@@ -524,17 +659,16 @@ void checkBalls(const Scene& scene, const StaticShapes& shapes, ErrorList& error
     }
     checkBallAgainstStatics(balls[i], i, shapes, errors);
     for (const auto& overlap : finder.overlapsOf(i))
-      errors.add(
-          indexed("balls", i) + ".position",
-          "overlaps " + indexed("balls", overlap.earlier) + " by " + formatDepth(overlap.depth));
+      errors.add(overlapError(i, {ValidationSubject::Balls, overlap.earlier}, overlap.depth));
   }
 }
 
 bool checkCounts(const SceneCounts& counts, ErrorList& errors) {
-  bool countsOk = checkCount("planes", counts.planes, tol::kMaxPlanes, errors);
-  countsOk &= checkCount("cylinders", counts.cylinders, tol::kMaxCylinders, errors);
-  countsOk &= checkCount("boxes", counts.boxes, tol::kMaxBoxes, errors);
-  countsOk &= checkCount("balls", counts.balls, tol::kMaxBalls, errors);
+  bool countsOk = checkCount(ValidationSubject::Planes, counts.planes, tol::kMaxPlanes, errors);
+  countsOk &=
+      checkCount(ValidationSubject::Cylinders, counts.cylinders, tol::kMaxCylinders, errors);
+  countsOk &= checkCount(ValidationSubject::Boxes, counts.boxes, tol::kMaxBoxes, errors);
+  countsOk &= checkCount(ValidationSubject::Balls, counts.balls, tol::kMaxBalls, errors);
   return countsOk;
 }
 
@@ -607,9 +741,9 @@ std::vector<ValidationError> validateWorld(const World& world, std::size_t maxEr
 
 std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance) {
   ErrorList errors(2);
-  FieldChecker check(&errors, "tolerance");
-  check.aboveZero(".energy", tolerance.energyPerSecond);
-  check.aboveZero(".penetration", tolerance.penetrationFraction);
+  FieldChecker check(&errors, ValidationSubject::Tolerance);
+  check.aboveZero(F::EnergyTolerance, tolerance.energyPerSecond);
+  check.aboveZero(F::PenetrationTolerance, tolerance.penetrationFraction);
   return errors.take();
 }
 
@@ -705,8 +839,7 @@ std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndi
       if (!overlaps(depth, radiusSum)) continue;
       // Reported on the later ball, as validateScene does.
       ErrorList pair(kAll);
-      pair.add(indexed("balls", std::max(i, j)) + ".position",
-               "overlaps " + indexed("balls", std::min(i, j)) + " by " + formatDepth(depth));
+      pair.add(overlapError(std::max(i, j), {ValidationSubject::Balls, std::min(i, j)}, depth));
       collect(kBallList, std::max(i, j), pair);
     }
   }

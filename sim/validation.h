@@ -3,16 +3,81 @@
 
 #include "sim/scene.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace carom {
 
+// What a problem is about: the world, a tolerance given alone (carom-cli --tolerance), or a list
+// of the scene's objects, or one entry of it.
+enum class ValidationSubject { World, Tolerance, Planes, Cylinders, Boxes, Balls };
+
+struct ValidationObject {
+  ValidationSubject subject = ValidationSubject::World;
+  std::optional<std::size_t> index;  // the entry; none for the world, a tolerance, a whole list
+  bool operator==(const ValidationObject&) const = default;
+};
+
+// The field of the object a problem is in; None for a list's length and an overlap (which is the
+// ball's position).
+enum class ValidationField {
+  None,
+  Position,
+  Velocity,
+  Radius,
+  Mass,
+  Point,
+  Normal,
+  Axis,
+  Length,
+  Center,
+  HalfExtentX,
+  HalfExtentY,
+  HalfExtentZ,
+  RotationAxis,
+  RotationDegrees,
+  Name,
+  Restitution,
+  Color,
+  Gravity,
+  TimeStep,
+  EnergyTolerance,
+  PenetrationTolerance,
+};
+
+// Each of ValidationError's messages, with the numbers it quotes.
+enum class ValidationProblem {
+  NotFinite,      // "must be finite"
+  TooLarge,       // |value| above `high`: "must be at most 1e12 in magnitude (got value)"
+  NotPositive,    // value <= 0: "must be positive (got value)"
+  TooSmall,       // value below `low`: "must be at least 1e-12 (got value)"
+  NotBetween,     // value outside [low, high]: "must be between low and high (got value)"
+  NotAboveZero,   // value <= 0 or not a number: "must be a number above zero (got value)"
+  ZeroLength,     // a direction: "must not be zero-length"
+  NameTooLong,    // `value` characters, at most `high`
+  BadColor,       // `quoted` is not "#rrggbb"
+  TooMany,        // a list of `value` entries, at most `high`
+  Overlaps,       // the ball overlaps `other` by `value`
+  BehindSurface,  // the ball's centre is `value` behind the surface of the plane `other`
+};
+
 struct ValidationError {
   std::string path;     // field path such as "balls[3].radius" or "world.timeStep"
   std::string message;  // what is wrong, such as "must be positive (got -1)"
   std::string text() const { return path.empty() ? message : path + ": " + message; }
+
+  // The same problem as data, for the window to say in the user's words and language; path and
+  // message stay the file's words for carom-cli and the loader. Filled by this header's checks.
+  ValidationProblem problem = ValidationProblem::NotFinite;
+  ValidationObject object{};
+  ValidationField field = ValidationField::None;
+  std::optional<ValidationObject> other{};  // what a ball overlaps
+  double value = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+  std::string quoted{};  // a refused colour, shortened as the message quotes it
 };
 
 // All problems of the scene, in file order (at most `maxErrors`); empty when the scene is valid.

@@ -154,8 +154,9 @@ void TestEditor::addsBoxesRestingOnWhatIsClicked() {
   click(Vec3(0.7, 0, 0));
   QCOMPARE(document().scene().boxes.size(), std::size_t{2});
   QCOMPARE(document().undoStack()->count(), commands);
-  QVERIFY2(window_->statusMessage().contains("overlaps boxes[2]"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(
+      window_->statusMessage().startsWith("Cannot place it there: first would overlap Box 2 by"),
+      qPrintable(window_->statusMessage()));
 
   // Undo takes the stacked box away, redo puts it back as it was.
   const carom::Scene withBoth = document().scene();
@@ -699,6 +700,10 @@ void TestEditor::runningStateSurvivesAddingAndDeleting() {
   QCOMPARE(window_->simulation().latest()->positions[0], Vec3(2, 3, 0));
   QVERIFY2(window_->statusMessage().contains("does not fit the running state"),
            qPrintable(window_->statusMessage()));
+  // In words, naming the balls as the Outline does, not by the file's paths.
+  QVERIFY2(window_->statusMessage().contains("(in the way would overlap "),
+           qPrintable(window_->statusMessage()));
+  QVERIFY2(!window_->statusMessage().contains("balls["), qPrintable(window_->statusMessage()));
 }
 
 void TestEditor::useCurrentStateAsInitial() {

@@ -404,31 +404,31 @@ void TestEditorDocks::refusesBadValues_data() {
   QTest::addColumn<QString>("message");
   QTest::newRow("negative radius") << "ballRadius"
                                    << "-1"
-                                   << "balls[0].radius: must be positive";
+                                   << "Radius of first must be above zero (got -1 m)";
   QTest::newRow("zero mass") << "mass"
                              << "0"
-                             << "balls[0].mass: must be positive";
+                             << "Mass of first must be above zero (got 0 kg)";
   QTest::newRow("not a number") << "mass"
                                 << "heavy"
                                 << "“heavy” is not a number";
   QTest::newRow("nan") << "position.x"
                        << "nan"
-                       << "balls[0].position: must be finite";
+                       << "Position of first must be a finite number";
   QTest::newRow("overflow") << "velocity.z"
                             << "1e400"
                             << "“1e400” is out of range";
   QTest::newRow("absurd") << "velocity.z"
                           << "1e300"
-                          << "balls[0].velocity: must be at most";
+                          << "Velocity of first must lie within ±";
   QTest::newRow("restitution") << "restitution"
                                << "1.5"
-                               << "balls[0].restitution";
+                               << "Restitution of first must be between 0 and 1 (got 1.5)";
   QTest::newRow("colour") << "color"
                           << "red"
-                          << "balls[0].color: must be empty or";
+                          << "Colour of first must be empty or a colour";
   QTest::newRow("into the floor") << "position.y"
                                   << "0.2"
-                                  << "overlaps";
+                                  << "first would overlap floor by 0.3 m";
 }
 
 void TestEditorDocks::refusesBadValues() {
@@ -531,7 +531,7 @@ void TestEditorDocks::editsABox() {
   // A turn about a zero axis is refused, whichever component makes it zero.
   type("rotationDegrees", "10");
   type("rotationAxis.y", "0");
-  QVERIFY2(properties().message().contains("boxes[0].rotation.axis"),
+  QVERIFY2(properties().message().contains("Rotation axis of crate must not be zero"),
            qPrintable(properties().message()));
   QVERIFY(document().scene().boxes[0].rotation == (carom::Rotation{Vec3::UnitY(), 10}));
 }
@@ -542,16 +542,16 @@ void TestEditorDocks::refusesBadBoxValues_data() {
   QTest::addColumn<QString>("message");
   QTest::newRow("zero size") << "halfExtents.x"
                              << "0"
-                             << "boxes[0].halfExtents[0]: must be positive";
+                             << "Half extents x of Box 0 must be above zero";
   QTest::newRow("negative size") << "halfExtents.z"
                                  << "-0.5"
-                                 << "boxes[0].halfExtents[2]: must be positive";
+                                 << "Half extents z of Box 0 must be above zero";
   QTest::newRow("onto the ball") << "center.x"
                                  << "0.5"
-                                 << "balls[0].position: overlaps boxes[0]";
+                                 << "first would overlap Box 0 by";
   QTest::newRow("grown into the ball") << "halfExtents.x"
                                        << "1.8"
-                                       << "overlaps boxes[0]";
+                                       << "first would overlap Box 0 by";
   QTest::newRow("not a number") << "rotationDegrees"
                                 << "lots"
                                 << "“lots” is not a number";
@@ -608,7 +608,7 @@ void TestEditorDocks::editsTheWorldWhenNothingIsSelected() {
   // The toolbar shows the same world.
   QCOMPARE(window_->findChild<QDoubleSpinBox*>("gravityY")->value(), -3.5);
   type("timeStep", "0");
-  QVERIFY(properties().message().contains("world.timeStep"));
+  QCOMPARE(properties().message(), QString("Time step must be above zero (got 0 s)"));
   QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
   type("worldRestitution", "0.9");
   QCOMPARE(document().scene().world.restitution, 0.9);
@@ -740,7 +740,7 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2);
   QVERIFY(face);
   drag(at(face->tip), at(face->tip - Vec3(0, 0, 1.5)),
-       [&] { return window_->statusMessage().contains("boxes[0].halfExtents[2]"); });
+       [&] { return window_->statusMessage().contains("Half extents z of Box 0"); });
   QVERIFY(document().scene().boxes[0].halfExtents.z() > 0.0);
   QVERIFY(std::abs(document().scene().boxes[0].center.z() -
                    document().scene().boxes[0].halfExtents.z() + 0.5) < 1e-9);
@@ -842,17 +842,17 @@ void TestEditorDocks::refusesBadLengths_data() {
   QTest::addColumn<QString>("typed");
   QTest::addColumn<QString>("message");
   QTest::newRow("negative") << "-1"
-                            << "cylinders[0].length: must be positive";
+                            << "Length of Cylinder 0 must be above zero (got -1 m)";
   QTest::newRow("zero") << "0"
-                        << "cylinders[0].length: must be positive";
+                        << "Length of Cylinder 0 must be above zero (got 0 m)";
   QTest::newRow("not a number") << "long"
                                 << "“long” is not a number";
   QTest::newRow("infinity") << "inf"
-                            << "cylinders[0].length: must be finite";
+                            << "Length of Cylinder 0 must be a finite number";
   QTest::newRow("grown into the ball") << "4"
-                                       << "balls[0].position: overlaps cylinders[0]";
+                                       << "first would overlap Cylinder 0 by";
   QTest::newRow("made infinite through the ball") << ""
-                                                  << "balls[0].position: overlaps cylinders[0]";
+                                                  << "first would overlap Cylinder 0 by";
 }
 
 // A capped cylinder lying along x beside the ball: each bad length is refused with a message
@@ -973,8 +973,9 @@ void TestEditorDocks::resizesACappedCylinderByItsEnds() {
   connect(window_->tools(), &carom::editor::EditorTools::refused, this, [&] { ++refusals; });
   top = findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, 1);
   QVERIFY(top);
-  drag(at(top->tip), at(top->tip - Vec3(0, 1.6, 0)),
-       [&] { return window_->statusMessage().contains("cylinders[0].length: must be positive"); });
+  drag(at(top->tip), at(top->tip - Vec3(0, 1.6, 0)), [&] {
+    return window_->statusMessage().contains("Length of Cylinder 0 must be above zero");
+  });
   QCOMPARE(refusals, 1);
   const carom::Cylinder shortest = document().scene().cylinders[0];
   QVERIFY(*shortest.length > 0.0 && *shortest.length < *raised.length);
@@ -1052,7 +1053,8 @@ void TestEditorDocks::turnsABoxByItsHandle() {
 void TestEditorDocks::typesANormal() {
   document().setSelection({{ObjectKind::Plane, 2}});  // the wall at x = 4, facing -x
   type("normal.x", "0");
-  QVERIFY2(properties().message().contains("planes[2].normal"), qPrintable(properties().message()));
+  QVERIFY2(properties().message().contains("Normal of Plane 2 must not be zero"),
+           qPrintable(properties().message()));
   QCOMPARE(document().scene().planes[2].normal, Vec3(-1, 0, 0));
   type("normal.z", "-1");
   QCOMPARE(document().scene().planes[2].normal, Vec3(-1, 0, -1));  // any length will do
@@ -1278,7 +1280,7 @@ void TestEditorDocks::refusalGoesOnceTheFieldIsValidAgain() {
   QCOMPARE(document().undoStack()->count(), 0);
   // A refusal by the validation, then the field left with its (valid) value as it is.
   type("ballRadius", "-1");
-  QVERIFY(properties().message().contains("balls[0].radius: must be positive"));
+  QVERIFY(properties().message().contains("Radius of first must be above zero"));
   QCOMPARE(field("ballRadius")->text(), QString("0.5"));
   QTest::keyClick(field("ballRadius"), Qt::Key_Return);
   QVERIFY2(properties().message().isEmpty(), qPrintable(properties().message()));
@@ -1297,7 +1299,7 @@ void TestEditorDocks::refusesNamesOverTheLimit() {
   document().setSelection({{ObjectKind::Ball, 0}});
   const carom::Scene before = document().scene();
   type("name", QString(257, 'n'));
-  const QString typed = "balls[0].name: must be at most 256 characters (got 257)";
+  const QString typed = "Name of first must be at most 256 characters long (got 257)";
   QVERIFY2(properties().message().contains(typed), qPrintable(properties().message()));
   QVERIFY2(window_->statusMessage().contains(typed), qPrintable(window_->statusMessage()));
   QVERIFY(document().scene() == before);
@@ -1311,7 +1313,7 @@ void TestEditorDocks::refusesNamesOverTheLimit() {
   QTest::keyClick(name, Qt::Key_V, Qt::ControlModifier);
   QCOMPARE(name->text().size(), 30'000);
   QTest::keyClick(name, Qt::Key_Return);
-  const QString pasted = "balls[0].name: must be at most 256 characters (got 30000)";
+  const QString pasted = "Name of first must be at most 256 characters long (got 30,000)";
   QVERIFY2(properties().message().contains(pasted), qPrintable(properties().message()));
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), 0);
@@ -1333,7 +1335,8 @@ void TestEditorDocks::outlineRefusesNamesOverTheLimit() {
   QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClick(editor, Qt::Key_V, Qt::ControlModifier);
   QTest::keyClick(editor, Qt::Key_Return);
-  const QString refusal = "planes[0].name: must be at most 256 characters (got 300)";
+  // Named by the name it keeps.
+  const QString refusal = "Name of floor must be at most 256 characters long (got 300)";
   QTRY_VERIFY2(window_->statusMessage().contains(refusal), qPrintable(window_->statusMessage()));
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), 0);

@@ -707,7 +707,7 @@ void TestUserSession::buildWithBoxesSaveReopen() {
   const Scene typedIn = document().scene();
   type("halfExtents.y", "0");
   QVERIFY(document().scene() == typedIn);
-  QVERIFY2(window_->statusMessage().contains("boxes[0].halfExtents[1]: must be positive"),
+  QVERIFY2(window_->statusMessage().contains("Half extents y of crate must be above zero"),
            qPrintable(window_->statusMessage()));
 
   // The second box, made longer by its +x face and turned by its handle.
@@ -798,7 +798,7 @@ void TestUserSession::buildWithCappedCylindersSaveReopen() {
   type("cylinderLength", "0");
   QVERIFY(document().scene() == standing);
   QCOMPARE(document().undoStack()->count(), commands);
-  QVERIFY2(window_->statusMessage().contains("cylinders[0].length: must be positive"),
+  QVERIFY2(window_->statusMessage().contains("Length of Cylinder 0 must be above zero"),
            qPrintable(window_->statusMessage()));
 
   // The next post is capped like the last one, with its lower cap on the floor.

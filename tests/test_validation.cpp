@@ -453,6 +453,108 @@ class ValidationTest : public QObject {
                          "\u00e9\u2026\")"});
   }
 
+  // Beside the file's words, each error says what it is about as data, for the window to word
+  // it (ui/editor/validation_text.h): the problem, the object and field, the other object of an
+  // overlap, and the numbers.
+  void errorsCarryWhatTheyAreAbout() {
+    using carom::ValidationError;
+    using carom::ValidationObject;
+    using F = carom::ValidationField;
+    using P = carom::ValidationProblem;
+    using S = carom::ValidationSubject;
+    const auto only = [](const std::vector<ValidationError>& errors) {
+      return errors.size() == 1 ? errors.front() : ValidationError{};
+    };
+    const auto edited = [](const SceneEdit& edit) {
+      Scene scene = baseScene();
+      edit(scene);
+      return scene;
+    };
+
+    ValidationError e =
+        only(carom::validateScene(edited([](Scene& s) { s.balls[1].radius = -1; })));
+    QCOMPARE(e.path, std::string("balls[1].radius"));
+    QCOMPARE(e.problem, P::NotPositive);
+    QVERIFY(e.object == (ValidationObject{S::Balls, 1}));
+    QCOMPARE(e.field, F::Radius);
+    QCOMPARE(e.value, -1.0);
+    QVERIFY(!e.other);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.balls[0].mass = 1e31; })));
+    QCOMPARE(e.problem, P::NotBetween);
+    QCOMPARE(e.field, F::Mass);
+    QCOMPARE(e.value, 1e31);
+    QCOMPARE(e.low, carom::tolerance::kMinMass);
+    QCOMPARE(e.high, carom::tolerance::kMaxMass);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.cylinders[0].radius = 1e-13; })));
+    QCOMPARE(e.problem, P::TooSmall);
+    QVERIFY(e.object == (ValidationObject{S::Cylinders, 0}));
+    QCOMPARE(e.low, carom::tolerance::kMinRadius);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.boxes[0].halfExtents.y() = 0; })));
+    QCOMPARE(e.path, std::string("boxes[0].halfExtents[1]"));
+    QCOMPARE(e.field, F::HalfExtentY);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.world.gravity.z() = 1e300; })));
+    QCOMPARE(e.problem, P::TooLarge);
+    QVERIFY(e.object == (ValidationObject{S::World, std::nullopt}));
+    QCOMPARE(e.field, F::Gravity);
+    QCOMPARE(e.value, 1e300);
+    QCOMPARE(e.high, carom::tolerance::kMaxMagnitude);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.planes[0].normal = Vec3::Zero(); })));
+    QCOMPARE(e.problem, P::ZeroLength);
+    QCOMPARE(e.field, F::Normal);
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.planes[0].color = "red"; })));
+    QCOMPARE(e.problem, P::BadColor);
+    QCOMPARE(e.field, F::Color);
+    QCOMPARE(e.quoted, std::string("red"));
+
+    e = only(
+        carom::validateScene(edited([](Scene& s) { s.balls[0].name = std::string(300, 'n'); })));
+    QCOMPARE(e.problem, P::NameTooLong);
+    QCOMPARE(e.value, 300.0);
+    QCOMPARE(e.high, double(carom::tolerance::kMaxNameCharacters));
+
+    // Overlaps name the ball and what it overlaps, by how much.
+    e = only(carom::validateScene(edited([](Scene& s) { s.balls[1].position.y() = 0.2; })));
+    QCOMPARE(e.problem, P::Overlaps);
+    QVERIFY(e.object == (ValidationObject{S::Balls, 1}));
+    QCOMPARE(e.field, F::None);
+    QVERIFY(e.other == (ValidationObject{S::Planes, 0}));
+    QVERIFY(std::abs(e.value - 0.3) < 1e-12);
+    e = only(carom::validateScene(edited([](Scene& s) { s.balls[1].position.y() = -1; })));
+    QCOMPARE(e.problem, P::BehindSurface);
+    QCOMPARE(e.value, 1.0);
+    const Scene pair = edited([](Scene& s) { s.balls[1].position.x() = 0.5; });
+    for (const ValidationError& error : {only(carom::validateScene(pair)),
+                                         only(carom::validateObjects(pair, {{}, {}, {}, {0}}))}) {
+      QCOMPARE(error.problem, P::Overlaps);
+      QVERIFY(error.object == (ValidationObject{S::Balls, 1}));
+      QVERIFY(error.other == (ValidationObject{S::Balls, 0}));
+      QCOMPARE(error.value, 0.5);
+    }
+    e = only(carom::validateScene(edited([](Scene& s) { s.balls[1].position = Vec3(5, 1, 0.9); })));
+    QVERIFY(e.other == (ValidationObject{S::Cylinders, 0}));
+    e = only(
+        carom::validateScene(edited([](Scene& s) { s.balls[1].position = Vec3(-4.2, 1, 0); })));
+    QVERIFY(e.other == (ValidationObject{S::Boxes, 0}));
+
+    // A whole list, and a tolerance given alone.
+    e = only(carom::validateCounts({.balls = carom::tolerance::kMaxBalls + 1}));
+    QCOMPARE(e.problem, P::TooMany);
+    QVERIFY(e.object == (ValidationObject{S::Balls, std::nullopt}));
+    QCOMPARE(e.value, double(carom::tolerance::kMaxBalls + 1));
+    QCOMPARE(e.high, double(carom::tolerance::kMaxBalls));
+    e = only(carom::validateTolerance({0.0, 0.1}));
+    QCOMPARE(e.path, std::string("tolerance.energy"));
+    QCOMPARE(e.problem, P::NotAboveZero);
+    QVERIFY(e.object == (ValidationObject{S::Tolerance, std::nullopt}));
+    QCOMPARE(e.field, F::EnergyTolerance);
+  }
+
   void errorsComeInFileOrder() {
     Scene scene = baseScene();
     scene.balls.push_back(makeBall(Vec3(2.5, 1, 0), 0.5));  // overlaps balls[1]

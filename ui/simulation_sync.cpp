@@ -4,6 +4,7 @@
 #include "ui/call_queue.h"
 #include "ui/editor/running_state.h"
 #include "ui/editor/scene_document.h"
+#include "ui/editor/validation_text.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
 
@@ -71,10 +72,10 @@ void SimulationSync::startMade() {
 }
 
 void SimulationSync::restart(Start start) {
-  if (!start.unfitRunningState.empty())
+  if (start.unfitRunningState)
     emit message(
         tr("The edit does not fit the running state (%1): restarted from the edited scene.")
-            .arg(QString::fromStdString(start.unfitRunningState)));
+            .arg(editor::validationText(*start.unfitRunningState, *start.scene)));
   start_ = std::move(start.scene);
   startNumber_ = simulation_->loadScene(start_);
   emit restarted(start_);
@@ -101,7 +102,7 @@ SimulationSync::Start SimulationSync::makeStart(
   }
   Scene start = editor::withRunningBalls(edited, change, positions, velocities);
   if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty())
-    return {std::make_shared<const Scene>(edited), errors.front().text()};
+    return {std::make_shared<const Scene>(edited), errors.front()};
   return {std::make_shared<const Scene>(std::move(start)), {}};
 }
 

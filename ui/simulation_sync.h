@@ -5,6 +5,7 @@
 // left alone where the run has it.
 
 #include "sim/scene.h"
+#include "sim/validation.h"
 
 #include <QObject>
 #include <QString>
@@ -13,7 +14,7 @@
 #include <cstdint>
 #include <future>
 #include <memory>
-#include <string>
+#include <optional>
 
 namespace carom::editor {
 class SceneDocument;
@@ -46,10 +47,10 @@ class SimulationSync : public QObject {
 
  private:
   // A scene to start from, and why it is the edited scene as it is when the running state did
-  // not fit.
+  // not fit (worded on the GUI thread, naming the objects of `scene`).
   struct Start {
     std::shared_ptr<const Scene> scene;
-    std::string unfitRunningState;
+    std::optional<ValidationError> unfitRunningState;
   };
   static Start makeStart(const Scene& edited, const editor::SceneChange& change,
                          const std::shared_ptr<const Scene>& runningFrom,

@@ -1,6 +1,7 @@
 #include "ui/editor/scene_document.h"
 
 #include "sim/validation.h"
+#include "ui/editor/validation_text.h"
 
 #include <QFileInfo>
 #include <QUndoCommand>
@@ -164,7 +165,8 @@ QString SceneDocument::editObjects(const Selection& refs, const Scene& values, c
   assign(scene_, sorted, values);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(sorted), 1);
   assign(scene_, sorted, before);
-  if (!errors.empty()) return QString::fromStdString(errors.front().text());
+  // Worded with the objects as they were: a refused name is not what names the object.
+  if (!errors.empty()) return validationText(errors.front(), scene_);
   auto* command = new SceneEditCommand(this, text, selection_, gesture);
   command->edited = sorted;
   command->editedBefore = std::move(before);
@@ -179,11 +181,13 @@ QString SceneDocument::addObjects(const Scene& objects, const QString& text) {
   emit aboutToChange();
   const Selection added = append(scene_, objects);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(added), 1);
+  // Worded while the added objects are there to be named.
+  const QString error = errors.empty() ? QString() : validationText(errors.front(), scene_);
   scene_.balls.resize(sizes[int(ObjectKind::Ball)]);
   scene_.planes.resize(sizes[int(ObjectKind::Plane)]);
   scene_.cylinders.resize(sizes[int(ObjectKind::Cylinder)]);
   scene_.boxes.resize(sizes[int(ObjectKind::Box)]);
-  if (!errors.empty()) return QString::fromStdString(errors.front().text());
+  if (!error.isEmpty()) return error;
   if (added.empty()) return {};
   auto* command = new SceneEditCommand(this, text, added);
   command->inserted = added;
@@ -208,7 +212,7 @@ QString SceneDocument::removeObjects(const Selection& refs, const QString& text)
 QString SceneDocument::editWorld(const World& world, const QString& text) {
   if (world == scene_.world) return {};
   const std::vector<ValidationError> errors = validateWorld(world, 1);
-  if (!errors.empty()) return QString::fromStdString(errors.front().text());
+  if (!errors.empty()) return validationText(errors.front(), scene_);
   auto* command = new SceneEditCommand(this, text, selection_);
   command->worldBefore = scene_.world;
   command->worldAfter = world;

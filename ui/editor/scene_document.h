@@ -43,8 +43,9 @@ class SceneDocument : public QObject {
 
   // The edits. Each is one user action, checked with the scene validation every loader uses
   // (for the objects it touches only, so that an edit costs the same in any scene). When that
-  // fails nothing changes and the first problem is returned ("balls[2].radius: must be positive
-  // (got -1)"); otherwise it becomes one command named `text` and an empty string is returned.
+  // fails nothing changes and the first problem is returned in the user's words ("Radius of
+  // Ball 2 must be above zero (got -1 m)", validation_text.h); otherwise it becomes one command
+  // named `text` and an empty string is returned.
   //
   // The objects `refs` names take the values `values` holds for them, in the order extract()
   // gives. Successive edits of the same objects with the same non-zero `gesture` (one mouse
