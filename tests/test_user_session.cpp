@@ -7,6 +7,7 @@
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
 #include "ui/accuracy_window.h"
+#include "ui/language.h"
 #include "ui/simulation_controller.h"
 #include "ui/simulation_snapshot.h"
 #include "ui/render/render_scene.h"
@@ -99,7 +100,10 @@ class TestUserSession : public carom::testing::EditorFixture {
 
  private slots:
   void init();
-  void cleanup() { window_.reset(); }
+  void cleanup() {
+    window_.reset();
+    carom::ui::installTranslation(*QCoreApplication::instance(), "en");  // as the next test expects
+  }
 
   void deletingABallKeepsEveryOtherName();
   void deletingADuplicateKeepsTheOriginals();

@@ -99,6 +99,77 @@
     </message>
 </context>
 <context>
+    <name>ValidationText</name>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="106"/>
+        <source>Penetration tolerance</source>
+        <translation>Eindringtoleranz</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="172"/>
+        <source>%1 would be %2 behind the surface of %3</source>
+        <translation>%1 läge %2 hinter der Oberfläche von %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="175"/>
+        <source>%1 would overlap %2 by %3</source>
+        <translation>%1 würde %2 um %3 überlappen</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="179"/>
+        <source>%1: at most %2 in a scene (this would make %3)</source>
+        <translation>%1: höchstens %2 in einer Szene (es wären %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="185"/>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="190"/>
+        <source>%1 must be a finite number</source>
+        <translation>%1 muss eine endliche Zahl sein</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="192"/>
+        <source>%1 must lie within ±%2 (got %3)</source>
+        <translation>%1 muss innerhalb von ±%2 liegen (erhalten: %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="196"/>
+        <source>%1 must be above zero (got %2)</source>
+        <translation>%1 muss größer als null sein (erhalten: %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="199"/>
+        <source>%1 must be at least %2 (got %3)</source>
+        <translation>%1 muss mindestens %2 sein (erhalten: %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="202"/>
+        <source>%1 must be between %2 and %3 (got %4)</source>
+        <translation>%1 muss zwischen %2 und %3 liegen (erhalten: %4)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="206"/>
+        <source>%1 must not be zero: it gives a direction</source>
+        <translation>%1 darf nicht null sein: der Vektor gibt eine Richtung an</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/validation_text.cpp" line="210"/>
+        <source>%1 must be at most %n characters long (got %2)</source>
+        <translation>
+            <numerusform>%1 darf höchstens %n Zeichen lang sein (erhalten: %2)</numerusform>
+            <numerusform>%1 darf höchstens %n Zeichen lang sein (erhalten: %2)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="215"/>
+        <source>%1 must be empty or a colour such as #ff8000 (got “%2”)</source>
+        <translation>%1 muss leer oder eine Farbe wie #ff8000 sein (erhalten: „%2“)</translation>
+    </message>
+</context>
+<context>
     <name>carom::editor::CylinderLengthField</name>
     <message>
         <location filename="../ui/editor/cylinder_length_field.cpp" line="35"/>
@@ -234,26 +305,31 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="137"/>
         <location filename="../ui/editor/properties_dock.cpp" line="375"/>
+        <location filename="../ui/editor/validation_text.cpp" line="57"/>
         <source>m</source>
         <translation>m</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/validation_text.cpp" line="65"/>
         <source>m/s</source>
         <translation>m/s</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="139"/>
+        <location filename="../ui/editor/validation_text.cpp" line="70"/>
         <source>kg</source>
         <translation>kg</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/validation_text.cpp" line="101"/>
         <source>s</source>
         <translation>s</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="141"/>
+        <location filename="../ui/editor/validation_text.cpp" line="98"/>
         <source>m/s²</source>
         <translation>m/s²</translation>
     </message>
@@ -265,6 +341,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/validation_text.cpp" line="91"/>
         <source>Name</source>
         <translation>Name</translation>
     </message>
@@ -275,6 +352,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="149"/>
+        <location filename="../ui/editor/validation_text.cpp" line="95"/>
         <source>Colour</source>
         <translation>Farbe</translation>
     </message>
@@ -285,6 +363,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <location filename="../ui/editor/validation_text.cpp" line="62"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
@@ -297,6 +376,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="158"/>
+        <location filename="../ui/editor/validation_text.cpp" line="64"/>
         <source>Velocity</source>
         <translation>Geschwindigkeit</translation>
     </message>
@@ -308,6 +388,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <location filename="../ui/editor/properties_dock.cpp" line="178"/>
+        <location filename="../ui/editor/validation_text.cpp" line="67"/>
         <source>Radius</source>
         <translation>Radius</translation>
     </message>
@@ -319,6 +400,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="162"/>
+        <location filename="../ui/editor/validation_text.cpp" line="69"/>
         <source>Mass</source>
         <translation>Masse</translation>
     </message>
@@ -329,11 +411,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="164"/>
+        <location filename="../ui/editor/validation_text.cpp" line="72"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="170"/>
+        <location filename="../ui/editor/validation_text.cpp" line="74"/>
         <source>Normal</source>
         <translation>Normale</translation>
     </message>
@@ -344,6 +428,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="174"/>
+        <location filename="../ui/editor/validation_text.cpp" line="76"/>
         <source>Axis</source>
         <translation>Achse</translation>
     </message>
@@ -354,6 +439,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="189"/>
+        <location filename="../ui/editor/validation_text.cpp" line="97"/>
         <source>Gravity</source>
         <translation>Schwerkraft</translation>
     </message>
@@ -364,6 +450,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="191"/>
+        <location filename="../ui/editor/validation_text.cpp" line="100"/>
         <source>Time step</source>
         <translation>Zeitschritt</translation>
     </message>
@@ -375,6 +462,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
         <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/validation_text.cpp" line="93"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
@@ -437,6 +525,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/validation_text.cpp" line="78"/>
         <source>Length</source>
         <translation>Länge</translation>
     </message>
@@ -489,11 +578,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="182"/>
+        <location filename="../ui/editor/validation_text.cpp" line="80"/>
         <source>Centre</source>
         <translation>Mittelpunkt</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="185"/>
+        <location filename="../ui/editor/validation_text.cpp" line="84"/>
         <source>Half extents</source>
         <translation>Halbe Kantenlängen</translation>
     </message>
@@ -504,6 +595,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="394"/>
+        <location filename="../ui/editor/validation_text.cpp" line="86"/>
         <source>Rotation axis</source>
         <translation>Drehachse</translation>
     </message>
@@ -515,11 +607,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/validation_text.cpp" line="88"/>
         <source>Rotation</source>
         <translation>Drehung</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/validation_text.cpp" line="89"/>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -537,12 +631,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="110"/>
+        <location filename="../ui/editor/scene_document.cpp" line="111"/>
         <source>untitled</source>
         <translation>unbenannt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="124"/>
+        <location filename="../ui/editor/scene_document.cpp" line="125"/>
         <source>floor</source>
         <translation>Boden</translation>
     </message>
@@ -2044,7 +2138,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="76"/>
+        <location filename="../ui/simulation_sync.cpp" line="77"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Die Änderung passt nicht zum laufenden Zustand (%1): Neustart mit der geänderten Szene.</translation>
     </message>
@@ -2541,6 +2635,7 @@
         <translation>Exakt (ereignisgesteuert), überstrichene oder diskrete Schritte; auto: die günstigste, die die Genauigkeit erreicht, per kurzem Vorlauf ermittelt</translation>
     </message>
     <message>
+        <location filename="../ui/editor/validation_text.cpp" line="103"/>
         <location filename="../ui/world_tool_bar.cpp" line="159"/>
         <location filename="../ui/world_tool_bar.cpp" line="160"/>
         <source>Accuracy</source>

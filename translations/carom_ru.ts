@@ -99,6 +99,78 @@
     </message>
 </context>
 <context>
+    <name>ValidationText</name>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="106"/>
+        <source>Penetration tolerance</source>
+        <translation>Допуск проникновения</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="172"/>
+        <source>%1 would be %2 behind the surface of %3</source>
+        <translation>%1 оказался бы на %2 за поверхностью объекта %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="175"/>
+        <source>%1 would overlap %2 by %3</source>
+        <translation>%1 и %2 перекрывались бы на %3</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="179"/>
+        <source>%1: at most %2 in a scene (this would make %3)</source>
+        <translation>%1: не больше %2 в сцене (было бы %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="185"/>
+        <source>%1 of %2</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="190"/>
+        <source>%1 must be a finite number</source>
+        <translation>%1: нужно конечное число</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="192"/>
+        <source>%1 must lie within ±%2 (got %3)</source>
+        <translation>%1: значение должно быть в пределах ±%2 (получено %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="196"/>
+        <source>%1 must be above zero (got %2)</source>
+        <translation>%1: значение должно быть больше нуля (получено %2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="199"/>
+        <source>%1 must be at least %2 (got %3)</source>
+        <translation>%1: значение должно быть не меньше %2 (получено %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="202"/>
+        <source>%1 must be between %2 and %3 (got %4)</source>
+        <translation>%1: значение должно быть от %2 до %3 (получено %4)</translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="206"/>
+        <source>%1 must not be zero: it gives a direction</source>
+        <translation>%1: вектор не может быть нулевым, он задаёт направление</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../ui/editor/validation_text.cpp" line="210"/>
+        <source>%1 must be at most %n characters long (got %2)</source>
+        <translation>
+            <numerusform>%1: не длиннее %n символа (получено %2)</numerusform>
+            <numerusform>%1: не длиннее %n символов (получено %2)</numerusform>
+            <numerusform>%1: не длиннее %n символов (получено %2)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../ui/editor/validation_text.cpp" line="215"/>
+        <source>%1 must be empty or a colour such as #ff8000 (got “%2”)</source>
+        <translation>%1: нужно оставить пустым или указать цвет вида #ff8000 (получено «%2»)</translation>
+    </message>
+</context>
+<context>
     <name>carom::editor::CylinderLengthField</name>
     <message>
         <location filename="../ui/editor/cylinder_length_field.cpp" line="35"/>
@@ -234,26 +306,31 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="137"/>
         <location filename="../ui/editor/properties_dock.cpp" line="375"/>
+        <location filename="../ui/editor/validation_text.cpp" line="57"/>
         <source>m</source>
         <translation>м</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="138"/>
+        <location filename="../ui/editor/validation_text.cpp" line="65"/>
         <source>m/s</source>
         <translation>м/с</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="139"/>
+        <location filename="../ui/editor/validation_text.cpp" line="70"/>
         <source>kg</source>
         <translation>кг</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="140"/>
+        <location filename="../ui/editor/validation_text.cpp" line="101"/>
         <source>s</source>
         <translation>с</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="141"/>
+        <location filename="../ui/editor/validation_text.cpp" line="98"/>
         <source>m/s²</source>
         <translation>м/с²</translation>
     </message>
@@ -265,6 +342,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="143"/>
+        <location filename="../ui/editor/validation_text.cpp" line="91"/>
         <source>Name</source>
         <translation>Имя</translation>
     </message>
@@ -275,6 +353,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="149"/>
+        <location filename="../ui/editor/validation_text.cpp" line="95"/>
         <source>Colour</source>
         <translation>Цвет</translation>
     </message>
@@ -285,6 +364,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="156"/>
+        <location filename="../ui/editor/validation_text.cpp" line="62"/>
         <source>Position</source>
         <translation>Положение</translation>
     </message>
@@ -297,6 +377,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="158"/>
+        <location filename="../ui/editor/validation_text.cpp" line="64"/>
         <source>Velocity</source>
         <translation>Скорость</translation>
     </message>
@@ -308,6 +389,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="160"/>
         <location filename="../ui/editor/properties_dock.cpp" line="178"/>
+        <location filename="../ui/editor/validation_text.cpp" line="67"/>
         <source>Radius</source>
         <translation>Радиус</translation>
     </message>
@@ -319,6 +401,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="162"/>
+        <location filename="../ui/editor/validation_text.cpp" line="69"/>
         <source>Mass</source>
         <translation>Масса</translation>
     </message>
@@ -329,11 +412,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="164"/>
+        <location filename="../ui/editor/validation_text.cpp" line="72"/>
         <source>Point</source>
         <translation>Точка</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="170"/>
+        <location filename="../ui/editor/validation_text.cpp" line="74"/>
         <source>Normal</source>
         <translation>Нормаль</translation>
     </message>
@@ -344,6 +429,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="174"/>
+        <location filename="../ui/editor/validation_text.cpp" line="76"/>
         <source>Axis</source>
         <translation>Ось</translation>
     </message>
@@ -354,6 +440,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="189"/>
+        <location filename="../ui/editor/validation_text.cpp" line="97"/>
         <source>Gravity</source>
         <translation>Гравитация</translation>
     </message>
@@ -364,6 +451,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="191"/>
+        <location filename="../ui/editor/validation_text.cpp" line="100"/>
         <source>Time step</source>
         <translation>Шаг по времени</translation>
     </message>
@@ -375,6 +463,7 @@
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
         <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/validation_text.cpp" line="93"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
@@ -437,6 +526,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/validation_text.cpp" line="78"/>
         <source>Length</source>
         <translation>Длина</translation>
     </message>
@@ -491,11 +581,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="182"/>
+        <location filename="../ui/editor/validation_text.cpp" line="80"/>
         <source>Centre</source>
         <translation>Центр</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="185"/>
+        <location filename="../ui/editor/validation_text.cpp" line="84"/>
         <source>Half extents</source>
         <translation>Половины размеров</translation>
     </message>
@@ -506,6 +598,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="394"/>
+        <location filename="../ui/editor/validation_text.cpp" line="86"/>
         <source>Rotation axis</source>
         <translation>Ось поворота</translation>
     </message>
@@ -517,11 +610,13 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/validation_text.cpp" line="88"/>
         <source>Rotation</source>
         <translation>Поворот</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/validation_text.cpp" line="89"/>
         <source>°</source>
         <translation>°</translation>
     </message>
@@ -539,12 +634,12 @@
 <context>
     <name>carom::editor::SceneDocument</name>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="110"/>
+        <location filename="../ui/editor/scene_document.cpp" line="111"/>
         <source>untitled</source>
         <translation>без имени</translation>
     </message>
     <message>
-        <location filename="../ui/editor/scene_document.cpp" line="124"/>
+        <location filename="../ui/editor/scene_document.cpp" line="125"/>
         <source>floor</source>
         <translation>пол</translation>
     </message>
@@ -2049,7 +2144,7 @@
 <context>
     <name>carom::ui::SimulationSync</name>
     <message>
-        <location filename="../ui/simulation_sync.cpp" line="76"/>
+        <location filename="../ui/simulation_sync.cpp" line="77"/>
         <source>The edit does not fit the running state (%1): restarted from the edited scene.</source>
         <translation>Правка не согласуется с идущей симуляцией (%1): перезапуск с изменённой сцены.</translation>
     </message>
@@ -2553,6 +2648,7 @@
         <translation>Точный (по событиям), заметающие или дискретные шаги; auto: самый дешёвый из дающих нужную точность, по короткому пробному прогону</translation>
     </message>
     <message>
+        <location filename="../ui/editor/validation_text.cpp" line="103"/>
         <location filename="../ui/world_tool_bar.cpp" line="159"/>
         <location filename="../ui/world_tool_bar.cpp" line="160"/>
         <source>Accuracy</source>
