@@ -308,10 +308,9 @@ void TestEditorDocks::viewKeysWorkWhereverTheFocusIs() {
     const QModelIndex current = tree().currentIndex();
     view().camera().zoom(-3);
     QTest::keyClick(focus, Qt::Key_Home);
-    QVERIFY2(std::abs(view().camera().distance() - framed) < 1e-9,
-             qPrintable(QString("distance %1, framed %2")
-                            .arg(view().camera().distance())
-                            .arg(framed)));
+    QVERIFY2(
+        std::abs(view().camera().distance() - framed) < 1e-9,
+        qPrintable(QString("distance %1, framed %2").arg(view().camera().distance()).arg(framed)));
     QCOMPARE(tree().currentIndex(), current);
     QTest::keyClick(focus, Qt::Key_F2);
     QCOMPARE(view().followedBall(), 0);

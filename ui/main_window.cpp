@@ -352,9 +352,8 @@ void MainWindow::buildMenus() {
   }
 
   viewMenu_ = menuBar()->addMenu(QString());
-  viewMenu_->addActions(
-      {frameAction_, followAction_, fullScreenAction_, explosionsAction_, antialiasingAction_,
-       muteAction_});
+  viewMenu_->addActions({frameAction_, followAction_, fullScreenAction_, explosionsAction_,
+                         antialiasingAction_, muteAction_});
   viewMenu_->addSeparator();
   viewMenu_->addAction(energyDock_->toggleViewAction());
   viewMenu_->addAction(storyDock_->toggleViewAction());
