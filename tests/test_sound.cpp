@@ -344,9 +344,9 @@ class TestSound : public QObject {
     QCOMPARE(nextLine(player), QByteArray("counts 2 2"));
     player.closeWriteChannel();
     QVERIFY(player.waitForFinished(5000));
-    QCOMPARE(player.exitStatus(), QProcess::NormalExit);
-    QCOMPARE(player.exitCode(), 0);
     const QByteArray errors = player.readAllStandardError();
+    QVERIFY2(player.exitStatus() == QProcess::NormalExit, errors.constData());
+    QCOMPARE(player.exitCode(), 0);
     QVERIFY2(errors.contains("carom-sound: not a frame: hits 1 nan 0 0") &&
                  errors.contains("carom-sound: not a frame: noise"),
              errors.constData());
