@@ -86,6 +86,7 @@ class TestEditorDocks : public carom::testing::EditorFixture {
   void fieldsShowSixDigitsAndEditAllOfThem();
   void fieldsLeftAsTheyWereKeepExactValues();
   void refusalGoesOnceTheFieldIsValidAgain();
+  void aRefusalLeavesTheRowsReadable();
   void refusesNamesOverTheLimit();
   void outlineRefusesNamesOverTheLimit();
   void longNamesAreElided();
@@ -1267,6 +1268,30 @@ void TestEditorDocks::fieldsLeftAsTheyWereKeepExactValues() {
   type("timeStep", "0.016666666666666666");
   QCOMPARE(document().scene().world.timeStep, 1.0 / 60.0);
   QCOMPARE(document().undoStack()->count(), commands);
+}
+
+// A refusal was the last row of the dock's scroll area: with a ball's rows at the default size it
+// lay below Mass, out of sight, and in another layout it squashed the rows into slivers. It now
+// stays under the scroll area, in sight, and the rows keep their height.
+void TestEditorDocks::aRefusalLeavesTheRowsReadable() {
+  document().setSelection({{ObjectKind::Ball, 0}});
+  type("position.y", "0.2");  // into the floor
+  QVERIFY(!properties().message().isEmpty());
+  auto* message = properties().findChild<QLabel*>("propertiesMessage");
+  QTRY_VERIFY(message->isVisible() && message->height() > 0);
+  const auto squashed = [this]() -> QString {
+    for (QLineEdit* edit : properties().findChildren<QLineEdit*>())
+      if (edit->isVisible() && edit->height() < edit->minimumSizeHint().height())
+        return QString("%1: %2 pixels high, at least %3")
+            .arg(edit->objectName())
+            .arg(edit->height())
+            .arg(edit->minimumSizeHint().height());
+    return QString();
+  };
+  QTest::qWait(100);  // the layout after the message
+  QVERIFY2(squashed().isEmpty(), qPrintable(squashed()));
+  // The message stays in sight whatever the rows' scrolling.
+  QVERIFY(message->visibleRegion().boundingRect().height() == message->height());
 }
 
 void TestEditorDocks::refusalGoesOnceTheFieldIsValidAgain() {

@@ -131,7 +131,7 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
   message_->setObjectName("propertiesMessage");
   message_->setWordWrap(true);
   message_->setStyleSheet("color: #b00020");
-  layout->addWidget(message_);
+  message_->setContentsMargins(layout->contentsMargins());
   layout->addStretch(1);
 
   const char* m = QT_TR_NOOP("m");
@@ -198,11 +198,20 @@ PropertiesDock::PropertiesDock(SceneDocument* document, QWidget* parent)
                           integratorNames(),
                           [](World& world, int index) { world.integrator = Integrator(index); });
 
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(body);
-  scroll->setWidgetResizable(true);
-  scroll->setFrameShape(QFrame::NoFrame);
-  setWidget(scroll);
+  scroll_ = new QScrollArea;
+  scroll_->setWidget(body);
+  scroll_->setWidgetResizable(true);
+  scroll_->setFrameShape(QFrame::NoFrame);
+  // The refusal goes under the scroll area, always in sight: as the rows' last one it lay below
+  // a ball's Mass at the default size, out of view, and its height for its width could squash
+  // the rows.
+  auto* frame = new QWidget;
+  auto* frameLayout = new QVBoxLayout(frame);
+  frameLayout->setContentsMargins(0, 0, 0, 0);
+  frameLayout->setSpacing(0);
+  frameLayout->addWidget(scroll_, 1);
+  frameLayout->addWidget(message_);
+  setWidget(frame);
 
   // Any change of the scene or the selection makes a refusal old news.
   connect(document_, &SceneDocument::sceneChanged, this, [this] {
@@ -270,13 +279,12 @@ QSize PropertiesDock::sizeHint() const {
     labels = std::max(labels, row.labelWidget->sizeHint().width());
     fields = std::max(fields, row.widgets.back()->sizeHint().width());
   }
-  auto* scroll = static_cast<QScrollArea*>(widget());
-  const QMargins margins = scroll->widget()->layout()->contentsMargins();
+  const QMargins margins = scroll_->widget()->layout()->contentsMargins();
   // A scroll bar may come with a long selection's rows; it takes its width from the fields.
   const int body = margins.left() + labels + form_->horizontalSpacing() + fields + margins.right() +
-                   scroll->verticalScrollBar()->sizeHint().width();
+                   scroll_->verticalScrollBar()->sizeHint().width();
   QSize size = QDockWidget::sizeHint();
-  size.setWidth(std::max(size.width(), size.width() - scroll->sizeHint().width() + body));
+  size.setWidth(std::max(size.width(), size.width() - scroll_->sizeHint().width() + body));
   return size;
 }
 

@@ -20,6 +20,7 @@ class QComboBox;
 class QFormLayout;
 class QLabel;
 class QLineEdit;
+class QScrollArea;
 class QToolButton;
 
 namespace carom::editor {
@@ -129,7 +130,8 @@ class PropertiesDock : public QDockWidget {
   SceneDocument* document_;
   QFormLayout* form_ = nullptr;
   QLabel* heading_ = nullptr;
-  QLabel* message_ = nullptr;
+  QLabel* message_ = nullptr;  // a refusal, under the rows' scroll area
+  QScrollArea* scroll_ = nullptr;
   std::vector<Row> rows_;
   std::vector<NumberEditor> numbers_;
   std::vector<TextEditor> texts_;
