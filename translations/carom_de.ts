@@ -295,16 +295,16 @@
     <name>carom::editor::PropertiesDock</name>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="75"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="441"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="564"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="601"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="624"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="449"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="609"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="632"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="137"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="375"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
         <location filename="../ui/editor/validation_text.cpp" line="57"/>
         <source>m</source>
         <translation>m</translation>
@@ -335,7 +335,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="403"/>
         <source>(any length)</source>
         <translation>(beliebige Länge)</translation>
     </message>
@@ -461,14 +461,14 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="370"/>
         <location filename="../ui/editor/validation_text.cpp" line="93"/>
         <source>Restitution</source>
         <translation>Stoßzahl</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="370"/>
         <source>Change Restitution</source>
         <translation>Stoßzahl ändern</translation>
     </message>
@@ -493,60 +493,60 @@
         <translation>Integrator ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="225"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="234"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="237"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="246"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>0 bis 1; leer: die Stoßzahl der Welt</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="238"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="247"/>
         <source>Between the caps; empty: infinite</source>
         <translation>Zwischen den Deckeln; leer: unendlich</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="243"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="252"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="244"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
         <source>Choose a colour</source>
         <translation>Farbe wählen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="641"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="254"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="649"/>
         <source>Object Colour</source>
         <translation>Objektfarbe</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="382"/>
         <location filename="../ui/editor/validation_text.cpp" line="78"/>
         <source>Length</source>
         <translation>Länge</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="382"/>
         <source>Resize Cylinder</source>
         <translation>Zylinderlänge ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="387"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="499"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="507"/>
         <source>infinite</source>
         <translation>unendlich</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="443"/>
         <source>World (nothing selected)</source>
         <translation>Welt (nichts ausgewählt)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="444"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="452"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: %n ausgewählt</numerusform>
@@ -554,7 +554,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="455"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>%n Objekt ausgewählt</numerusform>
@@ -562,17 +562,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="457"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="465"/>
         <source>mixed</source>
         <translation>verschieden</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="477"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="485"/>
         <source>default</source>
         <translation>Standard</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="491"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="499"/>
         <source>world&apos;s (%1)</source>
         <translation>der Welt (%1)</translation>
     </message>
@@ -594,36 +594,36 @@
         <translation>Quadergröße ändern</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="394"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="402"/>
         <location filename="../ui/editor/validation_text.cpp" line="86"/>
         <source>Rotation axis</source>
         <translation>Drehachse</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="394"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="402"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="412"/>
         <source>Turn Box</source>
         <translation>Quader drehen</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="412"/>
         <location filename="../ui/editor/validation_text.cpp" line="88"/>
         <source>Rotation</source>
         <translation>Drehung</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="413"/>
         <location filename="../ui/editor/validation_text.cpp" line="89"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="514"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="522"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="242"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Degrees about the axis, right-handed; empty: not turned</source>
         <translation>Grad um die Achse, rechtshändig; leer: nicht gedreht</translation>
     </message>
@@ -1647,195 +1647,195 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Run</source>
         <translation>&amp;Starten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Simulation starten oder anhalten (Leertaste)</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Step</source>
         <translation>Sc&amp;hritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Advance one time step (S)</source>
         <translation>Einen Zeitschritt weiter (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>R&amp;eset</source>
         <translation>&amp;Zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Vollbild</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>&amp;Follow Ball</source>
         <translation>Kugel &amp;folgen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Explosionen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Kantenglättung</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;Mute</source>
         <translation>Stu&amp;mmschalten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>Larger Time Step</source>
         <translation>Größerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Smaller Time Step</source>
         <translation>Kleinerer Zeitschritt</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <location filename="../ui/main_window.cpp" line="479"/>
-        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Speed</source>
         <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulation</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Select</source>
         <translation>Auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Ball</source>
         <translation>Kugel hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Plane</source>
         <translation>Ebene hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Cylinder</source>
         <translation>Zylinder hinzufügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Tools</source>
         <translation>Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Snap to &amp;Grid</source>
         <translation>Am &amp;Raster ausrichten</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="581"/>
+        <location filename="../ui/main_window.cpp" line="580"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="608"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
         <source>Apply Settings</source>
         <translation>Einstellungen übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
@@ -1845,52 +1845,52 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden (%1); die letzte bleibt erhalten. Speichern Sie die Szene sicherheitshalber an einem anderen Ort.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Export &amp;Image…</source>
         <translation>Bild &amp;exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Export &amp;Video…</source>
         <translation>&amp;Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Zeitleisten-S&amp;peicher…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>F&amp;rame Scene</source>
         <translation>Szene ins &amp;Bild holen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="504"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Tastatur und Maus</translation>
     </message>
@@ -1899,97 +1899,97 @@
         <translation type="vanished">&amp;Physik-Notizen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="506"/>
         <source>&amp;About Carom</source>
         <translation>Ü&amp;ber Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="703"/>
+        <location filename="../ui/main_window.cpp" line="702"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>&amp;Paste</source>
         <translation>E&amp;infügen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Duplizieren</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>De&amp;lete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Select &amp;All</source>
         <translation>&amp;Alles auswählen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="791"/>
+        <location filename="../ui/main_window.cpp" line="790"/>
         <source>Use Current State as Initial</source>
         <translation>Aktuellen Zustand als Anfang übernehmen</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Add Box</source>
         <translation>Quader hinzufügen</translation>
     </message>

@@ -296,16 +296,16 @@
     <name>carom::editor::PropertiesDock</name>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="75"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="441"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="564"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="601"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="624"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="449"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="572"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="609"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="632"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="137"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="375"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="383"/>
         <location filename="../ui/editor/validation_text.cpp" line="57"/>
         <source>m</source>
         <translation>м</translation>
@@ -336,7 +336,7 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="142"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="403"/>
         <source>(any length)</source>
         <translation>(любой длины)</translation>
     </message>
@@ -462,14 +462,14 @@
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="370"/>
         <location filename="../ui/editor/validation_text.cpp" line="93"/>
         <source>Restitution</source>
         <translation>Восстановление</translation>
     </message>
     <message>
         <location filename="../ui/editor/properties_dock.cpp" line="193"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="362"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="370"/>
         <source>Change Restitution</source>
         <translation>Изменить коэффициент восстановления</translation>
     </message>
@@ -494,60 +494,60 @@
         <translation>Изменить интегратор</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="225"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="234"/>
         <source>Properties</source>
         <translation>Свойства</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="237"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="246"/>
         <source>0 to 1; empty: the world&apos;s restitution</source>
         <translation>От 0 до 1; пусто — коэффициент мира</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="238"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="247"/>
         <source>Between the caps; empty: infinite</source>
         <translation>Между торцами; пусто: бесконечный</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="243"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="252"/>
         <source>…</source>
         <translation>…</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="244"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="253"/>
         <source>Choose a colour</source>
         <translation>Выбрать цвет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="245"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="641"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="254"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="649"/>
         <source>Object Colour</source>
         <translation>Цвет объекта</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="382"/>
         <location filename="../ui/editor/validation_text.cpp" line="78"/>
         <source>Length</source>
         <translation>Длина</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="374"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="382"/>
         <source>Resize Cylinder</source>
         <translation>Изменить длину цилиндра</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="387"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="499"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="395"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="507"/>
         <source>infinite</source>
         <translation>бесконечный</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="435"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="443"/>
         <source>World (nothing selected)</source>
         <translation>Мир (ничего не выбрано)</translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="444"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="452"/>
         <source>%1: %n selected</source>
         <translation>
             <numerusform>%1: выбран %n</numerusform>
@@ -556,7 +556,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../ui/editor/properties_dock.cpp" line="447"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="455"/>
         <source>%n objects selected</source>
         <translation>
             <numerusform>Выбран %n объект</numerusform>
@@ -565,17 +565,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="457"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="465"/>
         <source>mixed</source>
         <translation>разные</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="477"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="485"/>
         <source>default</source>
         <translation>по умолчанию</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="491"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="499"/>
         <source>world&apos;s (%1)</source>
         <translation>как у мира (%1)</translation>
     </message>
@@ -597,36 +597,36 @@
         <translation>Изменить размер ящика</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="394"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="402"/>
         <location filename="../ui/editor/validation_text.cpp" line="86"/>
         <source>Rotation axis</source>
         <translation>Ось поворота</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="394"/>
-        <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="402"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="412"/>
         <source>Turn Box</source>
         <translation>Повернуть ящик</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="404"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="412"/>
         <location filename="../ui/editor/validation_text.cpp" line="88"/>
         <source>Rotation</source>
         <translation>Поворот</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="405"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="413"/>
         <location filename="../ui/editor/validation_text.cpp" line="89"/>
         <source>°</source>
         <translation>°</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="514"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="522"/>
         <source>none</source>
         <translation>нет</translation>
     </message>
     <message>
-        <location filename="../ui/editor/properties_dock.cpp" line="242"/>
+        <location filename="../ui/editor/properties_dock.cpp" line="251"/>
         <source>Degrees about the axis, right-handed; empty: not turned</source>
         <translation>Градусы вокруг оси, по правилу правой руки; пусто: без поворота</translation>
     </message>
@@ -1653,195 +1653,195 @@
 <context>
     <name>carom::ui::MainWindow</name>
     <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
+        <location filename="../ui/main_window.cpp" line="499"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Run</source>
         <translation>&amp;Запуск</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="462"/>
+        <location filename="../ui/main_window.cpp" line="461"/>
         <source>Run or pause the simulation (Space)</source>
         <translation>Запустить или приостановить симуляцию (Пробел)</translation>
     </message>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
-        <location filename="../ui/main_window.cpp" line="461"/>
+        <location filename="../ui/main_window.cpp" line="460"/>
         <source>&amp;Pause</source>
         <translation>&amp;Пауза</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="463"/>
+        <location filename="../ui/main_window.cpp" line="462"/>
         <source>&amp;Step</source>
         <translation>&amp;Шаг</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="464"/>
+        <location filename="../ui/main_window.cpp" line="463"/>
         <source>Advance one time step (S)</source>
         <translation>Выполнить один шаг по времени (S)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="465"/>
+        <location filename="../ui/main_window.cpp" line="464"/>
         <source>R&amp;eset</source>
         <translation>&amp;Сброс</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
+        <location filename="../ui/main_window.cpp" line="465"/>
         <source>Back to the scene&apos;s initial state (R)</source>
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
+        <location filename="../ui/main_window.cpp" line="495"/>
         <source>&amp;Full Screen</source>
         <translation>&amp;Полноэкранный режим</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
+        <location filename="../ui/main_window.cpp" line="494"/>
         <source>&amp;Follow Ball</source>
         <translation>&amp;Следить за шаром</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
+        <location filename="../ui/main_window.cpp" line="496"/>
         <source>&amp;Explosions</source>
         <translation>&amp;Взрывы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
+        <location filename="../ui/main_window.cpp" line="497"/>
         <source>&amp;Antialiasing</source>
         <translation>&amp;Сглаживание</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="499"/>
+        <location filename="../ui/main_window.cpp" line="498"/>
         <source>&amp;Mute</source>
         <translation>Без &amp;звука</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
+        <location filename="../ui/main_window.cpp" line="466"/>
         <source>Larger Time Step</source>
         <translation>Увеличить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
+        <location filename="../ui/main_window.cpp" line="467"/>
         <source>Smaller Time Step</source>
         <translation>Уменьшить шаг по времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="478"/>
+        <location filename="../ui/main_window.cpp" line="477"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
     </message>
     <message>
+        <location filename="../ui/main_window.cpp" line="478"/>
         <location filename="../ui/main_window.cpp" line="479"/>
-        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Speed</source>
         <translation>Скорость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="481"/>
+        <location filename="../ui/main_window.cpp" line="480"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
+        <location filename="../ui/main_window.cpp" line="424"/>
         <source>&amp;File</source>
         <translation>&amp;Файл</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
+        <location filename="../ui/main_window.cpp" line="427"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Недавние файлы</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="435"/>
+        <location filename="../ui/main_window.cpp" line="434"/>
         <source>&amp;Edit</source>
         <translation>&amp;Правка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="460"/>
+        <location filename="../ui/main_window.cpp" line="459"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Симуляция</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
+        <location filename="../ui/main_window.cpp" line="468"/>
         <source>Speed vs &amp;Accuracy…</source>
         <translation>Скорость и &amp;точность…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Select</source>
         <translation>Выбор</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Ball</source>
         <translation>Добавить шар</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Plane</source>
         <translation>Добавить плоскость</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
+        <location filename="../ui/main_window.cpp" line="448"/>
         <source>Add Cylinder</source>
         <translation>Добавить цилиндр</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
+        <location filename="../ui/main_window.cpp" line="447"/>
         <source>Tools</source>
         <translation>Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="453"/>
+        <location filename="../ui/main_window.cpp" line="452"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
+        <location filename="../ui/main_window.cpp" line="455"/>
         <source>Snap to &amp;Grid</source>
         <translation>Привязка к &amp;сетке</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="457"/>
+        <location filename="../ui/main_window.cpp" line="456"/>
         <source>Moves land on multiples of %1 m</source>
         <translation>Перемещения кратны %1 м</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
+        <location filename="../ui/main_window.cpp" line="505"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Руководство пользователя</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="581"/>
+        <location filename="../ui/main_window.cpp" line="580"/>
         <source>%1[*] — Carom</source>
         <translation>%1[*] — Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="608"/>
+        <location filename="../ui/main_window.cpp" line="607"/>
         <source>Apply Settings</source>
         <translation>Применить настройки</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
+        <location filename="../ui/main_window.cpp" line="425"/>
         <source>&amp;New</source>
         <translation>&amp;Создать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
+        <location filename="../ui/main_window.cpp" line="426"/>
         <source>&amp;Open…</source>
         <translation>&amp;Открыть…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
+        <location filename="../ui/main_window.cpp" line="428"/>
         <source>&amp;Save</source>
         <translation>Со&amp;хранить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
+        <location filename="../ui/main_window.cpp" line="413"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Отменить: %1</translation>
     </message>
@@ -1851,52 +1851,52 @@
         <translation>Не удалось записать резервную копию (%1); сохранена предыдущая. Для надёжности сохраните сцену в другом месте.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="416"/>
+        <location filename="../ui/main_window.cpp" line="415"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Повторить: %1</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
+        <location filename="../ui/main_window.cpp" line="429"/>
         <source>Save &amp;As…</source>
         <translation>Сохранить &amp;как…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
+        <location filename="../ui/main_window.cpp" line="430"/>
         <source>Export &amp;Image…</source>
         <translation>Экспорт &amp;изображения…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
+        <location filename="../ui/main_window.cpp" line="431"/>
         <source>Export &amp;Video…</source>
         <translation>Экспорт ви&amp;део…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
+        <location filename="../ui/main_window.cpp" line="446"/>
         <source>&amp;Tools</source>
         <translation>&amp;Инструменты</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
+        <location filename="../ui/main_window.cpp" line="469"/>
         <source>&amp;Throw Speed Limit…</source>
         <translation>Пр&amp;едел скорости броска…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
+        <location filename="../ui/main_window.cpp" line="470"/>
         <source>Timeline &amp;Memory…</source>
         <translation>Па&amp;мять временной шкалы…</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
+        <location filename="../ui/main_window.cpp" line="493"/>
         <source>F&amp;rame Scene</source>
-        <translation>&amp;Показать всю сцену</translation>
+        <translation>Показать всю с&amp;цену</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
+        <location filename="../ui/main_window.cpp" line="503"/>
         <source>&amp;Help</source>
         <translation>&amp;Справка</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
+        <location filename="../ui/main_window.cpp" line="504"/>
         <source>&amp;Keyboard and Mouse</source>
         <translation>&amp;Клавиатура и мышь</translation>
     </message>
@@ -1905,97 +1905,97 @@
         <translation type="vanished">&amp;Заметки по физике</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="507"/>
+        <location filename="../ui/main_window.cpp" line="506"/>
         <source>&amp;About Carom</source>
         <translation>&amp;О программе Carom</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="703"/>
+        <location filename="../ui/main_window.cpp" line="702"/>
         <source>(none)</source>
         <translation>(нет)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
+        <location filename="../ui/main_window.cpp" line="412"/>
         <source>&amp;Undo</source>
         <translation>&amp;Отменить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
+        <location filename="../ui/main_window.cpp" line="414"/>
         <source>&amp;Redo</source>
         <translation>&amp;Повторить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
+        <location filename="../ui/main_window.cpp" line="436"/>
         <source>&amp;Copy</source>
         <translation>&amp;Копировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
+        <location filename="../ui/main_window.cpp" line="437"/>
         <source>&amp;Paste</source>
         <translation>В&amp;ставить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
+        <location filename="../ui/main_window.cpp" line="438"/>
         <source>&amp;Duplicate</source>
         <translation>&amp;Дублировать</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
+        <location filename="../ui/main_window.cpp" line="439"/>
         <source>De&amp;lete</source>
         <translation>&amp;Удалить</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
+        <location filename="../ui/main_window.cpp" line="440"/>
         <source>Select &amp;All</source>
         <translation>Выделить &amp;всё</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
+        <location filename="../ui/main_window.cpp" line="471"/>
         <source>&amp;Use Current State as Initial</source>
         <translation>&amp;Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="473"/>
+        <location filename="../ui/main_window.cpp" line="472"/>
         <source>Edits Apply to the &amp;Running State</source>
         <translation>Правки применяются к &amp;идущей симуляции</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="475"/>
+        <location filename="../ui/main_window.cpp" line="474"/>
         <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
         <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="442"/>
+        <location filename="../ui/main_window.cpp" line="441"/>
         <source>History</source>
         <translation>История</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="791"/>
+        <location filename="../ui/main_window.cpp" line="790"/>
         <source>Use Current State as Initial</source>
         <translation>Сделать текущее состояние начальным</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="433"/>
+        <location filename="../ui/main_window.cpp" line="432"/>
         <source>&amp;Quit</source>
         <translation>&amp;Выход</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="488"/>
+        <location filename="../ui/main_window.cpp" line="487"/>
         <source>&amp;Examples</source>
         <translation>&amp;Примеры</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
+        <location filename="../ui/main_window.cpp" line="492"/>
         <source>&amp;View</source>
         <translation>&amp;Вид</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="501"/>
+        <location filename="../ui/main_window.cpp" line="500"/>
         <source>&amp;Language</source>
         <translation>&amp;Язык</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="450"/>
+        <location filename="../ui/main_window.cpp" line="449"/>
         <source>Add Box</source>
         <translation>Добавить ящик</translation>
     </message>
