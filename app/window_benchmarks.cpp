@@ -1,13 +1,13 @@
 #include "app/window_benchmarks.h"
 
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/sound_thread.h"
 
 #include <QElapsedTimer>

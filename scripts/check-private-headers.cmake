@@ -1,25 +1,42 @@
-# Fails when a header that is private to its target is included from outside its own folder
-# (tests aside, which may test internals), or from one of its folder's public headers, through
-# which it would leak. Run by CTest as `private_headers`:
-#   cmake -DROOT=<source dir> -DHEADERS=<private headers, relative to ROOT> -P this file
+# Fails when a header that is private to its target is included from outside that target (tests
+# aside, which may test internals), or from one of the target's public headers, through which it
+# would leak. A target is the folder of its CMakeLists.txt with the subfolders that have none
+# (sim/ holds sim/exact/, not sim/io/). Run by CTest as `private_headers`:
+#   cmake -DROOT=<source dir> -DHEADERS=<target folder>><header>;... -P this file
 cmake_minimum_required(VERSION 3.25)
 if(NOT ROOT OR NOT HEADERS)
-  message(FATAL_ERROR "usage: cmake -DROOT=... -DHEADERS=a.h;b.h -P check-private-headers.cmake")
+  message(FATAL_ERROR "usage: cmake -DROOT=... -DHEADERS=sim>sim/a.h;... -P check-private-headers.cmake")
 endif()
+# The target folder of a file: its nearest folder with a CMakeLists.txt.
+function(target_folder_of path result)
+  get_filename_component(folder ${path} DIRECTORY)
+  while(NOT EXISTS ${ROOT}/${folder}/CMakeLists.txt AND folder MATCHES "/")
+    get_filename_component(folder ${folder} DIRECTORY)
+  endwhile()
+  set(${result} ${folder} PARENT_SCOPE)
+endfunction()
+set(private_paths "")
+foreach(entry IN LISTS HEADERS)
+  string(REPLACE ">" ";" parts ${entry})
+  list(GET parts 1 header)
+  list(APPEND private_paths ${header})
+endforeach()
 file(GLOB_RECURSE sources RELATIVE ${ROOT} ${ROOT}/app/*.h ${ROOT}/app/*.cpp ${ROOT}/sim/*.h
      ${ROOT}/sim/*.cpp ${ROOT}/ui/*.h ${ROOT}/ui/*.cpp)
 set(problems "")
 foreach(source IN LISTS sources)
-  get_filename_component(source_folder ${source} DIRECTORY)
+  target_folder_of(${source} source_target)
   file(STRINGS ${ROOT}/${source} includes REGEX "^#include \"")
-  foreach(header IN LISTS HEADERS)
+  foreach(entry IN LISTS HEADERS)
+    string(REPLACE ">" ";" parts ${entry})
+    list(GET parts 0 owner)
+    list(GET parts 1 header)
     if(NOT "#include \"${header}\"" IN_LIST includes)
       continue()
     endif()
-    get_filename_component(header_folder ${header} DIRECTORY)
-    if(NOT source_folder STREQUAL header_folder)
-      string(APPEND problems "  ${source} includes ${header}, private to ${header_folder}/\n")
-    elseif(source MATCHES "\\.h$" AND NOT source IN_LIST HEADERS)
+    if(NOT source_target STREQUAL owner)
+      string(APPEND problems "  ${source} includes ${header}, private to ${owner}/\n")
+    elseif(source MATCHES "\\.h$" AND NOT source IN_LIST private_paths)
       string(APPEND problems "  public ${source} includes private ${header}\n")
     endif()
   endforeach()
@@ -30,4 +47,4 @@ if(problems)
                       "include a public one.")
 endif()
 list(LENGTH HEADERS count)
-message(STATUS "${count} private headers stay in their folders")
+message(STATUS "${count} private headers stay in their targets")

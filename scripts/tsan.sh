@@ -14,7 +14,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tests=(test_handover test_simulation_sync test_main_window test_editor test_sound)
-# The video export's hand-over (the worker replaying the run into ui/video_frames.h's queue,
+# The video export's hand-over (the worker replaying the run into ui/run/video_frames.h's queue,
 # the GUI draining it, Cancel, and abandoning on Reset) is checked by test_video_export's cases
 # that start no child process. The MP4 cases start ffmpeg while the physics and sound threads
 # run, and TSan then reports Qt-mediated hand-overs (queued-call slot objects, the sound board)

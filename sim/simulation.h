@@ -2,10 +2,10 @@
 // The simulation of a scene under one of the three methods. This is the physics' public face:
 // the CLI, the benchmarks and the GUI worker drive it.
 
-#include "sim/bodies.h"
-#include "sim/grab.h"
-#include "sim/run_stats.h"
-#include "sim/scene.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/grab.h"
+#include "sim/dynamics/run_stats.h"
+#include "sim/model/scene.h"
 
 #include <cstddef>
 #include <memory>

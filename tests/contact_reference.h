@@ -3,7 +3,7 @@
 // the ball on its path finely and bisects, sharing nothing with the solver but the gap function
 // the test gives it.
 
-#include "sim/contact_time.h"
+#include "sim/geometry/contact_time.h"
 
 #include <QString>
 #include <QTest>

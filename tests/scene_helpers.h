@@ -1,7 +1,7 @@
 #pragma once
 // Small builders for the scenes of the physics tests.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QTest>
 

@@ -2,8 +2,8 @@
 // results whatever the number of threads, a prompt cancel, and a runner destroyed mid-study.
 // Times are not checked: they depend on the machine and on what else it runs.
 
-#include "sim/scene_builders.h"
-#include "ui/accuracy_study_runner.h"
+#include "sim/model/scene_builders.h"
+#include "ui/run/accuracy_study_runner.h"
 
 #include <QSignalSpy>
 #include <QThread>

@@ -2,9 +2,9 @@
 // the agreement horizon on a scene with no chaos (one ball, which the finest setting follows to
 // the end) and on one with plenty (a gas, which every approximate method leaves).
 
-#include "sim/accuracy_study.h"
-#include "sim/measures.h"
-#include "sim/scene_builders.h"
+#include "sim/measure/accuracy_study.h"
+#include "sim/measure/measures.h"
+#include "sim/model/scene_builders.h"
 
 #include <QtTest>
 

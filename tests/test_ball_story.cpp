@@ -1,8 +1,8 @@
 // The Ball story's record of watched balls: what it keeps, how it forgets, and the state it
 // reports at a moment, with made-up times (no window, no simulation).
 
-#include "sim/measures.h"
-#include "ui/ball_story.h"
+#include "sim/measure/measures.h"
+#include "ui/docks/ball_story.h"
 
 #include <QtTest>
 

@@ -3,9 +3,9 @@
 // holds a settling pile, and no ball ever inside a box.
 
 #include "scene_helpers.h"
-#include "sim/measures.h"
+#include "sim/measure/measures.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/validation.h"
 
 #include <QTest>
 

@@ -3,7 +3,7 @@
 // radius ratios up to 1e6, balls far outside a class's grid), and one size class keeps the
 // order in which pairs were always visited.
 
-#include "sim/broad_phase.h"
+#include "sim/stepped/broad_phase.h"
 
 #include <QtTest>
 

@@ -3,10 +3,10 @@
 // of balls, boxes and capped cylinders, and no ball ever inside a solid, under every method.
 
 #include "scene_helpers.h"
-#include "sim/measures.h"
-#include "sim/scene_builders.h"
+#include "sim/measure/measures.h"
+#include "sim/model/scene_builders.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/validation.h"
 
 #include <QTest>
 

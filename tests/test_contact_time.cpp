@@ -1,6 +1,6 @@
 // Contact times of every shape pair against closed-form answers.
 
-#include "sim/contact_time.h"
+#include "sim/geometry/contact_time.h"
 
 #include <QTest>
 

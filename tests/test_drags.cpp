@@ -6,8 +6,8 @@
 
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QLineEdit>
 #include <QTest>

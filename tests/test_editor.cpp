@@ -4,7 +4,7 @@
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
-#include "ui/simulation_controller.h"
+#include "ui/run/simulation_controller.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,17 +4,17 @@
 // cylinder's length), and the handles that turn a plane's normal and a cylinder's axis, move a
 // box's faces and a capped cylinder's ends.
 
+#include "sim/geometry/shapes.h"
 #include "sim/io/scene_file.h"
-#include "sim/shapes.h"
 #include "tests/editor_fixture.h"
 #include "tests/scene_helpers.h"
-#include "ui/ball_story_dock.h"
+#include "ui/docks/ball_story_dock.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QChartView>
 #include <QClipboard>

@@ -1,9 +1,9 @@
 // The `exact` method against analytic answers: bounces, projectiles, collisions of any masses,
 // Newton's cradle, cylinders.
 
+#include "sim/core/tolerances.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

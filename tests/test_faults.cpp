@@ -10,7 +10,7 @@
 #include "tests/small_filesystem.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
-#include "ui/simulation_controller.h"
+#include "ui/run/simulation_controller.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

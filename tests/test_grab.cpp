@@ -3,7 +3,7 @@
 // walls, stops where it would crush a ball, and is thrown when released.
 
 #include "scene_helpers.h"
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 
 #include <QTest>

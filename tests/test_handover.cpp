@@ -3,8 +3,8 @@
 // whole and in order) and the queue of calls the other way (in order, with their data, on the
 // queue's thread). Run under ThreadSanitizer by scripts/tsan.sh, where a race would show.
 
-#include "ui/call_queue.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/call_queue.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QThread>
 #include <QtTest>

@@ -6,17 +6,17 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
-#include "ui/ball_story_dock.h"
+#include "ui/dialogs/help_dialogs.h"
+#include "ui/dialogs/image_export.h"
+#include "ui/dialogs/video_export.h"
+#include "ui/docks/ball_story_dock.h"
+#include "ui/docks/energy_plot.h"
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
-#include "ui/energy_plot.h"
-#include "ui/help_dialogs.h"
-#include "ui/image_export.h"
 #include "ui/language.h"
 #include "ui/status_readout.h"
-#include "ui/video_export.h"
 #include "ui/watch_menu.h"
 
 #include <QChart>

@@ -1,16 +1,16 @@
 // The sandbox window as a user meets it, under a real X server (Xvfb) with Mesa's OpenGL.
 
 #include "sim/io/scene_file.h"
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
-#include "ui/accuracy_window.h"
+#include "ui/dialogs/accuracy_window.h"
+#include "ui/docks/energy_plot.h"
 #include "ui/editor/scene_document.h"
-#include "ui/energy_plot.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/render/render_scene.h"
 #include "ui/render/scene_view.h"
-#include "ui/simulation_controller.h"
+#include "ui/run/simulation_controller.h"
 #include "ui/sound_thread.h"
 
 #include <QAbstractAxis>

@@ -5,8 +5,8 @@
 //
 // With CAROM_SCREENSHOT_DIR set, pictures of the window showing the refusals are saved there.
 
-#include "sim/tolerances.h"
-#include "sim/validation.h"
+#include "sim/core/tolerances.h"
+#include "sim/model/validation.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/outline_dock.h"

@@ -4,8 +4,8 @@
 // each scene is made so that the winner is cheaper by a wide margin.
 
 #include "sim/io/scene_file.h"
-#include "sim/method_choice.h"
-#include "sim/scene_builders.h"
+#include "sim/measure/method_choice.h"
+#include "sim/model/scene_builders.h"
 
 #include <QtTest>
 

@@ -1,10 +1,10 @@
 // Invariants on random scenes, the extremes (time steps, speeds, radius ratios) and determinism,
 // for every method.
 
-#include "sim/measures.h"
-#include "sim/scene_builders.h"
+#include "sim/measure/measures.h"
+#include "sim/model/scene_builders.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

@@ -4,7 +4,7 @@
 
 #include <QTest>
 
-#include "sim/polynomial.h"
+#include "sim/geometry/polynomial.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

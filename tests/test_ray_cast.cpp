@@ -1,7 +1,7 @@
 // Ray casting against balls, planes, cylinders and boxes: closed forms, the rules of what counts as
 // a hit, numerically hard rays, and random rays against brute-force marching.
 
-#include "sim/ray_cast.h"
+#include "sim/geometry/ray_cast.h"
 
 #include <QTest>
 

@@ -2,7 +2,7 @@
 // live settings included; the memory budget holds; truncating lets the run go on from there.
 
 #include "scene_helpers.h"
-#include "sim/run_recording.h"
+#include "sim/measure/run_recording.h"
 #include "sim/simulation.h"
 
 #include <QTest>

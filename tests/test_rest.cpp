@@ -1,14 +1,14 @@
 // The rest policy: inelastic bouncing ends in finite computing time, piles settle, resting balls
 // wake when hit, and sliding stays frictionless.
 
-#include "sim/contact_forces.h"
-#include "sim/measures.h"
-#include "sim/response.h"
-#include "sim/rest_policy.h"
-#include "sim/scene_builders.h"
+#include "sim/core/tolerances.h"
+#include "sim/dynamics/contact_forces.h"
+#include "sim/dynamics/response.h"
+#include "sim/dynamics/rest_policy.h"
+#include "sim/measure/measures.h"
+#include "sim/model/scene_builders.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

@@ -1,14 +1,14 @@
 // Scene files: every refusal with its exact message, defaults, unknown keys, exact round trips
 // of numbers and of the bundled scenes, and saving that never damages an existing file.
 
+#include "sim/core/tolerances.h"
 #include "sim/io/atomic_file.h"
 #include "sim/io/file_names.h"
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_stream_reader.h"
-#include "sim/measures.h"
+#include "sim/measure/measures.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
 #include "small_filesystem.h"
 
 #include <QDir>

@@ -5,8 +5,8 @@
 
 #include "scene_edits.h"
 #include "ui/editor/scene_document.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/simulation_sync.h"
 
 #include <QSignalSpy>

@@ -3,9 +3,9 @@
 // ratios up to 1e3, under `exact` and `swept`, and energy is kept. Scenes at the ends of what
 // validation accepts run under every method.
 
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

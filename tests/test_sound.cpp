@@ -1,7 +1,7 @@
 // The collision sounds (SoundBoard, and the window's SoundThread with its player process)
 // against a real (null-sink) PulseAudio server: run under scripts/with-pulseaudio.sh.
 
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/sound/sound_board.h"
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"

@@ -5,9 +5,9 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
-#include "ui/ball_story_dock.h"
-#include "ui/image_export.h"
-#include "ui/simulation_controller.h"
+#include "ui/dialogs/image_export.h"
+#include "ui/docks/ball_story_dock.h"
+#include "ui/run/simulation_controller.h"
 
 #include <QDir>
 #include <QFileDialog>

@@ -6,8 +6,8 @@
 #include "sim/simulation.h"
 #include "tests/dialog_answerer.h"
 #include "tests/editor_fixture.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/timeline_bar.h"
 
 #include <QInputDialog>

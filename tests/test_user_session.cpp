@@ -3,14 +3,14 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
-#include "ui/accuracy_window.h"
+#include "ui/dialogs/accuracy_window.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
 #include "ui/language.h"
 #include "ui/render/render_scene.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QAction>
 #include <QFileDialog>

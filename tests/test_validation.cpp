@@ -1,9 +1,9 @@
 // validateScene: every rule with its exact message, file order, limits and the speed of the
 // ball-ball overlap test.
 
-#include "sim/scene.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
+#include "sim/core/tolerances.h"
+#include "sim/model/scene.h"
+#include "sim/model/validation.h"
 
 #include <QObject>
 #include <QTest>

@@ -3,10 +3,10 @@
 
 #include "sim/simulation.h"
 #include "tests/editor_fixture.h"
+#include "ui/dialogs/video_export.h"
 #include "ui/language.h"
-#include "ui/simulation_controller.h"
-#include "ui/video_export.h"
-#include "ui/video_frames.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/video_frames.h"
 
 #include <QComboBox>
 #include <QDir>

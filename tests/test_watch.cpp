@@ -3,9 +3,9 @@
 // silent; the energy check stands aside when a restitution above 1 lets energy rise.
 
 #include "sim/io/scene_file.h"
-#include "sim/run_watch.h"
+#include "sim/measure/run_watch.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QDir>

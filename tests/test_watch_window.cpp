@@ -3,11 +3,11 @@
 // checks and tolerances are set from the menu and remembered.
 
 #include "tests/editor_fixture.h"
+#include "ui/dialogs/watch_tolerance_dialog.h"
 #include "ui/number_box.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/watch_menu.h"
-#include "ui/watch_tolerance_dialog.h"
 
 #include <QMessageBox>
 #include <QPushButton>

@@ -1,9 +1,9 @@
 #include "ui/auto_method.h"
 
-#include "ui/call_queue.h"
 #include "ui/editor/number_text.h"
 #include "ui/editor/scene_document.h"
-#include "ui/thread_handover.h"
+#include "ui/run/call_queue.h"
+#include "ui/run/thread_handover.h"
 
 #include <functional>
 

@@ -5,7 +5,7 @@
 // becomes the world's method, integrator and step (one undo step that names it), and what was
 // chosen and why is reported; when none meets it, the settings stay as they are.
 
-#include "sim/method_choice.h"
+#include "sim/measure/method_choice.h"
 
 #include <QObject>
 #include <QString>

@@ -4,7 +4,7 @@
 // all. It needs no view: the window tells it which way is "across" the screen, where inserted
 // objects move until they fit.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QObject>
 #include <QString>

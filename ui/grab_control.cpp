@@ -2,8 +2,8 @@
 
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/number_text.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QInputDialog>
 #include <QSettings>

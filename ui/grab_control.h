@@ -3,7 +3,7 @@
 // simulation, keeps the throw limit (a setting), and says when a grab stopped or a throw was
 // cut to the limit.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QObject>
 #include <QString>

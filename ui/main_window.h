@@ -2,8 +2,8 @@
 // The sandbox window: the 3D view in the centre, the simulation controls on a toolbar, the
 // numbers in the status bar. It observes the simulation through snapshots and never waits on it.
 
-#include "sim/run_watch.h"
-#include "sim/scene.h"
+#include "sim/measure/run_watch.h"
+#include "sim/model/scene.h"
 #include "ui/editor/object_ref.h"
 
 #include <QMainWindow>

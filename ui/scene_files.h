@@ -4,7 +4,7 @@
 // scene a crash left unsaved. Dialogs open over `dialogParent`; the window hears of results
 // through signals.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QObject>
 #include <QString>

@@ -1,12 +1,12 @@
 #include "ui/simulation_sync.h"
 
-#include "sim/validation.h"
-#include "ui/call_queue.h"
+#include "sim/model/validation.h"
 #include "ui/editor/running_state.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/validation_text.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/call_queue.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <chrono>
 #include <utility>

@@ -4,8 +4,8 @@
 // from the edited scene or, when edits apply to the running state, with every ball the edit
 // left alone where the run has it.
 
-#include "sim/scene.h"
-#include "sim/validation.h"
+#include "sim/model/scene.h"
+#include "sim/model/validation.h"
 
 #include <QObject>
 #include <QString>

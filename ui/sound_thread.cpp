@@ -1,8 +1,8 @@
 #include "ui/sound_thread.h"
 
-#include "ui/call_queue.h"
+#include "ui/run/call_queue.h"
+#include "ui/run/thread_handover.h"
 #include "ui/sound/sound_player.h"
-#include "ui/thread_handover.h"
 
 #include <QCoreApplication>
 #include <QDir>

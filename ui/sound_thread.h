@@ -9,7 +9,7 @@
 // frame on the GUI thread must not hold up; the GUI posts it each frame's hits (CallQueue) and
 // reads the counters, which are atomic.
 
-#include "sim/run_stats.h"
+#include "sim/dynamics/run_stats.h"
 
 #include <QObject>
 #include <QThread>

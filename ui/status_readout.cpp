@@ -1,7 +1,7 @@
 #include "ui/status_readout.h"
 
 #include "ui/editor/number_text.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/sound_thread.h"
 
 #include <QEvent>

@@ -1,8 +1,8 @@
 #include "ui/timeline_bar.h"
 
-#include "sim/run_recording.h"
+#include "sim/measure/run_recording.h"
 #include "ui/editor/number_text.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QEvent>
 #include <QHBoxLayout>

@@ -3,8 +3,8 @@
 #include "ui/editor/number_text.h"
 #include "ui/editor/scene_document.h"
 #include "ui/render/scene_view.h"
-#include "ui/simulation_controller.h"
-#include "ui/simulation_snapshot.h"
+#include "ui/run/simulation_controller.h"
+#include "ui/run/simulation_snapshot.h"
 #include "ui/watch_text.h"
 
 #include <QMainWindow>

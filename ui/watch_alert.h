@@ -3,7 +3,7 @@
 // says it in the status bar and a dialog that offers the moment before, selects the ball and
 // frames it in the view.
 
-#include "sim/run_watch.h"
+#include "sim/measure/run_watch.h"
 
 #include <QObject>
 #include <QPointer>

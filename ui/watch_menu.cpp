@@ -1,6 +1,6 @@
 #include "ui/watch_menu.h"
 
-#include "ui/watch_tolerance_dialog.h"
+#include "ui/dialogs/watch_tolerance_dialog.h"
 
 #include <QAction>
 #include <QEvent>

@@ -2,7 +2,7 @@
 // Simulation > Watch: each check of the run watch on or off, and its tolerances, remembered
 // with QSettings across sessions.
 
-#include "sim/run_watch.h"
+#include "sim/measure/run_watch.h"
 
 #include <QMenu>
 

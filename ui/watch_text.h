@@ -1,8 +1,8 @@
 #pragma once
 // The run watch's events in the program's language, for the status bar and the dialog.
 
-#include "sim/run_watch.h"
-#include "sim/scene.h"
+#include "sim/measure/run_watch.h"
+#include "sim/model/scene.h"
 
 #include <QString>
 

@@ -1,6 +1,6 @@
 #include "ui/world_tool_bar.h"
 
-#include "sim/tolerances.h"
+#include "sim/core/tolerances.h"
 #include "ui/auto_method.h"
 #include "ui/editor/scene_document.h"
 #include "ui/number_box.h"

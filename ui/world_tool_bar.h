@@ -2,8 +2,8 @@
 // The world's settings on a toolbar: gravity, the time step, the method (auto with its
 // accuracy) and the integrator. It mirrors the document's world; each change is one edit of it.
 
-#include "sim/method_choice.h"
-#include "sim/scene.h"
+#include "sim/measure/method_choice.h"
+#include "sim/model/scene.h"
 
 #include <QString>
 #include <QToolBar>

@@ -1,8 +1,8 @@
 #pragma once
 // The command line of carom-cli, parsed into plain values; nothing runs here.
 
-#include "sim/method_choice.h"
-#include "sim/run_watch.h"
+#include "sim/measure/method_choice.h"
+#include "sim/measure/run_watch.h"
 
 #include <QString>
 #include <QStringList>

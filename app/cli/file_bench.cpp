@@ -2,7 +2,7 @@
 
 #include "app/cli/cli.h"
 #include "sim/io/scene_file.h"
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>

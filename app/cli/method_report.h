@@ -1,7 +1,7 @@
 #pragma once
 // What `--method auto` tried and chose, as text or JSON, for the run's report.
 
-#include "sim/method_choice.h"
+#include "sim/measure/method_choice.h"
 
 #include <QJsonObject>
 #include <QTextStream>

@@ -4,8 +4,8 @@
 
 #include "app/cli/cli.h"
 #include "sim/io/atomic_file.h"
-#include "sim/measures.h"
-#include "sim/run_watch.h"
+#include "sim/measure/measures.h"
+#include "sim/measure/run_watch.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>

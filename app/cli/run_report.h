@@ -2,8 +2,8 @@
 // `carom-cli run`: runs a scene and reports what happened, as text or as one JSON object.
 
 #include "app/cli/cli_arguments.h"
-#include "sim/method_choice.h"
-#include "sim/scene.h"
+#include "sim/measure/method_choice.h"
+#include "sim/model/scene.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>

@@ -1,7 +1,7 @@
 #include "app/cli/size_bench.h"
 
 #include "app/cli/cli.h"
-#include "sim/scene_builders.h"
+#include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>

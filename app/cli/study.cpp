@@ -1,8 +1,8 @@
 #include "app/cli/study.h"
 
 #include "app/cli/cli.h"
-#include "sim/accuracy_study.h"
-#include "ui/accuracy_study_runner.h"
+#include "sim/measure/accuracy_study.h"
+#include "ui/run/accuracy_study_runner.h"
 
 #include <QEventLoop>
 

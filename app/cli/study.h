@@ -3,7 +3,7 @@
 // and how much running them side by side gained.
 
 #include "app/cli/cli_arguments.h"
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QTextStream>
 

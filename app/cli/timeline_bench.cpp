@@ -2,8 +2,8 @@
 
 #include "app/cli/cli.h"
 #include "sim/io/scene_file.h"
-#include "sim/run_recording.h"
-#include "sim/scene_builders.h"
+#include "sim/measure/run_recording.h"
+#include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 
 #include <QElapsedTimer>

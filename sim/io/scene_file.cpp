@@ -1,12 +1,12 @@
 #include "sim/io/scene_file.h"
 
+#include "sim/core/tolerances.h"
 #include "sim/io/atomic_file.h"
 #include "sim/io/file_names.h"
 #include "sim/io/json_text.h"
 #include "sim/io/scene_format.h"
 #include "sim/io/scene_stream_reader.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
+#include "sim/model/validation.h"
 
 #include <QFile>
 #include <QJsonArray>

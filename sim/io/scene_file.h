@@ -1,7 +1,7 @@
 #pragma once
 // Scene files: the JSON format of docs/scene-format.md, read and written with QtCore.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QByteArray>
 #include <QString>

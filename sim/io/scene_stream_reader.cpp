@@ -1,9 +1,9 @@
 #include "sim/io/scene_stream_reader.h"
 
+#include "sim/core/prefault.h"
+#include "sim/core/tolerances.h"
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_format.h"
-#include "sim/prefault.h"
-#include "sim/tolerances.h"
 
 #include <QByteArray>
 #include <QJsonDocument>

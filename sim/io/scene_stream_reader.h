@@ -9,7 +9,7 @@
 // reader that names the problem, field path or line and column. It accepts only what that
 // reader accepts, and then builds the same scene (tests/fuzz/fuzz_scene_loader checks both).
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <optional>
 #include <string_view>

@@ -6,12 +6,12 @@
 // an exception, a non-finite position or velocity, or a run that never ends (libFuzzer's -timeout)
 // is a finding. Built by scripts/fuzz.sh.
 
-#include "sim/measures.h"
-#include "sim/run_watch.h"
-#include "sim/shapes.h"
+#include "sim/core/tolerances.h"
+#include "sim/geometry/shapes.h"
+#include "sim/measure/measures.h"
+#include "sim/measure/run_watch.h"
+#include "sim/model/validation.h"
 #include "sim/simulation.h"
-#include "sim/tolerances.h"
-#include "sim/validation.h"
 
 #include <fuzzer/FuzzedDataProvider.h>
 

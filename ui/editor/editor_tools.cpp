@@ -1,7 +1,7 @@
 #include "ui/editor/editor_tools.h"
 
-#include "sim/ray_cast.h"
-#include "sim/shapes.h"
+#include "sim/geometry/ray_cast.h"
+#include "sim/geometry/shapes.h"
 #include "ui/editor/scene_document.h"
 #include "ui/render/scene_view.h"
 

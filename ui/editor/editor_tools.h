@@ -3,8 +3,8 @@
 // Plane, Add Cylinder and Add Box (click to place). They watch the view's mouse and keys and
 // change the scene only through the document, one command per click or drag.
 
-#include "sim/ray_cast.h"
-#include "sim/scene.h"
+#include "sim/geometry/ray_cast.h"
+#include "sim/model/scene.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/scene_change.h"
 #include "ui/editor/standing.h"

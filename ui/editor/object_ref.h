@@ -1,7 +1,7 @@
 #pragma once
 // Names one object of a scene by kind and index, as the editor's selection and commands do.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QString>
 

@@ -4,7 +4,7 @@
 // validation the loader uses, and a refused value leaves the scene as it was. Numbers show six
 // significant digits, all of them while a field is edited and in its tooltip.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/editor/object_ref.h"
 
 #include <QDockWidget>

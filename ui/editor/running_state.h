@@ -2,7 +2,7 @@
 // Edits applied to a running simulation: the balls an edit left alone keep where the run has
 // taken them.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/editor/scene_change.h"
 
 #include <vector>

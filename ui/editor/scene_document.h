@@ -2,7 +2,7 @@
 // The open scene, as Tiled's MapDocument: it owns the scene's initial state, the selection and
 // the undo stack. Every change is a command on the stack; views and docks observe the signals.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/scene_change.h"
 

@@ -1,6 +1,6 @@
 #include "ui/editor/standing.h"
 
-#include "sim/shapes.h"
+#include "sim/geometry/shapes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // the surfaces they stood on at the press, and a cylinder given a length keeps its foot on the
 // surface under it.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/editor/object_ref.h"
 
 #include <optional>

@@ -3,8 +3,8 @@
 // Outline names them ("Ball 3", "floor"), fields as the Properties dock labels them, numbers in
 // the current locale. The file paths of ValidationError::text() are for files and carom-cli.
 
-#include "sim/scene.h"
-#include "sim/validation.h"
+#include "sim/model/scene.h"
+#include "sim/model/validation.h"
 
 #include <QString>
 

@@ -2,7 +2,7 @@
 // An axis-aligned box: the region the camera frames and picking keeps to; infinite planes and
 // cylinders are drawn beyond it, fading (kHorizonRadii).
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 namespace carom::render {
 

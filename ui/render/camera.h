@@ -1,7 +1,7 @@
 #pragma once
 // An orbit camera: it circles a target point at some distance, looking at it. Pure math, no GL.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/render/bounds.h"
 
 #include <QMatrix4x4>

@@ -2,7 +2,7 @@
 // The explosions shown where balls collide: a fixed-size pool of short-lived sparks that fade
 // and grow with time. No Qt, no GL, so the bookkeeping can be tested with made-up times.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <cstdint>
 #include <vector>

@@ -2,7 +2,7 @@
 // What the scene view and its renderers share: a packed vertex type, buffer uploads, vertex
 // layouts and shader programs from the built-in resources (resources/shaders).
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 
 #include <QOpenGLFunctions_3_3_Core>
 

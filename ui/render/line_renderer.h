@@ -3,7 +3,7 @@
 // balls' velocity arrows and trails, which share one program and one streamed buffer; and flat
 // triangles on the screen (the markers of balls outside the view) through the same.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/render/bounds.h"
 #include "ui/render/gl_util.h"
 

@@ -1,7 +1,7 @@
 #include "ui/render/render_scene.h"
 
-#include "sim/prefault.h"
-#include "sim/shapes.h"
+#include "sim/core/prefault.h"
+#include "sim/geometry/shapes.h"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 // static objects already clipped to a finite box (the horizon), ball sizes and colours. Built
 // once per scene.
 
-#include "sim/scene.h"
+#include "sim/model/scene.h"
 #include "ui/render/bounds.h"
 
 #include <Eigen/Geometry>  // cross products, for the planes and cylinders

@@ -3,7 +3,7 @@
 // first, and additive sparks where they collide. Huge scenes are drawn in pieces
 // (scene_view_pieces.cpp), so that the window stays responsive while a picture is drawn.
 
-#include "sim/run_stats.h"
+#include "sim/dynamics/run_stats.h"
 #include "ui/render/camera.h"
 #include "ui/render/explosion_pool.h"
 #include "ui/render/render_scene.h"

@@ -5,7 +5,7 @@
 #include "ui/render/scene_view.h"
 #include "ui/render/view_vertices.h"
 
-#include "sim/prefault.h"
+#include "sim/core/prefault.h"
 
 #include <QOpenGLShaderProgram>
 

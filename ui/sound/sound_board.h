@@ -1,7 +1,7 @@
 #pragma once
 // Collision sounds: turns the collisions of a frame into a few short, rate-limited clicks.
 
-#include "sim/run_stats.h"
+#include "sim/dynamics/run_stats.h"
 
 #include <QElapsedTimer>
 #include <QObject>

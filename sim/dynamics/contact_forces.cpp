@@ -1,0 +1,89 @@
+#include "sim/dynamics/contact_forces.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace carom {
+
+Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
+  const int n = static_cast<int>(a.cols());
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  std::vector<bool> passive(n, false);
+  // Gradients below this are round-off of the products that make them.
+  const double threshold = 1e-14 * std::max(1.0, a.norm() * b.norm());
+  // Each pass frees one variable; a cycle through round-off is cut off after generous passes.
+  for (int pass = 0; pass < 3 * n + 10; ++pass) {
+    const Eigen::VectorXd gradient = a.transpose() * (b - a * x);
+    int best = -1;
+    for (int j = 0; j < n; ++j)
+      if (!passive[j] && gradient[j] > threshold && (best < 0 || gradient[j] > gradient[best]))
+        best = j;
+    if (best < 0) break;
+    passive[best] = true;
+    for (int inner = 0; inner < n + 1; ++inner) {
+      std::vector<int> columns;
+      for (int j = 0; j < n; ++j)
+        if (passive[j]) columns.push_back(j);
+      Eigen::MatrixXd sub(a.rows(), static_cast<Eigen::Index>(columns.size()));
+      for (std::size_t k = 0; k < columns.size(); ++k) sub.col(k) = a.col(columns[k]);
+      const Eigen::VectorXd z = sub.colPivHouseholderQr().solve(b);
+      bool feasible = true;
+      double step = 1.0;
+      for (std::size_t k = 0; k < columns.size(); ++k) {
+        if (z[k] > 0.0) continue;
+        feasible = false;
+        const double xk = x[columns[k]];
+        step = std::min(step, xk / (xk - z[k]));
+      }
+      if (feasible) {
+        x.setZero();
+        for (std::size_t k = 0; k < columns.size(); ++k) x[columns[k]] = z[k];
+        break;
+      }
+      // Move towards z as far as x stays non-negative, and drop the variables that reach zero.
+      for (std::size_t k = 0; k < columns.size(); ++k) {
+        const int j = columns[k];
+        x[j] += step * (z[k] - x[j]);
+        if (x[j] <= 0.0) {
+          x[j] = 0.0;
+          passive[j] = false;
+        }
+      }
+    }
+  }
+  return x;
+}
+
+bool contactForcesBalance(const Vec3& gravity, const std::vector<double>& masses,
+                          const std::vector<ClusterContact>& contacts, double tolerance,
+                          std::vector<bool>* carries) {
+  const double g = gravity.norm();
+  if (g == 0.0 || contacts.empty() || masses.empty()) return false;
+  const int bodies = static_cast<int>(masses.size());
+  // Each ball's rows are its force balance divided by its weight, so that every ball counts
+  // alike whatever the mass ratios; each column is scaled to unit length, which changes no
+  // answer of the non-negative problem.
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3 * bodies, static_cast<Eigen::Index>(contacts.size()));
+  Eigen::VectorXd b(3 * bodies);
+  const Vec3 up = -gravity / g;
+  for (int k = 0; k < bodies; ++k) b.segment<3>(3 * k) = up;
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const ClusterContact& contact = contacts[c];
+    a.block<3, 1>(3 * contact.body, c) = contact.normal / masses[contact.body];
+    if (contact.other >= 0)
+      a.block<3, 1>(3 * contact.other, c) = -contact.normal / masses[contact.other];
+    a.col(c).normalize();
+  }
+  const Eigen::VectorXd forces = nonNegativeLeastSquares(a, b);
+  for (int k = 0; k < bodies; ++k)
+    if ((a.middleRows(3 * k, 3) * forces - up).norm() > tolerance) return false;
+  if (carries) {
+    carries->resize(contacts.size());
+    for (std::size_t c = 0; c < contacts.size(); ++c) (*carries)[c] = forces[c] > tolerance;
+  }
+  return true;
+}
+
+}  // namespace carom

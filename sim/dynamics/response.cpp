@@ -1,0 +1,66 @@
+#include "sim/dynamics/response.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace carom {
+
+double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
+                       double restitution, double minimumSeparation, double lossless) {
+  const double approach = (va - vb).dot(n);
+  const double totalInverse = inverseMassA + inverseMassB;
+  if (totalInverse <= 0.0) return approach;
+  // A pair that (by round-off) already separates keeps separating at no less than the minimum.
+  const double closing = std::max(approach, 0.0);
+  const double separation =
+      std::max(separationSpeed(closing, restitution, minimumSeparation, lossless), -approach);
+  // Change of relative normal speed, shared in proportion to inverse mass; written with weights
+  // rather than an impulse so that mass ratios of 1e12 lose nothing to rounding.
+  const double change = approach + separation;
+  va -= (change * (inverseMassA / totalInverse)) * n;
+  vb += (change * (inverseMassB / totalInverse)) * n;
+  return approach;
+}
+
+bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation) {
+  const double approach = -v.dot(n);
+  Vec3 tangential = v + approach * n;
+  // A ball that (by round-off) already leaves the surface keeps its own speed if that is more.
+  const double bounce = std::max(restitution * approach, -approach);
+  double separation = bounce;
+  bool addedEnergy = false;
+  if (bounce < minimumSeparation) {
+    separation = minimumSeparation;
+    // Energy left for the tangential motion if the bounce is to add none.
+    const double budget =
+        tangential.squaredNorm() + approach * approach - minimumSeparation * minimumSeparation;
+    const double tangential2 = tangential.squaredNorm();
+    if (budget >= 0.0 && tangential2 > 0.0) {
+      if (budget < tangential2) tangential *= std::sqrt(budget / tangential2);
+    } else {
+      addedEnergy = true;
+    }
+  }
+  v = tangential + separation * n;
+  return addedEnergy;
+}
+
+double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy) {
+  const Vec3 down = gravity.normalized();
+  const double along = v.dot(down);
+  const Vec3 across = v - along * down;
+  const double twiceKinetic = 2.0 * (energy + gravity.dot(position));
+  const double along2 = twiceKinetic - across.squaredNorm();
+  if (along2 >= 0.0) {
+    v = across + std::copysign(std::sqrt(along2), along) * down;
+    return 0.0;
+  }
+  if (twiceKinetic > 0.0) {
+    v = across * std::sqrt(twiceKinetic / across.squaredNorm());
+    return 0.0;
+  }
+  v.setZero();
+  return -0.5 * twiceKinetic;  // higher than its energy allows: the excess stays
+}
+
+}  // namespace carom

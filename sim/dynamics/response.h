@@ -1,0 +1,87 @@
+#pragma once
+// Collision response: new velocities for a contact, for any masses, with restitution.
+
+#include "sim/core/tolerances.h"
+#include "sim/model/scene.h"
+
+#include <cstddef>
+
+namespace carom {
+
+// The speed at which a contact separates: restitution times the approach speed, but never less
+// than `minimum` (the rest policy's floor, see docs/physics.md), and restitution takes nothing of
+// an approach below `lossless` nor cuts a faster one below it (rule 8 of rest_policy.h).
+inline double separationSpeed(double approach, double restitution, double minimum,
+                              double lossless = 0.0) {
+  double s = restitution * approach;
+  const double kept = approach < lossless ? approach : lossless;
+  if (s < kept) s = kept;
+  return s < minimum ? minimum : s;
+}
+
+// The unit normal along `offset` (from one ball's centre to another's, `distance` long), or
+// along `fallback` when the centres coincide: positions far out round to more than a small
+// ball's radius (1e-7 m at 1e9 m from the origin), and balls meeting there may share a centre.
+inline Vec3 pairNormal(const Vec3& offset, double distance, const Vec3& fallback) {
+  if (distance > 0.0) return offset / distance;
+  const double length = fallback.norm();
+  return length > 0.0 ? Vec3(fallback / length) : Vec3::UnitY();
+}
+
+// Two balls touching along unit normal `n` (from a to b). Inverse masses may be zero for an
+// immovable ball. Only the normal components change; momentum is conserved for finite masses.
+// Returns the approach speed.
+double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMassB, const Vec3& n,
+                       double restitution, double minimumSeparation, double lossless = 0.0);
+
+// A ball against an immovable surface with unit normal `n` pointing to the ball. When the
+// minimum separation speed exceeds what restitution gives, the extra normal speed is taken from
+// the tangential motion where it has enough, so the floor never adds energy in that case.
+// Returns true when it had to add energy (the ball was too slow in every direction).
+bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation);
+
+// Contacts with several immovable surfaces at one instant (the bottom of a narrow V, a crease):
+// reflects `v` off each of `surfaces` (items with a unit `normal` towards the ball and a
+// `restitution`) that it moves into, in turn and with no minimum separation, until it moves into
+// none. Calls reflected(k, approach) for each reflection off surfaces[k], with the approach
+// speed it met it at. False when `limit` reflections
+// did not suffice (a V of about π/limit rad or less, a ball jammed between parallel walls).
+// An approach within the round-off of v (a ball sliding along a surface, its velocity off the
+// surface by a few ulps) is none: reflecting it leaves v as it was, and looping on it would not
+// end. Skipping it changes no energy, since the reflection changes nothing. Nor does the loop
+// go on past kMaxCollisionsInBurst reflections in a row whose approaches are all within
+// kTangentRateFraction of the speed: an inelastic ball in the crease of two planes came to
+// move along it with v changed by an ulp at each reflection, off one plane into the other and
+// back, ten million times a step under `discrete`.
+template <typename Surfaces, typename OnReflect>
+bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& reflected) {
+  int roundOffInARow = 0;
+  for (long reflections = 0; reflections < limit;) {
+    bool any = false;
+    for (std::size_t k = 0; k < surfaces.size(); ++k) {
+      const double approach = -v.dot(surfaces[k].normal);
+      if (approach <= 0.0) continue;
+      const Vec3 before = v;
+      resolveAgainstSurface(v, surfaces[k].normal, surfaces[k].restitution, 0.0);
+      if (v == before) continue;
+      reflected(k, approach);
+      any = true;
+      ++reflections;
+      const bool roundOff = approach <= tolerance::kTangentRateFraction * before.norm();
+      roundOffInARow = roundOff ? roundOffInARow + 1 : 0;
+      if (roundOffInARow > tolerance::kMaxCollisionsInBurst) return true;
+    }
+    if (!any) return true;
+  }
+  return false;
+}
+
+// Sets velocity `v` of a ball at `position` so that its energy per unit mass,
+// |v|²/2 - gravity . position, is `energy`: the errors of a stepped method (integrator kicks, a
+// straight chord below the parabola, an overlap pushed out) are along gravity, so the velocity
+// along gravity takes the change; only when that is not enough does the sideways motion slow
+// down. A ball higher than `energy` allows stops, and the excess it still has is returned
+// (else 0), to be taken at its next contact.
+double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy);
+
+}  // namespace carom

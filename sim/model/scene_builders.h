@@ -1,0 +1,27 @@
+#pragma once
+// Scenes made in code: the benchmark gases and the random scenes of the tests.
+
+#include "sim/model/scene.h"
+
+#include <cstdint>
+#include <initializer_list>
+
+namespace carom {
+
+// Planes at -halfSide and +halfSide on each of the given axes (0, 1, 2 for x, y, z), facing in.
+void addBoxWalls(Scene& scene, double halfSide, std::initializer_list<int> axes = {0, 1, 2});
+
+// `ballCount` balls of radius `radius` on a cubic lattice inside a closed box of six planes,
+// sized so that the balls fill `packingFraction` of it. Velocities are normal with unit variance
+// per component, shifted to zero total momentum; the same seed gives the same scene.
+Scene makeGasInBox(int ballCount, double packingFraction, const Vec3& gravity, std::uint64_t seed,
+                   double radius = 0.5);
+
+// A Galton board for `ballCount` balls of radius `radius` under gravity -y, restitution 0.5:
+// a block of balls above a funnel of two boxes sloping at 35 degrees, a triangle of capped pegs
+// along z (at least ten rows, about a third of the square root of the ball count), bins of thin
+// boxes tall enough for the fullest, and glass planes 3 radii either side of the middle. The
+// seed jitters the balls' starting places.
+Scene makeGaltonBoard(int ballCount, std::uint64_t seed, double radius = 0.01);
+
+}  // namespace carom

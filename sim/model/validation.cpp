@@ -1,0 +1,856 @@
+#include "sim/model/validation.h"
+#include "sim/core/prefault.h"
+
+#include "sim/core/tolerances.h"
+#include "sim/geometry/shapes.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <queue>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+namespace carom {
+namespace {
+
+namespace tol = tolerance;
+
+// Shortest text that reads back as the same double, with the exponent tidied ("1e300", not
+// "1e+300") so that messages stay short.
+std::string formatNumber(double value, int significantDigits = 0) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
+  char buffer[64];
+  const auto result = significantDigits > 0
+                          ? std::to_chars(buffer, buffer + sizeof buffer, value,
+                                          std::chars_format::general, significantDigits)
+                          : std::to_chars(buffer, buffer + sizeof buffer, value);
+  std::string text(buffer, result.ptr);
+  const auto e = text.find('e');
+  if (e == std::string::npos) return text;
+  std::string exponent = text.substr(e + 1);
+  const bool negative = exponent.front() == '-';
+  if (exponent.front() == '+' || negative) exponent.erase(0, 1);
+  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+  return text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+}
+
+// Overlap depths are derived quantities; six digits keep "0.05" from printing as
+// "0.04999999999999999".
+std::string formatDepth(double value) {
+  return formatNumber(value, 6);
+}
+
+// The subject's name in paths: the file's key.
+std::string_view subjectKey(ValidationSubject subject) {
+  switch (subject) {
+    case ValidationSubject::World:
+      return "world";
+    case ValidationSubject::Tolerance:
+      return "tolerance";
+    case ValidationSubject::Planes:
+      return "planes";
+    case ValidationSubject::Cylinders:
+      return "cylinders";
+    case ValidationSubject::Boxes:
+      return "boxes";
+    case ValidationSubject::Balls:
+      return "balls";
+  }
+  return {};
+}
+
+std::string objectPath(const ValidationObject& object) {
+  std::string path(subjectKey(object.subject));
+  if (object.index) path += "[" + std::to_string(*object.index) + "]";
+  return path;
+}
+
+// The path below the object, such as ".position"; a tolerance is spelled as its subject's file
+// or command line spells it.
+std::string_view fieldPath(ValidationField field, ValidationSubject subject) {
+  using F = ValidationField;
+  const bool alone = subject == ValidationSubject::Tolerance;
+  switch (field) {
+    case F::None:
+      return {};
+    case F::Position:
+      return ".position";
+    case F::Velocity:
+      return ".velocity";
+    case F::Radius:
+      return ".radius";
+    case F::Mass:
+      return ".mass";
+    case F::Point:
+      return ".point";
+    case F::Normal:
+      return ".normal";
+    case F::Axis:
+      return ".axis";
+    case F::Length:
+      return ".length";
+    case F::Center:
+      return ".center";
+    case F::HalfExtentX:
+      return ".halfExtents[0]";
+    case F::HalfExtentY:
+      return ".halfExtents[1]";
+    case F::HalfExtentZ:
+      return ".halfExtents[2]";
+    case F::RotationAxis:
+      return ".rotation.axis";
+    case F::RotationDegrees:
+      return ".rotation.degrees";
+    case F::Name:
+      return ".name";
+    case F::Restitution:
+      return ".restitution";
+    case F::Color:
+      return ".color";
+    case F::Gravity:
+      return ".gravity";
+    case F::TimeStep:
+      return ".timeStep";
+    case F::EnergyTolerance:
+      return alone ? ".energy" : ".tolerance[0]";
+    case F::PenetrationTolerance:
+      return alone ? ".penetration" : ".tolerance[1]";
+  }
+  return {};
+}
+
+// A ball's overlap with `other`, reported on the ball's position: by `depth`, or, for a plane,
+// with its centre `behind` the surface.
+ValidationError overlapError(std::size_t ball, ValidationObject other, double depth,
+                             std::optional<double> behind = std::nullopt) {
+  ValidationError error;
+  error.object = {ValidationSubject::Balls, ball};
+  error.path = objectPath(error.object) + ".position";
+  error.other = other;
+  if (behind) {
+    error.problem = ValidationProblem::BehindSurface;
+    error.value = *behind;
+    error.message =
+        "overlaps " + objectPath(other) + " (is " + formatDepth(*behind) + " behind its surface)";
+  } else {
+    error.problem = ValidationProblem::Overlaps;
+    error.value = depth;
+    error.message = "overlaps " + objectPath(other) + " by " + formatDepth(depth);
+  }
+  return error;
+}
+
+class ErrorList {
+ public:
+  explicit ErrorList(std::size_t maxErrors) : maxErrors_(maxErrors) {}
+
+  bool full() const { return errors_.size() >= maxErrors_; }
+  std::size_t room() const { return full() ? 0 : maxErrors_ - errors_.size(); }
+  void add(ValidationError error) {
+    if (!full()) errors_.push_back(std::move(error));
+  }
+  std::vector<ValidationError> take() { return std::move(errors_); }
+
+ private:
+  std::size_t maxErrors_;
+  std::vector<ValidationError> errors_;
+};
+
+// The numbers and text a problem quotes (ValidationError's).
+struct Quoted {
+  double value = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+  std::string quoted{};
+};
+
+// The checks below report into `errors` when given one and only answer otherwise, so the same
+// rules decide both whether an object can take part in overlap tests and what is reported.
+class FieldChecker {
+ public:
+  // Fields of `subject` (the world, a tolerance), or of entry `index` of its list; paths are
+  // spelled only for a message, since a scene may hold a million balls.
+  FieldChecker(ErrorList* errors, ValidationSubject subject,
+               std::optional<std::size_t> index = std::nullopt)
+      : errors_(errors), object_{subject, index} {}
+
+  bool ok() const { return ok_; }
+
+  void finiteBounded(ValidationField field, double value) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (std::abs(value) > tol::kMaxMagnitude) tooLarge(field, value);
+  }
+
+  // Returns whether the vector passed, so that a direction check can follow.
+  bool vector(ValidationField field, const Vec3& value) {
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(value[i])) {
+        fail(field, ValidationProblem::NotFinite, "must be finite");
+        return false;
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(value[i]) > tol::kMaxMagnitude) {
+        tooLarge(field, value[i]);
+        return false;
+      }
+    }
+    return true;
+  }
+
+  void direction(ValidationField field, const Vec3& value) {
+    if (vector(field, value) && value.norm() <= tol::kMinDirectionLength)
+      fail(field, ValidationProblem::ZeroLength, "must not be zero-length");
+  }
+
+  void radius(ValidationField field, double value) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (value <= 0.0) return notPositive(field, value);
+    if (value < tol::kMinRadius)
+      return fail(field, ValidationProblem::TooSmall,
+                  "must be at least " + formatNumber(tol::kMinRadius) + " (got " +
+                      formatNumber(value) + ")",
+                  {.value = value, .low = tol::kMinRadius});
+    finiteBounded(field, value);
+  }
+
+  void positiveBetween(ValidationField field, double value, double low, double high) {
+    if (!std::isfinite(value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (value <= 0.0) return notPositive(field, value);
+    if (value < low || value > high) between(field, value, low, high);
+  }
+
+  void aboveZero(ValidationField field, double value) {
+    if (!std::isfinite(value) || !(value > 0.0))
+      fail(field, ValidationProblem::NotAboveZero,
+           "must be a number above zero (got " + formatNumber(value) + ")", {.value = value});
+  }
+
+  void restitution(ValidationField field, const std::optional<double>& value) {
+    if (!value) return;
+    if (!std::isfinite(*value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
+    if (*value < 0.0 || *value > 1.0) between(field, *value, 0.0, 1.0);
+  }
+
+  void info(const ObjectInfo& info) {
+    const std::size_t nameLength = characterCount(info.name);
+    if (nameLength > tol::kMaxNameCharacters)
+      fail(ValidationField::Name, ValidationProblem::NameTooLong,
+           "must be at most " + std::to_string(tol::kMaxNameCharacters) + " characters (got " +
+               std::to_string(nameLength) + ")",
+           {.value = double(nameLength), .high = double(tol::kMaxNameCharacters)});
+    restitution(ValidationField::Restitution, info.restitution);
+    if (!isColor(info.color)) {
+      std::string quoted = excerpt(info.color);
+      fail(ValidationField::Color, ValidationProblem::BadColor,
+           "must be empty or \"#rrggbb\" (got \"" + quoted + "\")", {.quoted = quoted});
+    }
+  }
+
+ private:
+  static bool isColor(const std::string& text) {
+    if (text.empty()) return true;
+    if (text.size() != 7 || text[0] != '#') return false;
+    return std::all_of(text.begin() + 1, text.end(), [](char c) {
+      return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+    });
+  }
+
+  void tooLarge(ValidationField field, double value) {
+    fail(field, ValidationProblem::TooLarge,
+         "must be at most " + formatNumber(tol::kMaxMagnitude) + " in magnitude (got " +
+             formatNumber(value) + ")",
+         {.value = value, .high = tol::kMaxMagnitude});
+  }
+
+  void notPositive(ValidationField field, double value) {
+    fail(field, ValidationProblem::NotPositive,
+         "must be positive (got " + formatNumber(value) + ")", {.value = value});
+  }
+
+  void between(ValidationField field, double value, double low, double high) {
+    fail(field, ValidationProblem::NotBetween,
+         "must be between " + formatNumber(low) + " and " + formatNumber(high) + " (got " +
+             formatNumber(value) + ")",
+         {.value = value, .low = low, .high = high});
+  }
+
+  void fail(ValidationField field, ValidationProblem problem, std::string message,
+            Quoted quoted = {}) {
+    ok_ = false;
+    if (!errors_) return;
+    ValidationError error;
+    error.path = objectPath(object_) + std::string(fieldPath(field, object_.subject));
+    error.message = std::move(message);
+    error.problem = problem;
+    error.object = object_;
+    error.field = field;
+    error.value = quoted.value;
+    error.low = quoted.low;
+    error.high = quoted.high;
+    error.quoted = std::move(quoted.quoted);
+    errors_->add(std::move(error));
+  }
+
+  ErrorList* errors_;
+  ValidationObject object_;
+  bool ok_ = true;
+};
+
+using F = ValidationField;
+
+bool checkPlane(const Plane& plane, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors, ValidationSubject::Planes, index);
+  check.vector(F::Point, plane.point);
+  check.direction(F::Normal, plane.normal);
+  check.info(plane);
+  return check.ok();
+}
+
+bool checkCylinder(const Cylinder& cylinder, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors, ValidationSubject::Cylinders, index);
+  check.vector(F::Point, cylinder.point);
+  check.direction(F::Axis, cylinder.axis);
+  check.radius(F::Radius, cylinder.radius);
+  if (cylinder.length) check.radius(F::Length, *cylinder.length);
+  check.info(cylinder);
+  return check.ok();
+}
+
+bool checkBox(const Box& box, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors, ValidationSubject::Boxes, index);
+  check.vector(F::Center, box.center);
+  constexpr F kHalfExtents[] = {F::HalfExtentX, F::HalfExtentY, F::HalfExtentZ};
+  for (int k = 0; k < 3; ++k) check.radius(kHalfExtents[k], box.halfExtents[k]);
+  if (box.rotation) {
+    check.direction(F::RotationAxis, box.rotation->axis);
+    check.finiteBounded(F::RotationDegrees, box.rotation->degrees);
+  }
+  check.info(box);
+  return check.ok();
+}
+
+bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
+  FieldChecker check(errors, ValidationSubject::Balls, index);
+  check.vector(F::Position, ball.position);
+  check.vector(F::Velocity, ball.velocity);
+  check.radius(F::Radius, ball.radius);
+  check.positiveBetween(F::Mass, ball.mass, tol::kMinMass, tol::kMaxMass);
+  check.info(ball);
+  return check.ok();
+}
+
+void checkWorld(const World& world, ErrorList& errors) {
+  FieldChecker check(&errors, ValidationSubject::World);
+  check.vector(F::Gravity, world.gravity);
+  check.positiveBetween(F::TimeStep, world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
+  check.restitution(F::Restitution, world.restitution);
+  if (world.autoMethod) {
+    check.aboveZero(F::EnergyTolerance, world.autoMethod->energyPerSecond);
+    check.aboveZero(F::PenetrationTolerance, world.autoMethod->penetrationFraction);
+  }
+}
+
+bool checkCount(ValidationSubject list, std::size_t count, std::size_t limit, ErrorList& errors) {
+  if (count <= limit) return true;
+  ValidationError error;
+  error.object = {list, std::nullopt};
+  error.path = objectPath(error.object);
+  error.message =
+      "must have at most " + std::to_string(limit) + " entries (got " + std::to_string(count) + ")";
+  error.problem = ValidationProblem::TooMany;
+  error.value = double(count);
+  error.high = double(limit);
+  errors.add(std::move(error));
+  return false;
+}
+
+bool overlaps(double depth, double radiusSum) {
+  return depth > tol::kTouchFraction * radiusSum;
+}
+
+// Shapes that passed their own checks, with their scene index, for the overlap tests.
+struct IndexedPlane {
+  std::size_t index;
+  PlaneShape shape;
+};
+
+struct IndexedCylinder {
+  std::size_t index;
+  CylinderShape shape;
+};
+
+struct IndexedBox {
+  std::size_t index;
+  BoxShape shape;
+};
+
+// The shapes that passed their own checks, for the overlap tests.
+struct StaticShapes {
+  std::vector<IndexedPlane> planes;
+  std::vector<IndexedCylinder> cylinders;
+  std::vector<IndexedBox> boxes;
+  bool empty() const { return planes.empty() && cylinders.empty() && boxes.empty(); }
+};
+
+// Finds the balls that overlap earlier balls with a grid per power-of-two size class: each ball
+// sits in one cell of the class that fits its diameter and looks only at the 27 cells around it
+// in its own and larger classes. Every pair is thus met once, from its smaller member, in time
+// that grows linearly with the number of balls for any scene whose balls do not overlap.
+class BallOverlapFinder {
+ public:
+  struct Overlap {
+    std::size_t later;
+    std::size_t earlier;
+    double depth;
+    bool operator>(const Overlap& other) const { return other < *this; }
+    bool operator<(const Overlap& other) const {
+      return later != other.later ? later < other.later : earlier < other.earlier;
+    }
+  };
+
+  // Only the `maxReported` first overlaps (by later, then earlier ball) can be reported.
+  BallOverlapFinder(const std::vector<Ball>& balls, const std::vector<bool>& usable,
+                    std::size_t maxReported)
+      : balls_(balls), levels_(balls.size(), 0) {
+    // Cells are at least 2^-40 of the largest coordinate so that cell indices fit in 64 bits.
+    double largest = 0.0;
+    for (std::size_t i = 0; i < balls.size(); ++i)
+      if (usable[i]) largest = std::max(largest, balls[i].position.cwiseAbs().maxCoeff());
+    const int minLevel =
+        largest > 0.0 ? std::ilogb(largest) + 1 - 40 : std::numeric_limits<int>::min();
+
+    std::vector<std::pair<CellKey, std::size_t>> entries;
+    reservePrefaulted(entries, balls.size());
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (!usable[i]) continue;
+      // A cell is wider than the diameter, so overlapping balls of a class are in neighbouring
+      // cells; ldexp in cellOf is exact, so no rounding can move a ball across a cell border.
+      levels_[i] = std::max(std::ilogb(2.0 * balls[i].radius) + 1, minLevel);
+      entries.push_back({cellOf(balls[i].position, levels_[i]), i});
+    }
+    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first < b.first : a.second < b.second;
+    });
+    order_.reserve(entries.size());
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].first == entries[begin].first) {
+        order_.push_back(entries[end].second);
+        ++end;
+      }
+      cellKeys_.push_back(entries[begin].first);
+      cellRanges_.push_back({begin, end});
+      if (usedLevels_.empty() || usedLevels_.back() != entries[begin].first.level)
+        usedLevels_.push_back(entries[begin].first.level);
+      begin = end;
+    }
+    std::size_t slots = 16;
+    while (slots < 2 * cellKeys_.size()) slots *= 2;
+    slots_.assign(slots, 0);
+    for (std::size_t cell = 0; cell < cellKeys_.size(); ++cell) {
+      std::size_t slot = CellHash{}(cellKeys_[cell]) & (slots - 1);
+      while (slots_[slot] != 0) slot = (slot + 1) & (slots - 1);
+      slots_[slot] = static_cast<std::uint32_t>(cell + 1);
+    }
+    sweepOwnClasses(maxReported);
+  }
+
+  // All overlaps whose later ball is `index`, by earlier ball; call for every usable ball in
+  // increasing order.
+  std::vector<Overlap> overlapsOf(std::size_t index) {
+    find(index);
+    std::vector<Overlap> result;
+    while (!pending_.empty() && pending_.top().later == index) {
+      result.push_back(pending_.top());
+      pending_.pop();
+    }
+    return result;
+  }
+
+ private:
+  struct CellKey {
+    int level;
+    std::int64_t x, y, z;
+    auto operator<=>(const CellKey&) const = default;
+  };
+
+  struct CellHash {
+    std::size_t operator()(const CellKey& key) const {
+      // Multiply and fold each part in, so that neighbouring cells land far apart.
+      std::uint64_t hash = static_cast<std::uint32_t>(key.level);
+      for (std::int64_t part : {key.x, key.y, key.z}) {
+        hash = (hash ^ static_cast<std::uint64_t>(part)) * 0x100000001b3ULL;
+        hash ^= hash >> 29;
+      }
+      return static_cast<std::size_t>(hash);
+    }
+  };
+
+  struct Range {
+    std::size_t begin, end;
+  };
+
+  static CellKey cellOf(const Vec3& position, int level) {
+    const auto index = [level](double coordinate) {
+      return static_cast<std::int64_t>(std::floor(std::ldexp(coordinate, -level)));
+    };
+    return {level, index(position.x()), index(position.y()), index(position.z())};
+  }
+
+  // The pairs within each class, found once for all balls: the cells are visited in their
+  // sorted order, and the cells of each of the nine rows of neighbours, (x + dx, y + dy,
+  // z - 1 .. z + 1), come in that order too, so nine cursors that only move forward find them
+  // without a look-up (and its cache miss) per cell. Only the first `maxReported` overlaps are
+  // kept.
+  void sweepOwnClasses(std::size_t maxReported) {
+    std::priority_queue<Overlap, std::vector<Overlap>, std::less<>> kept;  // largest on top
+    const auto keep = [&](const Overlap& overlap) {
+      if (kept.size() == maxReported && !(kept.top() > overlap)) return;
+      kept.push(overlap);
+      if (kept.size() > maxReported) kept.pop();
+    };
+    // Once as many are kept as can be reported, pairs whose later ball comes after the last
+    // kept one's are not tested: a thousand balls in one spot stop at the first few.
+    const auto latest = [&] {
+      return kept.size() == maxReported ? kept.top().later
+                                        : std::numeric_limits<std::size_t>::max();
+    };
+    const auto testCells = [&](std::size_t a, std::size_t b) {
+      // Cells list their balls in increasing order.
+      if (std::max(order_[cellRanges_[a].begin], order_[cellRanges_[b].begin]) > latest()) return;
+      for (std::size_t i = cellRanges_[a].begin; i < cellRanges_[a].end; ++i) {
+        const std::size_t x = order_[i];
+        if (x > latest()) break;
+        for (std::size_t j = cellRanges_[b].begin; j < cellRanges_[b].end; ++j) {
+          if (a == b && j >= i) break;
+          const std::size_t y = order_[j];
+          if (y > x && y > latest()) break;
+          if (const std::optional<double> depth = overlapDepth(x, y))
+            keep({std::max(x, y), std::min(x, y), *depth});
+        }
+      }
+    };
+    std::size_t cursors[9] = {};
+    for (std::size_t cell = 0; cell < cellKeys_.size() && maxReported > 0; ++cell) {
+      const CellKey& key = cellKeys_[cell];
+      int row = 0;
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy, ++row) {
+          const CellKey first{key.level, key.x + dx, key.y + dy, key.z - 1};
+          const CellKey last{key.level, key.x + dx, key.y + dy, key.z + 1};
+          std::size_t& cursor = cursors[row];
+          while (cursor < cellKeys_.size() && cellKeys_[cursor] < first) ++cursor;
+          // Each pair of cells once: from the later of the two.
+          for (std::size_t other = cursor;
+               other <= cell && other < cellKeys_.size() && !(last < cellKeys_[other]); ++other)
+            testCells(cell, other);
+        }
+      }
+    }
+    for (; !kept.empty(); kept.pop()) pending_.push(kept.top());
+  }
+
+  // The pairs with balls of larger classes, which the sweep leaves out.
+  void find(std::size_t index) {
+    const Ball& ball = balls_[index];
+    const int ownLevel = levels_[index];
+    for (auto level = std::upper_bound(usedLevels_.begin(), usedLevels_.end(), ownLevel);
+         level != usedLevels_.end(); ++level) {
+      const CellKey centre = cellOf(ball.position, *level);
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            const Range* cell = findCell({*level, centre.x + dx, centre.y + dy, centre.z + dz});
+            if (!cell) continue;
+            for (std::size_t k = cell->begin; k < cell->end; ++k) {
+              const std::size_t other = order_[k];
+              if (const std::optional<double> depth = overlapDepth(index, other))
+                pending_.push({std::max(index, other), std::min(index, other), *depth});
+            }
+          }
+        }
+      }
+    }
+  }
+
+  const Range* findCell(const CellKey& key) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t slot = CellHash{}(key)&mask;; slot = (slot + 1) & mask) {
+      const std::uint32_t cell = slots_[slot];
+      if (cell == 0) return nullptr;
+      if (cellKeys_[cell - 1] == key) return &cellRanges_[cell - 1];
+    }
+  }
+
+  std::optional<double> overlapDepth(std::size_t a, std::size_t b) const {
+    const double radiusSum = balls_[a].radius + balls_[b].radius;
+    const double depth = radiusSum - (balls_[a].position - balls_[b].position).norm();
+    if (!overlaps(depth, radiusSum)) return std::nullopt;
+    return depth;
+  }
+
+  const std::vector<Ball>& balls_;
+  std::vector<int> levels_;
+  std::vector<std::size_t> order_;  // ball indices grouped by cell
+  // The occupied cells in a flat hash table of open addressing (slots_ holds a cell's index
+  // plus one, 0 when empty, at least half of them empty): a million cells as nodes of a map
+  // would take as many allocations, and a cache miss for each look-up.
+  std::vector<CellKey> cellKeys_;
+  std::vector<Range> cellRanges_;
+  std::vector<std::uint32_t> slots_;
+  std::vector<int> usedLevels_;  // ascending
+  std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
+};
+
+void checkBallAgainstPlane(const Ball& ball, std::size_t ballIndex, const IndexedPlane& plane,
+                           ErrorList& errors) {
+  const double distance = plane.shape.gap(ball.position, 0.0);
+  if (!overlaps(ball.radius - distance, ball.radius)) return;
+  const ValidationObject other{ValidationSubject::Planes, plane.index};
+  const double depth = ball.radius - distance;
+  errors.add(distance < 0.0 ? overlapError(ballIndex, other, depth, -distance)
+                            : overlapError(ballIndex, other, depth));
+}
+
+void checkBallAgainstCylinder(const Ball& ball, std::size_t ballIndex,
+                              const IndexedCylinder& cylinder, ErrorList& errors) {
+  const double depth = -cylinder.shape.contact(ball.position, ball.radius).gap;
+  // An infinite cylinder's overlap is judged against the radii's sum, as its distance is taken.
+  const double scale = cylinder.shape.capped() ? ball.radius : ball.radius + cylinder.shape.radius;
+  if (overlaps(depth, scale))
+    errors.add(overlapError(ballIndex, {ValidationSubject::Cylinders, cylinder.index}, depth));
+}
+
+void checkBallAgainstBox(const Ball& ball, std::size_t ballIndex, const IndexedBox& box,
+                         ErrorList& errors) {
+  const double depth = -box.shape.contact(ball.position, ball.radius).gap;
+  if (overlaps(depth, ball.radius))
+    errors.add(overlapError(ballIndex, {ValidationSubject::Boxes, box.index}, depth));
+}
+
+void checkBallAgainstStatics(const Ball& ball, std::size_t ballIndex, const StaticShapes& shapes,
+                             ErrorList& errors) {
+  for (const IndexedPlane& plane : shapes.planes)
+    checkBallAgainstPlane(ball, ballIndex, plane, errors);
+  for (const IndexedCylinder& cylinder : shapes.cylinders)
+    checkBallAgainstCylinder(ball, ballIndex, cylinder, errors);
+  for (const IndexedBox& box : shapes.boxes) checkBallAgainstBox(ball, ballIndex, box, errors);
+}
+
+void checkBalls(const Scene& scene, const StaticShapes& shapes, ErrorList& errors) {
+  const auto& balls = scene.balls;
+  std::vector<bool> usable(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) usable[i] = checkBall(balls[i], i, nullptr);
+  BallOverlapFinder finder(balls, usable, errors.room());
+
+  for (std::size_t i = 0; i < balls.size() && !errors.full(); ++i) {
+    if (!usable[i]) {
+      checkBall(balls[i], i, &errors);
+      continue;
+    }
+    checkBallAgainstStatics(balls[i], i, shapes, errors);
+    for (const auto& overlap : finder.overlapsOf(i))
+      errors.add(overlapError(i, {ValidationSubject::Balls, overlap.earlier}, overlap.depth));
+  }
+}
+
+bool checkCounts(const SceneCounts& counts, ErrorList& errors) {
+  bool countsOk = checkCount(ValidationSubject::Planes, counts.planes, tol::kMaxPlanes, errors);
+  countsOk &=
+      checkCount(ValidationSubject::Cylinders, counts.cylinders, tol::kMaxCylinders, errors);
+  countsOk &= checkCount(ValidationSubject::Boxes, counts.boxes, tol::kMaxBoxes, errors);
+  countsOk &= checkCount(ValidationSubject::Balls, counts.balls, tol::kMaxBalls, errors);
+  return countsOk;
+}
+
+bool checkCounts(const Scene& scene, ErrorList& errors) {
+  return checkCounts(SceneCounts{scene.planes.size(), scene.cylinders.size(), scene.boxes.size(),
+                                 scene.balls.size()},
+                     errors);
+}
+
+// An edit of more balls than this is checked as a whole scene: a ball set against every other
+// costs about a hundredth of what the grid spends on each ball.
+constexpr std::size_t kMostBallsCheckedPairwise = 64;
+
+bool contains(const std::vector<std::size_t>& sorted, std::size_t index) {
+  return std::binary_search(sorted.begin(), sorted.end(), index);
+}
+
+}  // namespace
+
+std::vector<ValidationError> validateCounts(const SceneCounts& counts) {
+  ErrorList errors(4);
+  checkCounts(counts, errors);
+  return errors.take();
+}
+
+std::size_t characterCount(std::string_view utf8) {
+  // Every character has one byte that is not a continuation byte (10xxxxxx).
+  return static_cast<std::size_t>(std::count_if(utf8.begin(), utf8.end(), [](char byte) {
+    return (static_cast<unsigned char>(byte) & 0xC0) != 0x80;
+  }));
+}
+
+std::string excerpt(std::string_view utf8) {
+  // As much as a message can quote and still read as one line.
+  constexpr std::size_t kQuotedCharacters = 32;
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < utf8.size(); ++i) {
+    if ((static_cast<unsigned char>(utf8[i]) & 0xC0) == 0x80) continue;
+    if (characters++ == kQuotedCharacters) return std::string(utf8.substr(0, i)) + "\u2026";
+  }
+  return std::string(utf8);
+}
+
+std::vector<ValidationError> validateScene(const Scene& scene, std::size_t maxErrors) {
+  ErrorList errors(maxErrors);
+  // Counts first: a scene with absurdly many objects is refused before any of them is looked at.
+  if (!checkCounts(scene, errors)) return errors.take();
+
+  checkWorld(scene.world, errors);
+
+  // Only well-formed shapes take part in overlap tests; the others are reported.
+  StaticShapes shapes;
+  for (std::size_t i = 0; i < scene.planes.size() && !errors.full(); ++i)
+    if (checkPlane(scene.planes[i], i, &errors))
+      shapes.planes.push_back({i, planeShape(scene.planes[i])});
+  for (std::size_t i = 0; i < scene.cylinders.size() && !errors.full(); ++i)
+    if (checkCylinder(scene.cylinders[i], i, &errors))
+      shapes.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+  for (std::size_t i = 0; i < scene.boxes.size() && !errors.full(); ++i)
+    if (checkBox(scene.boxes[i], i, &errors)) shapes.boxes.push_back({i, boxShape(scene.boxes[i])});
+  if (!errors.full()) checkBalls(scene, shapes, errors);
+  return errors.take();
+}
+
+std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors) {
+  ErrorList errors(maxErrors);
+  checkWorld(world, errors);
+  return errors.take();
+}
+
+std::vector<ValidationError> validateTolerance(const AccuracyTolerance& tolerance) {
+  ErrorList errors(2);
+  FieldChecker check(&errors, ValidationSubject::Tolerance);
+  check.aboveZero(F::EnergyTolerance, tolerance.energyPerSecond);
+  check.aboveZero(F::PenetrationTolerance, tolerance.penetrationFraction);
+  return errors.take();
+}
+
+std::vector<ValidationError> validateObjects(const Scene& scene, SceneObjectIndices objects,
+                                             std::size_t maxErrors) {
+  for (auto* list : {&objects.planes, &objects.cylinders, &objects.boxes, &objects.balls}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  // Each changed ball is set against every ball. When many changed (Use Current State changes
+  // them all), the whole scene's check costs less, being a grid linear in the balls, and gives
+  // the same answer: the rest of the scene was valid, and so is its world.
+  if (objects.balls.size() > kMostBallsCheckedPairwise) return validateScene(scene, maxErrors);
+  // Every problem is gathered, then put in file order (planes, cylinders, boxes, balls, each by
+  // index)
+  // so that the first one is the one validateScene would report first.
+  struct Found {
+    int list;
+    std::size_t index;
+    ValidationError error;
+  };
+  std::vector<Found> found;
+  const auto collect = [&found](int list, std::size_t index, ErrorList& errors) {
+    for (ValidationError& error : errors.take()) found.push_back({list, index, std::move(error)});
+  };
+  constexpr std::size_t kAll = std::numeric_limits<std::size_t>::max();
+  {
+    ErrorList errors(maxErrors);
+    if (!checkCounts(scene, errors)) return errors.take();
+  }
+
+  // Changed shapes against every ball.
+  constexpr int kBallList = 3;
+  StaticShapes changed;
+  for (std::size_t i : objects.planes) {
+    if (i >= scene.planes.size()) continue;
+    ErrorList errors(kAll);
+    if (checkPlane(scene.planes[i], i, &errors))
+      changed.planes.push_back({i, planeShape(scene.planes[i])});
+    collect(0, i, errors);
+  }
+  for (std::size_t i : objects.cylinders) {
+    if (i >= scene.cylinders.size()) continue;
+    ErrorList errors(kAll);
+    if (checkCylinder(scene.cylinders[i], i, &errors))
+      changed.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+    collect(1, i, errors);
+  }
+  for (std::size_t i : objects.boxes) {
+    if (i >= scene.boxes.size()) continue;
+    ErrorList errors(kAll);
+    if (checkBox(scene.boxes[i], i, &errors))
+      changed.boxes.push_back({i, boxShape(scene.boxes[i])});
+    collect(2, i, errors);
+  }
+  const auto& balls = scene.balls;
+  if (!changed.empty()) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      if (contains(objects.balls, i)) continue;  // checked in full below
+      ErrorList errors(kAll);
+      checkBallAgainstStatics(balls[i], i, changed, errors);
+      collect(kBallList, i, errors);
+    }
+  }
+
+  // Changed balls against everything. The unchanged objects are valid, so only the changed
+  // shapes and balls can fail their own checks.
+  StaticShapes shapes;
+  for (std::size_t i = 0; i < scene.planes.size(); ++i)
+    if (!contains(objects.planes, i) || checkPlane(scene.planes[i], i, nullptr))
+      shapes.planes.push_back({i, planeShape(scene.planes[i])});
+  for (std::size_t i = 0; i < scene.cylinders.size(); ++i)
+    if (!contains(objects.cylinders, i) || checkCylinder(scene.cylinders[i], i, nullptr))
+      shapes.cylinders.push_back({i, cylinderShape(scene.cylinders[i])});
+  for (std::size_t i = 0; i < scene.boxes.size(); ++i)
+    if (!contains(objects.boxes, i) || checkBox(scene.boxes[i], i, nullptr))
+      shapes.boxes.push_back({i, boxShape(scene.boxes[i])});
+  for (std::size_t i : objects.balls) {
+    if (i >= balls.size()) continue;
+    ErrorList errors(kAll);
+    if (!checkBall(balls[i], i, &errors)) {
+      collect(kBallList, i, errors);
+      continue;
+    }
+    checkBallAgainstStatics(balls[i], i, shapes, errors);
+    collect(kBallList, i, errors);
+    for (std::size_t j = 0; j < balls.size(); ++j) {
+      // A pair of changed balls is looked at once, from its earlier ball.
+      if (j == i || (j < i && contains(objects.balls, j))) continue;
+      if (contains(objects.balls, j) && !checkBall(balls[j], j, nullptr)) continue;
+      const double radiusSum = balls[i].radius + balls[j].radius;
+      const double depth = radiusSum - (balls[i].position - balls[j].position).norm();
+      if (!overlaps(depth, radiusSum)) continue;
+      // Reported on the later ball, as validateScene does.
+      ErrorList pair(kAll);
+      pair.add(overlapError(std::max(i, j), {ValidationSubject::Balls, std::min(i, j)}, depth));
+      collect(kBallList, std::max(i, j), pair);
+    }
+  }
+
+  std::stable_sort(found.begin(), found.end(), [](const Found& a, const Found& b) {
+    return std::tie(a.list, a.index) < std::tie(b.list, b.index);
+  });
+  std::vector<ValidationError> errors;
+  for (std::size_t k = 0; k < found.size() && k < maxErrors; ++k)
+    errors.push_back(std::move(found[k].error));
+  return errors;
+}
+
+}  // namespace carom
