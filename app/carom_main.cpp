@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
   window.show();
   if (!arguments.screenshotPath) window.offerRecovery();
   if (arguments.screenshotPath) {
-    // For the README's pictures: run a while in real time, then save what the window shows.
+    // For the pictures of the README and the user guide: run a while in real time, then save
+    // what the window shows.
     const QString path = *arguments.screenshotPath;
     const double seconds = arguments.runForSeconds;
     window.setRunning(seconds > 0);

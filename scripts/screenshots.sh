@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Takes the README's screenshots of the running program under Xvfb (Mesa's OpenGL).
+# Takes the screenshots of the README and the user guide of the running program under Xvfb (Mesa's OpenGL).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p docs/screenshots

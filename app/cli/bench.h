@@ -1,5 +1,5 @@
 #pragma once
-// `carom-cli bench`: the benchmark scenes of the README, as a table.
+// `carom-cli bench`: the benchmark scenes of docs/benchmarks.md, as a table.
 
 #include "app/cli/cli_arguments.h"
 
