@@ -1,5 +1,7 @@
 #include "sim/io/json_text.h"
 
+#include "sim/model/validation.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -56,6 +58,18 @@ QByteArray numberText(double value) {
   std::string text;
   appendNumber(text, value);
   return QByteArray::fromStdString(text);
+}
+
+QString shortenedText(const QString& text) {
+  return QString::fromStdString(excerpt(text.toStdString()));
+}
+
+QString memberPath(const QString& path, const QString& key) {
+  return path.isEmpty() ? key : path + '.' + key;
+}
+
+QString elementPath(const QString& path, qsizetype index) {
+  return path + '[' + QString::number(index) + ']';
 }
 
 }  // namespace carom::io

@@ -1,5 +1,6 @@
 // The scene file's JSON as both its reader and its writer spell it: the keys of each object
-// (scene_format.h's, as Qt strings) and numbers in their shortest exact form.
+// (scene_format.h's, as Qt strings), numbers in their shortest exact form, and the paths by
+// which messages name a field.
 #pragma once
 
 #include "sim/io/scene_format.h"
@@ -31,5 +32,11 @@ inline const QStringList kBallKeys = keyList(format::kBallKeys);
 // when read back).
 void appendNumber(std::string& out, double value);
 QByteArray numberText(double value);
+
+// The paths that messages name a field by, such as "balls[2].radius".
+QString memberPath(const QString& path, const QString& key);
+QString elementPath(const QString& path, qsizetype index);
+// Text of the file as a message shows it: its start only when it is long (validation.h).
+QString shortenedText(const QString& text);
 
 }  // namespace carom::io

@@ -3,6 +3,7 @@
 #include "sim/core/tolerances.h"
 #include "sim/io/atomic_file.h"
 #include "sim/io/file_names.h"
+#include "sim/io/json_scan.h"
 #include "sim/io/json_text.h"
 #include "sim/io/scene_format.h"
 #include "sim/io/scene_stream_reader.h"
@@ -76,19 +77,6 @@ QString quoted(const QString& text) {
   return '"' + text + '"';
 }
 
-// Text of the file as a message shows it: its start only when it is long (validation.h).
-QString shortened(const QString& text) {
-  return QString::fromStdString(excerpt(text.toStdString()));
-}
-
-QString member(const QString& path, const QString& key) {
-  return path.isEmpty() ? key : path + '.' + key;
-}
-
-QString element(const QString& path, qsizetype index) {
-  return path + '[' + QString::number(index) + ']';
-}
-
 std::string compactJson(const QJsonObject& object) {
   return QJsonDocument(object).toJson(QJsonDocument::Compact).toStdString();
 }
@@ -100,7 +88,7 @@ class ObjectReader {
       : object_(object), path_(std::move(path)), knownKeys_(knownKeys) {}
 
   bool has(const QString& key) const { return object_.contains(key); }
-  QString pathOf(const QString& key) const { return member(path_, key); }
+  QString pathOf(const QString& key) const { return memberPath(path_, key); }
 
   QJsonValue required(const QString& key) const {
     if (!has(key)) fail(pathOf(key), "is required but missing");
@@ -127,7 +115,7 @@ class ObjectReader {
       fail(path, expected + "an array of " + QString::number(array.size()) +
                      (array.size() == 1 ? " value" : " values"));
     Eigen::Matrix<double, Count, 1> result;
-    for (int k = 0; k < Count; ++k) result[k] = toNumber(array[k], element(path, k));
+    for (int k = 0; k < Count; ++k) result[k] = toNumber(array[k], elementPath(path, k));
     return result;
   }
   Vec3 vector(const QString& key) const { return numbers<3>(key); }
@@ -163,8 +151,9 @@ class ObjectReader {
       fail(path, QString("must have at most %1 entries (got %2)").arg(limit).arg(array.size()));
     for (qsizetype i = 0; i < array.size(); ++i) {
       const QJsonValue item = array[i];
-      if (!item.isObject()) fail(element(path, i), "expected an object, got " + describeType(item));
-      readItem(item.toObject(), element(path, i));
+      if (!item.isObject())
+        fail(elementPath(path, i), "expected an object, got " + describeType(item));
+      readItem(item.toObject(), elementPath(path, i));
     }
   }
 
@@ -203,7 +192,7 @@ int checkFormatAndVersion(const ObjectReader& top) {
   if (format.toString() != kFormatName)
     fail("format",
          "expected " + quoted(kFormatName) + ", got " +
-             (format.isString() ? quoted(shortened(format.toString())) : describeType(format)));
+             (format.isString() ? quoted(shortenedText(format.toString())) : describeType(format)));
 
   const QJsonValue version = top.required("version");
   if (!version.isDouble()) fail("version", "expected an integer, got " + describeType(version));
@@ -229,7 +218,7 @@ Value readName(const ObjectReader& reader, const QString& key, Value fallback,
   for (std::string_view entry : allNames())
     valid << QString::fromUtf8(entry.data(), static_cast<qsizetype>(entry.size()));
   fail(reader.pathOf(key),
-       "unknown " + what + ' ' + quoted(shortened(name)) + "; use one of: " + valid.join(", "));
+       "unknown " + what + ' ' + quoted(shortenedText(name)) + "; use one of: " + valid.join(", "));
 }
 
 // The methods a file may name: the physics' own, and auto.
@@ -325,142 +314,6 @@ Scene readScene(const QJsonObject& object) {
 
 QString errorLine(const QString& sourceName, const QString& path, const QString& what) {
   return sourceName + ": " + (path.isEmpty() ? what : path + ": " + what);
-}
-
-// 1-based line and column (in characters) of a byte offset into UTF-8 text.
-std::pair<int, int> lineAndColumn(const QByteArray& text, qsizetype offset) {
-  offset = std::clamp<qsizetype>(offset, 0, text.size());
-  int line = 1;
-  int column = 1;
-  for (qsizetype i = 0; i < offset; ++i) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte == '\n') {
-      ++line;
-      column = 1;
-    } else if ((byte & 0xC0) != 0x80) {  // not a UTF-8 continuation byte
-      ++column;
-    }
-  }
-  return {line, column};
-}
-
-// What a document holds, counted before it is parsed: an upper bound on its values (one more
-// than its commas outside strings) and the elements of each list at the top, so that a document
-// beyond the limits is refused before its tree, tens of bytes a value, is built.
-struct DocumentCounts {
-  qint64 values = 1;
-  SceneCounts lists;
-};
-
-DocumentCounts countDocument(const QByteArray& json) {
-  DocumentCounts counts;
-  std::size_t* list = nullptr;  // the top-level list being counted
-  int depth = 0;
-  bool expectingElement = false;
-  QString key;  // the last string at depth 1: the key of the value that follows it
-  bool versionOne = false;
-  char previous = 0;  // the last character outside strings and white space
-  for (qsizetype i = 0; i < json.size(); ++i) {
-    const char c = json[i];
-    if (c == ' ' || c == '\n' || c == '\r' || c == '\t') continue;
-    if (depth == 2 && list && expectingElement && c != ']') {
-      ++*list;
-      expectingElement = false;
-    }
-    if (c == '"') {
-      const qsizetype start = i;
-      for (++i; i < json.size() && json[i] != '"'; ++i)
-        if (json[i] == '\\') ++i;
-      previous = '"';
-      if (depth != 1) continue;
-      const QByteArray token = json.mid(start, i - start + 1);
-      key = token.contains('\\')
-                ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
-                : QString::fromUtf8(token.mid(1, token.size() - 2));
-    } else if (c == ',') {
-      ++counts.values;
-      if (depth == 2) expectingElement = true;
-    } else if (c == '{' || c == '[') {
-      ++depth;
-      if (depth == 2 && c == '[') {
-        list = key == "balls"       ? &counts.lists.balls
-               : key == "planes"    ? &counts.lists.planes
-               : key == "cylinders" ? &counts.lists.cylinders
-               : key == "boxes"     ? &counts.lists.boxes
-                                    : nullptr;
-        expectingElement = true;
-      }
-    } else if (c == '}' || c == ']') {
-      if (depth == 2) list = nullptr;
-      --depth;
-    } else if (depth == 1 && key == "version" && previous == ':' && c == '1' &&
-               (i + 1 == json.size() || !std::isdigit(static_cast<unsigned char>(json[i + 1])))) {
-      versionOne = true;
-    }
-    previous = c;
-  }
-  // Version 1 had no boxes: there "boxes" is a key it does not know, kept as it is.
-  if (versionOne) counts.lists.boxes = 0;
-  return counts;
-}
-
-// The path of the first key that appears twice in one object, such as "balls[2].radius".
-// QJsonDocument keeps the last of repeated keys without a word; a scene that says two things
-// about one field is refused instead. `json` is valid JSON here, so the scan only follows
-// containers, commas, colons and strings.
-std::optional<QString> duplicateKeyPath(const QByteArray& json) {
-  struct Container {
-    bool object = false;
-    QSet<QString> keys;  // objects: keys seen so far
-    QString key;         // objects: the key whose value comes next
-    bool expectingKey = true;
-    qsizetype index = 0;  // arrays: the element that comes next
-  };
-  std::vector<Container> open;
-  // Paths are spelled only for the answer: a large scene has a container per ball and vector.
-  const auto pathTo = [&open](std::size_t depth) {
-    QString path;
-    for (std::size_t d = 0; d < depth; ++d)
-      path = open[d].object ? member(path, shortened(open[d].key)) : element(path, open[d].index);
-    return path;
-  };
-  for (qsizetype i = 0; i < json.size(); ++i) {
-    const char c = json[i];
-    if (c == '{' || c == '[') {
-      Container container;
-      container.object = c == '{';
-      open.push_back(std::move(container));
-    } else if (c == '}' || c == ']') {
-      open.pop_back();
-    } else if (c == ',' && !open.empty()) {
-      if (open.back().object)
-        open.back().expectingKey = true;
-      else
-        ++open.back().index;
-    } else if (c == ':' && !open.empty()) {
-      open.back().expectingKey = false;
-    } else if (c == '"') {
-      const qsizetype start = i;
-      bool escapes = false;
-      for (++i; json[i] != '"'; ++i) {
-        if (json[i] == '\\') {
-          escapes = true;
-          ++i;
-        }
-      }
-      if (open.empty() || !open.back().object || !open.back().expectingKey) continue;
-      const QByteArray token = json.mid(start, i - start + 1);
-      // Escapes (\u0061 is "a") are decoded by the JSON parser itself, one string at a time.
-      const QString key = escapes
-                              ? QJsonDocument::fromJson('[' + token + ']').array().at(0).toString()
-                              : QString::fromUtf8(token.mid(1, token.size() - 2));
-      Container& object = open.back();
-      if (object.keys.contains(key)) return member(pathTo(open.size() - 1), shortened(key));
-      object.keys.insert(key);
-      object.key = key;
-    }
-  }
-  return std::nullopt;
 }
 
 SceneLoadResult validated(Scene scene, const QString& sourceName) {
