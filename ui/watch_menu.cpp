@@ -18,20 +18,6 @@ QString kindName(WatchKind kind) {
   return QString::fromUtf8(name.data(), name.size());
 }
 
-bool& enabled(WatchSettings& settings, WatchKind kind) {
-  switch (kind) {
-    case WatchKind::NonFinite:
-      return settings.nonFinite;
-    case WatchKind::EnergyRise:
-      return settings.energyRise;
-    case WatchKind::Escape:
-      return settings.escape;
-    case WatchKind::Penetration:
-      break;
-  }
-  return settings.penetration;
-}
-
 // The remembered settings; the defaults for any that are missing or that a hand-edited file
 // made invalid.
 WatchSettings loadSettings() {
@@ -39,8 +25,8 @@ WatchSettings loadSettings() {
   WatchSettings settings;
   for (int k = 0; k < kWatchKindCount; ++k) {
     const WatchKind kind = WatchKind(k);
-    enabled(settings, kind) =
-        stored.value(key("on/") + kindName(kind), enabled(settings, kind)).toBool();
+    settings.enabled(kind) =
+        stored.value(key("on/") + kindName(kind), settings.enabled(kind)).toBool();
   }
   settings.energyRiseTolerance =
       stored.value(key("energyRise"), settings.energyRiseTolerance).toDouble();
@@ -59,7 +45,7 @@ WatchSettings loadSettings() {
 void saveSettings(WatchSettings settings) {
   QSettings stored;
   for (int k = 0; k < kWatchKindCount; ++k)
-    stored.setValue(key("on/") + kindName(WatchKind(k)), enabled(settings, WatchKind(k)));
+    stored.setValue(key("on/") + kindName(WatchKind(k)), settings.enabled(WatchKind(k)));
   stored.setValue(key("energyRise"), settings.energyRiseTolerance);
   stored.setValue(key("escape"), settings.escapeTolerance);
   stored.setValue(key("penetration"), settings.penetrationTolerance);
@@ -76,7 +62,7 @@ WatchMenu::WatchMenu(QWidget* parent) : QMenu(parent), settings_(loadSettings())
     action->setCheckable(true);
     connect(action, &QAction::triggered, this, [this, kind](bool on) {
       WatchSettings settings = settings_;
-      enabled(settings, kind) = on;
+      settings.enabled(kind) = on;
       setSettings(settings);
     });
     checks_[k] = action;
@@ -107,7 +93,7 @@ void WatchMenu::editTolerances() {
 
 void WatchMenu::showSettings() {
   WatchSettings settings = settings_;
-  for (int k = 0; k < kWatchKindCount; ++k) checks_[k]->setChecked(enabled(settings, WatchKind(k)));
+  for (int k = 0; k < kWatchKindCount; ++k) checks_[k]->setChecked(settings.enabled(WatchKind(k)));
 }
 
 void WatchMenu::changeEvent(QEvent* event) {

@@ -43,24 +43,10 @@ ParseResult success(Command::Kind kind) {
 std::optional<QString> turnChecksOff(const QString& list, WatchSettings& settings) {
   for (const QString& word : list.split(',')) {
     bool known = false;
-    for (int k = 0; k < kWatchKindCount; ++k) {
-      const std::string_view name = watchKindName(WatchKind(k));
-      if (word != QString::fromUtf8(name.data(), name.size())) continue;
+    for (const WatchCheck& check : kWatchChecks) {
+      if (word != QString::fromUtf8(check.name.data(), check.name.size())) continue;
       known = true;
-      switch (WatchKind(k)) {
-        case WatchKind::NonFinite:
-          settings.nonFinite = false;
-          break;
-        case WatchKind::EnergyRise:
-          settings.energyRise = false;
-          break;
-        case WatchKind::Escape:
-          settings.escape = false;
-          break;
-        case WatchKind::Penetration:
-          settings.penetration = false;
-          break;
-      }
+      settings.*check.on = false;
     }
     if (!known) return word;
   }

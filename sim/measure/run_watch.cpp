@@ -95,44 +95,24 @@ std::string describe(const WatchEvent& e) {
 
 }  // namespace
 
-std::string_view watchKindName(WatchKind kind) {
-  switch (kind) {
-    case WatchKind::NonFinite:
-      return "non-finite";
-    case WatchKind::EnergyRise:
-      return "energy-rise";
-    case WatchKind::Escape:
-      return "escape";
-    case WatchKind::Penetration:
-      return "penetration";
-  }
-  return {};
+bool WatchSettings::enabled(WatchKind kind) const {
+  return this->*watchCheck(kind).on;
 }
 
-bool WatchSettings::enabled(WatchKind kind) const {
-  switch (kind) {
-    case WatchKind::NonFinite:
-      return nonFinite;
-    case WatchKind::EnergyRise:
-      return energyRise;
-    case WatchKind::Escape:
-      return escape;
-    case WatchKind::Penetration:
-      return penetration;
-  }
-  return false;
+bool& WatchSettings::enabled(WatchKind kind) {
+  return this->*watchCheck(kind).on;
 }
 
 std::vector<ValidationError> validateWatchSettings(const WatchSettings& settings) {
   std::vector<ValidationError> errors;
-  const auto check = [&](const char* path, double value) {
+  const auto check = [&](std::string_view path, double value) {
     if (!std::isfinite(value) || value < 0.0 || value > kMaxWatchTolerance)
-      errors.push_back({path, "must be a number from 0 to " + number(kMaxWatchTolerance) +
-                                  " (got " + number(value) + ")"});
+      errors.push_back({std::string(path), "must be a number from 0 to " +
+                                               number(kMaxWatchTolerance) + " (got " +
+                                               number(value) + ")"});
   };
-  check("watch.energyRise", settings.energyRiseTolerance);
-  check("watch.escape", settings.escapeTolerance);
-  check("watch.penetration", settings.penetrationTolerance);
+  for (const WatchCheck& watched : kWatchChecks)
+    if (watched.tolerance) check(watched.tolerancePath, settings.*watched.tolerance);
   return errors;
 }
 

@@ -18,8 +18,6 @@ class StaticBins;
 
 enum class WatchKind { NonFinite, EnergyRise, Escape, Penetration };
 inline constexpr int kWatchKindCount = 4;
-// Keys as on the command line and in settings ("non-finite", "energy-rise", ...).
-std::string_view watchKindName(WatchKind kind);
 
 namespace watch_default {
 // Energy may rise by this fraction of the run's energy scale (RunWatch::energyScale) above its
@@ -50,9 +48,37 @@ struct WatchSettings {
   bool penetration = true;
   double penetrationTolerance = watch_default::kPenetration;
   bool enabled(WatchKind kind) const;
+  bool& enabled(WatchKind kind);
   bool anyEnabled() const { return nonFinite || energyRise || escape || penetration; }
   friend bool operator==(const WatchSettings&, const WatchSettings&) = default;
 };
+
+// The checks, one row each in WatchKind's order: the key on the command line and in settings,
+// the switch that turns the check on and its tolerance's field (a non-finite number has none)
+// and path. The watch, the CLI and the window all read them from here.
+struct WatchCheck {
+  WatchKind kind;
+  std::string_view name;
+  bool WatchSettings::*on;
+  double WatchSettings::*tolerance;
+  std::string_view tolerancePath;
+};
+inline constexpr WatchCheck kWatchChecks[kWatchKindCount] = {
+    {WatchKind::NonFinite, "non-finite", &WatchSettings::nonFinite, nullptr, {}},
+    {WatchKind::EnergyRise, "energy-rise", &WatchSettings::energyRise,
+     &WatchSettings::energyRiseTolerance, "watch.energyRise"},
+    {WatchKind::Escape, "escape", &WatchSettings::escape, &WatchSettings::escapeTolerance,
+     "watch.escape"},
+    {WatchKind::Penetration, "penetration", &WatchSettings::penetration,
+     &WatchSettings::penetrationTolerance, "watch.penetration"},
+};
+inline constexpr const WatchCheck& watchCheck(WatchKind kind) {
+  return kWatchChecks[static_cast<int>(kind)];
+}
+// Keys as on the command line and in settings ("non-finite", "energy-rise", ...).
+inline constexpr std::string_view watchKindName(WatchKind kind) {
+  return watchCheck(kind).name;
+}
 
 // The tolerances' limits: each finite, at least 0 and at most this.
 inline constexpr double kMaxWatchTolerance = 1e6;
