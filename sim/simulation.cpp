@@ -1,10 +1,10 @@
 #include "sim/simulation.h"
 #include "sim/core/prefault.h"
 
+#include "sim/dynamics/energy.h"
 #include "sim/dynamics/grab_sweep.h"
 #include "sim/dynamics/rest_policy.h"
 #include "sim/dynamics/stepper.h"
-#include "sim/measure/measures.h"
 
 #include <cmath>
 

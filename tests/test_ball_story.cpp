@@ -1,7 +1,7 @@
 // The Ball story's record of watched balls: what it keeps, how it forgets, and the state it
 // reports at a moment, with made-up times (no window, no simulation).
 
-#include "sim/measure/measures.h"
+#include "sim/dynamics/energy.h"
 #include "ui/docks/ball_story.h"
 
 #include <QtTest>

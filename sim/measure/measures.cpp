@@ -39,29 +39,6 @@ OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& pos
   return report;
 }
 
-double ballKineticEnergy(double mass, const Vec3& velocity) {
-  return 0.5 * mass * velocity.squaredNorm();
-}
-
-double ballPotentialEnergy(double mass, const Vec3& gravity, const Vec3& position) {
-  return -mass * gravity.dot(position);
-}
-
-double kineticEnergy(const Bodies& bodies, const std::vector<Vec3>& velocities) {
-  double sum = 0.0;
-  for (int i = 0; i < static_cast<int>(velocities.size()); ++i)
-    sum += ballKineticEnergy(bodies.mass[i], velocities[i]);
-  return sum;
-}
-
-double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
-                       const std::vector<Vec3>& positions) {
-  double sum = 0.0;
-  for (int i = 0; i < static_cast<int>(positions.size()); ++i)
-    sum += ballPotentialEnergy(bodies.mass[i], gravity, positions[i]);
-  return sum;
-}
-
 double distributionDistance(std::vector<double> a, std::vector<double> b) {
   if (a.empty() || b.empty()) return a.empty() && b.empty() ? 0.0 : 1.0;
   // A run gone wrong may hold NaN, which sorting cannot order: it counts as the largest value.

@@ -14,14 +14,6 @@ struct OverlapReport {
 
 OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions);
 
-double kineticEnergy(const Bodies& bodies, const std::vector<Vec3>& velocities);
-// Relative to the origin: the sum of -m g . p.
-double potentialEnergy(const Bodies& bodies, const Vec3& gravity,
-                       const std::vector<Vec3>& positions);
-// One ball's share of the two sums above.
-double ballKineticEnergy(double mass, const Vec3& velocity);
-double ballPotentialEnergy(double mass, const Vec3& gravity, const Vec3& position);
-
 // The Kolmogorov-Smirnov distance of two samples: the largest gap between their empirical
 // distribution functions, 0 (the same distribution) to 1 (no overlap). Takes copies to sort.
 double distributionDistance(std::vector<double> a, std::vector<double> b);

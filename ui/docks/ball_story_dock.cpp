@@ -1,6 +1,6 @@
 #include "ui/docks/ball_story_dock.h"
 
-#include "sim/measure/measures.h"
+#include "sim/dynamics/energy.h"
 #include "ui/docks/plot_axis.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/scene_document.h"

@@ -1,6 +1,6 @@
 #include "ui/run/simulation_worker.h"
 
-#include "sim/measure/measures.h"
+#include "sim/dynamics/energy.h"
 #include "sim/measure/run_recording.h"
 #include "sim/simulation.h"
 
