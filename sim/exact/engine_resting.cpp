@@ -99,12 +99,12 @@ bool EventEngine::slow(int k) const {
              tolerance::kSettleSpeedFactor * restSpeed_[k];
 }
 
-// The gap and unit normal (towards ball i at `centre`) of a support: a static shape (its slot in
-// statics_) or another ball.
+// The gap and unit normal (towards ball i at `centre`) of a support: a static shape or another
+// ball.
 EventEngine::SupportGap EventEngine::supportGap(int i, const Support& support,
                                                 const Vec3& centre) const {
   if (support.ball < 0) {
-    const StaticContact contact = staticContact(i, statics_[support.staticSlot], centre);
+    const StaticContact contact = staticContact(i, support.shape, centre);
     return {contact.normal, contact.gap};
   }
   const int k = support.ball;
@@ -122,10 +122,9 @@ EventEngine::NearContacts EventEngine::nearContacts(int i, const Vec3& centre) c
     (moving ? near.moving : near.supports).push_back(support);
     if (!moving) near.normals.push_back(gap.normal);
   };
-  const Particle& p = particles_[i];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) consider({s, -1}, false);
+  for (const StaticRef shape : cells_.staticsNear(i)) consider({.shape = shape}, false);
   forEachNeighbour(i, [&](int k) {
-    consider({-1, k},
+    consider({.ball = k},
              particles_[k].held ||
                  (!particles_[k].resting &&
                   tracks_[k].motion.velocityAt(now_, accelerationOf(k)).norm() >= restSpeed_[i]));
@@ -281,9 +280,8 @@ std::optional<Vec3> EventEngine::lowestPocket(int i, const Vec3& centre,
 bool EventEngine::clearAt(int i, const Vec3& centre) const {
   const double r = bodies_.radius[i];
   const double touching = tolerance::kTouchFraction * r;
-  const Particle& p = particles_[i];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s)
-    if (staticContact(i, statics_[s], centre).gap < -touching) return false;
+  for (const StaticRef shape : cells_.staticsNear(i))
+    if (staticContact(i, shape, centre).gap < -touching) return false;
   bool clear = true;
   forEachNeighbour(i, [&](int k) {
     const Vec3 d = centre - tracks_[k].motion.positionAt(now_, accelerationOf(k));
@@ -312,9 +310,8 @@ bool EventEngine::clusterHolds(int i, int freed) const {
   for (std::size_t c = 0; c < members.size(); ++c) {
     const int k = members[c];
     const double rk = bodies_.radius[k];
-    const Particle& p = particles_[k];
-    for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-      const auto [n, gap, restitution] = staticContact(k, statics_[s], centres[c]);
+    for (const StaticRef shape : cells_.staticsNear(k)) {
+      const auto [n, gap, restitution] = staticContact(k, shape, centres[c]);
       if (gap <= tolerance::kSupportGapFraction * rk)
         contacts.push_back({static_cast<int>(c), -1, n});
     }

@@ -26,7 +26,8 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
       pathAcceleration_(pathAcceleration),
       straightPaths_(pathAcceleration.isZero()),
       collapseSpeed_(collapseSpeed),
-      now_(now) {
+      now_(now),
+      slides_(bodies, gravity, pathAcceleration) {
   const int n = bodies.ballCount();
   resizePrefaulted(particles_, n);
   resizePrefaulted(tracks_, n);
@@ -44,31 +45,6 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
     slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
-  for (int k = 0; k < static_cast<int>(bodies.planes.size()); ++k)
-    slideSurfaces_.push_back({bodies.planes[k], {StaticKind::Plane, k}});
-  for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k) {
-    const BoxShape& box = bodies.boxes[k];
-    for (int axis = 0; axis < 3; ++axis)
-      for (const double side : {-1.0, 1.0}) {
-        const Vec3 normal = side * box.axes.col(axis);
-        slideSurfaces_.push_back(
-            {{normal, normal.dot(box.center) + box.half[axis]}, {StaticKind::Box, k}, axis});
-      }
-  }
-  firstCap_ = static_cast<int>(slideSurfaces_.size());
-  for (int k = 0; k < static_cast<int>(bodies.cylinders.size()); ++k) {
-    const CylinderShape& cylinder = bodies.cylinders[k];
-    for (const double side : {-1.0, 1.0}) {
-      const Vec3 normal = side * cylinder.axis;
-      slideSurfaces_.push_back(
-          {{normal, normal.dot(cylinder.point) + cylinder.halfLength}, {StaticKind::Cylinder, k}});
-    }
-  }
-  for (const SlideSurface& surface : slideSurfaces_) {
-    const Vec3& n = surface.plane.normal;
-    slideAcceleration_.push_back(pathAcceleration_ - pathAcceleration_.dot(n) * n);
-    slideGravity_.push_back(gravity_ - gravity_.dot(n) * n);
-  }
   creaseLine_.resize(n);
   creaseAcceleration_.resize(n);
   // Straight sweeps under gravity are the only paths that are not the true ones.
@@ -78,9 +54,20 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     energyExcess_.assign(n, 0.0);
     for (int i = 0; i < n; ++i) recordEnergy(i);
   }
-  buildGrid();
-  buildStaticLists();
-  for (int i = 0; i < n; ++i) noteStatics(i);
+  cells_.build(bodies_, positions());
+  predictAll();
+}
+
+std::vector<Vec3> EventEngine::positions() const {
+  std::vector<Vec3> at(particles_.size());
+  for (int i = 0; i < static_cast<int>(particles_.size()); ++i)
+    at[i] = tracks_[i].motion.positionAt(now_, accelerationOf(i));
+  return at;
+}
+
+void EventEngine::rebuildCellsIfCrowded() {
+  if (!cells_.crowded()) return;
+  cells_.build(bodies_, positions());
   predictAll();
 }
 
@@ -111,7 +98,7 @@ void EventEngine::predict(int i) {
     predictions_[i].contact = {};
     findStaticContact(i, path, ball.time);
     if (ball.time < predictions_[i].contact.time) predictions_[i].contact = ball;
-    findCrossing(i, path);
+    predictions_[i].crossing = cells_.nextCrossing(i, path, now_, horizon_, straightPaths_);
   }
   schedule(i);
 }
@@ -124,8 +111,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
       until < kNever ? until + 1e-9 * (until - now_) + std::numeric_limits<double>::min() : kNever;
   const double r = bodies_.radius[i];
   const Particle& p = particles_[i];
-  for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
-    const StaticRef ref = statics_[s];
+  for (const StaticRef ref : cells_.staticsNear(i)) {
     if (slidesAgainst(p, ref)) continue;  // it slides along, never into it
     const double horizon = std::min({best.time, horizon_, bound}) - now_;
     double t = kNever;
@@ -145,7 +131,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
     }
     if (t < horizon) best = {now_ + t, kind, ref.index, 0};
   }
-  if (p.slidePlane >= 0 && slideSurfaces_[p.slidePlane].owner.kind != StaticKind::Plane)
+  if (p.slidePlane >= 0 && slides_.surface(p.slidePlane).owner.kind != StaticKind::Plane)
     findSlideEnd(i, path);
 }
 
@@ -193,59 +179,6 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
     best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
 }
 
-void EventEngine::findCrossing(int i, const BallPath& path) {
-  Crossing& next = predictions_[i].crossing;
-  // A crossing closer than the time's resolution comes an ulp later rather than now: the ball
-  // has not reached the face yet, and one taken now found the ball back beyond the face it had
-  // crossed and crossed again, to and fro for ever at one instant (at 5e53 s, gravity switched
-  // on brought a ball back to a face 1e49 m below it in 1e23 s).
-  const auto timeOf = [&](double t) {
-    const double time = now_ + t;
-    return t > 0.0 && time <= now_ ? std::nextafter(now_, kNever) : time;
-  };
-  // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
-  const Particle& p = particles_[i];
-  const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
-    const CellGrid& grid = levels_[l].grid;
-    const auto lowerFace = [&](int a) {
-      return lattice ? grid.latticeLowerFace(a, c[a], latticeMargin(p.level, l, a))
-                     : grid.lowerFace(a, c[a]);
-    };
-    const auto upperFace = [&](int a) {
-      return lattice ? grid.latticeUpperFace(a, c[a], latticeMargin(p.level, l, a))
-                     : grid.upperFace(a, c[a]);
-    };
-    const auto level = static_cast<std::int8_t>(l);
-    if (straightPaths_) {
-      for (int a = 0; a < 3; ++a) {
-        const double t =
-            straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
-        const double time = timeOf(t);
-        if (time < std::min(next.time, horizon_))
-          next = {time, static_cast<std::int8_t>(a),
-                  static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
-      }
-      return;
-    }
-    for (int a = 0; a < 3; ++a) {
-      for (int direction : {1, -1}) {
-        const double face = direction > 0 ? upperFace(a) : lowerFace(a);
-        const double horizon = std::min(next.time, horizon_) - now_;
-        const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
-                                              path.acceleration[a], face, direction > 0, horizon);
-        if (t < horizon)
-          next = {timeOf(t), static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
-                  level};
-      }
-    }
-  };
-  findIn(p.level, p.coords, false);
-  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
-    if (l > p.level) findIn(l, levelCoords(i, l), false);
-    if (l < p.level && followsFiner(p.level, l)) findIn(l, levelCoords(i, l), true);
-  }
-}
-
 void EventEngine::schedule(int i) {
   queue_.set(i, std::min(predictions_[i].contact.time, predictions_[i].crossing.time));
 }
@@ -265,58 +198,14 @@ void EventEngine::warnNeighbours(int i) {
 
 void EventEngine::cross(int i, RunStats& stats) {
   ++stats.cellCrossings;
-  Particle& p = particles_[i];
-  const Crossing crossing = predictions_[i].crossing;
-  const int crossed = crossing.level;
-  const bool own = crossed == p.level;
-  const int axis = crossing.axis;
-  CellGrid::Coords coords = own ? p.coords : levelCoords(i, crossed);
-  coords[axis] += crossing.direction;
+  const CellLevels::Crossing crossing = predictions_[i].crossing;
   const BallPath path = pathAt(i, now_);
   // The path is unchanged, so the contact already predicted stays valid: only the statics of the
   // new cell and the balls in the cells that just came into reach can bring it forward.
-  if (own) {
-    moveToCell(i, coords);
-    findStaticContact(i, path);
-  } else {
-    levelCoords(i, crossed) = coords;
-  }
-  // What came into reach in the crossed level: the layer of cells ahead of its block, or, in a
-  // finer level it follows, the face of its box ahead.
-  CellGrid::Coords from = coords, to = coords;
-  if (crossed < p.level) {
-    // The box's face ahead: the lattice cell it is now, moved by its reach.
-    CellGrid::Coords ahead = coords;
-    ahead[axis] += crossing.direction * boxReach(p.level, crossed)[axis];
-    std::tie(from, to) = followerBox(i, crossed, ahead);
-    from[axis] = to[axis] = std::clamp(ahead[axis], 0, levels_[crossed].grid.counts()[axis] - 1);
-  } else {
-    for (int a = 0; a < 3; ++a) {
-      --from[a];
-      ++to[a];
-    }
-    (crossing.direction > 0 ? from : to)[axis] = (crossing.direction > 0 ? to : from)[axis];
-  }
-  findBallContacts(i, path, [&](auto&& visit) {
-    const auto visitCell = [&](int cell) { members_.forEachIn(cell, visit); };
-    forEachCellIn(crossed, from, to, visitCell);
-    if (!own) return;
-    for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
-      if (l < p.level && !followsFiner(p.level, l)) {
-        // The smaller balls under the new layer of its own cells.
-        forEachFinerCell(l, p.level, from, to, visitCell);
-      } else if (l > p.level && followsFiner(l, p.level)) {
-        // Larger balls that follow this level: it may have come into their boxes.
-        levels_[l].grid.forEachNeighbourCell(levelCoords(i, l), [&](int cell) {
-          members_.forEachIn(levels_[l].firstCell + cell, [&](int k) {
-            if (inFollowersBox(i, k)) visit(k);
-          });
-        });
-      }
-    }
-  });
-  predictions_[i].crossing = {};
-  findCrossing(i, path);
+  if (cells_.cross(i, crossing)) findStaticContact(i, path);
+  findBallContacts(i, path,
+                   [&](auto&& visit) { cells_.forEachBallComingIntoReach(i, crossing, visit); });
+  predictions_[i].crossing = cells_.nextCrossing(i, path, now_, horizon_, straightPaths_);
   schedule(i);
 }
 
@@ -356,7 +245,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
         return;
       }
       moveTo(i, now_);
-      collideWithStatic(i, ref, surfaceAt(i, ref), stats, log);
+      collideWithStatic(i, ref, slides_.surfaceAt(tracks_[i].motion.position, ref), stats, log);
       return;
     }
     case EventKind::Ball: {
@@ -569,8 +458,7 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   const Particle& p = particles_[i];
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
   touchedStatics_.clear();
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const StaticRef ref = statics_[s];
+  for (const StaticRef ref : cells_.staticsNear(i)) {
     if (slidesAgainst(p, ref)) continue;  // see updateSlide
     const auto [n, gap, restitution] = staticContact(i, ref);
     if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.kind});
@@ -621,19 +509,6 @@ void EventEngine::notePenetration(double overlap, RunStats& stats) const {
   stats.maxPenetration = std::max(stats.maxPenetration, overlap);
 }
 
-std::string EventEngine::gridSummary() const {
-  std::string grid = levels_.size() > 1 ? "cell grids" : "cell grid";
-  for (std::size_t l = 0; l < levels_.size(); ++l) {
-    const CellGrid::Coords& c = levels_[l].grid.counts();
-    grid += (l > 0 ? ", " : " ") + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
-            std::to_string(c[2]);
-  }
-  if (levels_.size() > 1) grid += " (" + std::to_string(levels_.size()) + " ball size classes)";
-  if (sharedStatics_)
-    return grid + ", all " + std::to_string(statics_.size()) + " static shapes in every cell";
-  return grid + ", " + std::to_string(statics_.size()) + " static-shape entries in cells";
-}
-
 BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
   const Motion& m = tracks_[ball].motion;
@@ -668,12 +543,9 @@ std::size_t EventEngine::memoryBytes() const {
   return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
          carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
          carom::memoryBytes(energy_) + carom::memoryBytes(energyExcess_) +
-         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) +
-         carom::memoryBytes(slideSurfaces_) + carom::memoryBytes(slideAcceleration_) +
-         carom::memoryBytes(slideGravity_) + carom::memoryBytes(creaseLine_) +
-         carom::memoryBytes(creaseAcceleration_) + members_.memoryBytes() +
-         carom::memoryBytes(levelCoords_) + carom::memoryBytes(levels_) +
-         carom::memoryBytes(staticStart_) + carom::memoryBytes(statics_) + queue_.memoryBytes();
+         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() +
+         carom::memoryBytes(creaseLine_) + carom::memoryBytes(creaseAcceleration_) +
+         cells_.memoryBytes() + queue_.memoryBytes();
 }
 
 }  // namespace carom

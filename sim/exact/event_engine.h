@@ -4,21 +4,10 @@
 // earliest is processed, only the balls it changed are predicted again, and predictions that
 // involved a ball changed since are dropped when their time comes (collision counters).
 //
-// Its cells and their static shapes are in engine_cells.cpp, its sliding and its rest decisions
-// in engine_sliding.cpp and engine_resting.cpp.
-//
-// Balls of very different sizes live in grids of their own (levels, by size class): cells sized
-// by the largest ball of all would put thousands of small balls in one cell. A ball finds the
-// larger balls it may touch in the cells of their levels around it, and the smaller ones in
-// their levels' cells under its own level's block of 3x3x3 cells (Ogarko and Luding, "A fast
-// multilevel algorithm for contact detection of arbitrarily polydisperse objects", 2012). It
-// follows its position in every larger level's grid by crossing events, as in its own.
-//
-// A ball at least eight times larger than another level's balls follows its cell in that
-// level's grid too, and finds them in the box of cells its own size around it rather than under
-// its block, which is 27 times the volume: every collision of a boulder ploughing through sand
-// predicts it again against every grain so found. A grain then looks for boulders in their
-// level's block around it at each of its own crossings.
+// Its parts: the cells, which find a ball's neighbours and static shapes (CellLevels, the broad
+// phase); the surfaces a ball may slide on (SlideSurfaces) and the sliding itself
+// (engine_sliding.cpp, where friction's contact phases will go); the rest decisions
+// (engine_resting.cpp); the held ball (HeldBall, engine_grab.cpp).
 //
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
@@ -26,12 +15,14 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/grab.h"
 #include "sim/dynamics/run_stats.h"
-#include "sim/exact/cell_grid.h"
+#include "sim/exact/cell_levels.h"
 #include "sim/exact/event_queue.h"
+#include "sim/exact/held_ball.h"
+#include "sim/exact/slide_surfaces.h"
+#include "sim/exact/static_ref.h"
 #include "sim/geometry/contact_time.h"
 #include "sim/geometry/motion.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -57,7 +48,7 @@ class EventEngine {
   double now() const { return now_; }
   int ballCount() const { return static_cast<int>(particles_.size()); }
   // The grid in use, for run reports ("cell grid 20x20x20, 8000 cells").
-  std::string gridSummary() const;
+  std::string gridSummary() const { return cells_.summary(); }
   BallState stateOf(int ball) const;
   std::vector<BallState> state() const;
 
@@ -73,12 +64,8 @@ class EventEngine {
   void hold(int i, const Vec3& velocity, RunStats& stats);
   void release(const Vec3& velocity);
   void place(const Vec3& position);
-  int held() const { return held_; }
-  std::optional<GrabStop> takeGrabStop() {
-    std::optional<GrabStop> stop;
-    stop.swap(grabStop_);
-    return stop;
-  }
+  int held() const { return held_.ball(); }
+  std::optional<GrabStop> takeGrabStop() { return held_.takeStop(); }
 
   // The memory the engine holds, in bytes.
   std::size_t memoryBytes() const;
@@ -91,16 +78,15 @@ class EventEngine {
     Motion motion;
     double radius;
   };
+  // A ball's state beside its path (its cell is the CellLevels').
   struct Particle {
-    CellGrid::Coords coords{};  // in its level's grid
-    int cell = 0;               // its cell, numbered across all levels
-    std::int8_t level = 0;
-    int staticBegin = 0;  // the cell's static shapes in statics_, kept here to save a lookup
-    int staticEnd = 0;
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
-    int slidePlane = -1;   // the surface (slideSurfaces_) the ball slides on, or -1 in flight
+    // Its lasting contact with flat faces (engine_sliding.cpp): today the frictionless slide on
+    // one surface or along the crease of two; friction's contact phases (sliding, rolling,
+    // spinning in place, at rest on a face) join it here.
+    int slidePlane = -1;   // the surface (slides_) the ball slides on, or -1 in flight
     int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
     // Put to rest by the burst guard: held in its wedge, it is not loosened (restCheck).
@@ -115,37 +101,6 @@ class EventEngine {
     int other = -1;
     std::uint32_t otherCounter = 0;  // the partner ball's counter when predicted
   };
-  struct Crossing {
-    double time = std::numeric_limits<double>::infinity();  // absolute
-    std::int8_t axis = 0;
-    std::int8_t direction = 0;
-    std::int8_t level = 0;  // the ball's own, or a larger one it is followed in
-  };
-  // The balls of one size class and their grid.
-  struct CellLevel {
-    CellGrid grid;
-    int firstCell = 0;  // its cells' first number across all levels
-    double maxRadius = 0.0;
-    double minRadius = std::numeric_limits<double>::infinity();
-    int balls = 0;
-    // Balls in the grid's border cells, now and just after it was built: when many more have
-    // wandered out there, the grid is built again around where the balls are.
-    int borderBalls = 0;
-    int builtBorderBalls = 0;
-  };
-  enum class StaticKind : std::uint8_t { Plane, Cylinder, Box };
-  struct StaticRef {
-    StaticKind kind;
-    int index;
-  };
-  // What a ball may slide on: the planes (same indices), then the six faces of each box, by
-  // box, axis and side, then the two caps of each cylinder, by cylinder and side (an infinite
-  // one's are never used).
-  struct SlideSurface {
-    PlaneShape plane;  // a cap's normal tells which cap it is
-    StaticRef owner;   // the plane itself, or the box or cylinder the face or cap belongs to
-    int axis = -1;     // a box face's: the box's axis across it
-  };
 
   // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
   // normal towards the ball, the gap between their surfaces and the contact's restitution.
@@ -159,84 +114,15 @@ class EventEngine {
            : kind == EventKind::Cylinder ? StaticKind::Cylinder
                                          : StaticKind::Plane;
   }
-  static ContactKind contactKindOf(StaticKind kind) {
-    return kind == StaticKind::Box        ? ContactKind::BallBox
-           : kind == StaticKind::Cylinder ? ContactKind::BallCylinder
-                                          : ContactKind::BallPlane;
-  }
   StaticContact staticContact(int i, StaticRef ref, const Vec3& position) const;
   StaticContact staticContact(int i, StaticRef ref) const {
     return staticContact(i, ref, tracks_[i].motion.position);
   }
 
-  // The levels and their grids around the balls' positions now.
-  void buildGrid();
-  void buildStaticLists();
-  void noteStatics(int i);
-  // Files ball i (at its position now) in its level's cell and follows it in the larger levels.
-  void fileBall(int i);
-  void moveToCell(int i, const CellGrid::Coords& coords);
-  // Ball i's coordinates in the other levels' grids, at `at` (levelCoords).
-  void noteLevelCoords(int i, const Vec3& at);
-  // Builds the grids again when a level's border cells hold many more balls than when it was
-  // built (balls spread beyond the region it covers): they would all be one another's
-  // neighbours there.
+  // Each ball's position now, for building the cells.
+  std::vector<Vec3> positions() const;
+  // Builds the cells again when they are crowded (CellLevels::crowded).
   void rebuildCellsIfCrowded();
-  // Ball i's cell coordinates in another level `level`: each larger one, and the smaller ones it
-  // follows (boxReach), there in the grid's lattice continued beyond it, since a large ball
-  // outside a grid of small ones would otherwise have its box reach from the border cell deep
-  // into it.
-  CellGrid::Coords& levelCoords(int i, int level) {
-    return levelCoords_[std::size_t(i) * levels_.size() + level];
-  }
-  const CellGrid::Coords& levelCoords(int i, int level) const {
-    return levelCoords_[std::size_t(i) * levels_.size() + level];
-  }
-  // Calls f(cell) for the cells of the level `finer` (numbered across levels) that meet the box
-  // of level `level`'s cells from `from` to `to` (clamped to its grid), with a cell more on
-  // every side against rounding.
-  template <typename F>
-  void forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
-                        F&& f) const;
-  // How far, in cells of finer level `finer`, a ball of level `level` finds that level's balls
-  // around its cell there; zero when it finds them under its block instead (too close in size).
-  const CellGrid::Coords& boxReach(int level, int finer) const {
-    return boxReach_[std::size_t(level) * levels_.size() + finer];
-  }
-  bool followsFiner(int level, int finer) const { return boxReach(level, finer)[0] > 0; }
-  // How far beyond the finer grid the lattice a ball of `level` follows there goes along an
-  // axis: past its box's reach, the box holds no cell of the grid but its border.
-  int latticeMargin(int level, int finer, int axis) const {
-    return boxReach(level, finer)[axis] + 1;
-  }
-  // The box of cells in finer level `finer` that ball k, which follows it, finds its balls in:
-  // `boxReach` around `around` (its lattice cell there, or a face of it) clamped into the grid,
-  // so that a box beyond the grid still holds the border cells, which reach to infinity.
-  std::pair<CellGrid::Coords, CellGrid::Coords> followerBox(int k, int finer,
-                                                            const CellGrid::Coords& around) const {
-    const CellGrid::Coords& reach = boxReach(particles_[k].level, finer);
-    const CellGrid::Coords& counts = levels_[finer].grid.counts();
-    CellGrid::Coords from, to;
-    for (int a = 0; a < 3; ++a) {
-      from[a] = std::clamp(around[a] - reach[a], 0, counts[a] - 1);
-      to[a] = std::clamp(around[a] + reach[a], 0, counts[a] - 1);
-    }
-    return {from, to};
-  }
-  // Whether ball i's cell is in the box of larger ball k, which follows i's level.
-  bool inFollowersBox(int i, int k) const {
-    const Particle& p = particles_[i];
-    const auto [from, to] = followerBox(k, p.level, levelCoords(k, p.level));
-    for (int a = 0; a < 3; ++a)
-      if (p.coords[a] < from[a] || p.coords[a] > to[a]) return false;
-    return true;
-  }
-  // Calls f(cell) for the cells of level `level` from `from` to `to`, clamped to its grid.
-  template <typename F>
-  void forEachCellIn(int level, CellGrid::Coords from, CellGrid::Coords to, F&& f) const;
-  // Calls f(ball) for every ball, other than i, whose cell in any level is near enough to touch i.
-  template <typename F>
-  void forEachNeighbourAcrossLevels(int i, F&& f) const;
   void predictAll();
   // Predicts ball i's next contact and crossing from scratch.
   void predict(int i);
@@ -247,7 +133,6 @@ class EventEngine {
   // Tests every ball that forEachBall(visit) visits.
   template <typename ForEachBall>
   void findBallContacts(int i, const BallPath& path, ForEachBall&& forEachBall);
-  void findCrossing(int i, const BallPath& path);
   void schedule(int i);
   void cross(int i, RunStats& stats);
   // After ball i came to rest: a resting ball has no event of its own, so balls about to hit
@@ -296,35 +181,18 @@ class EventEngine {
   void startCrease(int i, int plane);
   // Lets go of the planes that ball i's velocity leaves faster than the slide speed.
   void dropPlanesLeft(int i);
-  // Whether static shape `ref` is, or holds, slide surface `surface`.
-  bool holdsSurface(StaticRef ref, int surface) const {
-    const StaticRef owner = slideSurfaces_[surface].owner;
-    return ref.kind == owner.kind && ref.index == owner.index;
-  }
   // Whether ball p slides along `ref` (and so never into it).
   bool slidesAgainst(const Particle& p, StaticRef ref) const {
-    return (p.slidePlane >= 0 && holdsSurface(ref, p.slidePlane)) ||
-           (p.creasePlane >= 0 && holdsSurface(ref, p.creasePlane));
+    return (p.slidePlane >= 0 && slides_.holds(ref, p.slidePlane)) ||
+           (p.creasePlane >= 0 && slides_.holds(ref, p.creasePlane));
   }
-  // The slide surface that ball i meets at a contact with `ref` now: the plane, the box face
-  // (away from its edges and corners) or the cap (its centre within the disc); -1 for any other
-  // part.
-  int surfaceAt(int i, StaticRef ref) const;
-  int boxFaceAt(int i, int box) const;
-  int capAt(int i, int cylinder) const;
   // The contact's restitution of ball i with a static shape.
   double restitutionWith(int i, StaticRef ref) const;
   // When ball i, sliding on a box's face or a cap, reaches the face's edge or the cap's rim.
   void findSlideEnd(int i, const BallPath& path);
-  double faceEndTime(const SlideSurface& face, const BallPath& path, double horizon) const;
-  double capEndTime(const SlideSurface& cap, const BallPath& path, double horizon) const;
   // The slide's end: past the edge or rim the ball flies, or meets the shape at once when it
-  // would fly into the rounding there (bendsIntoEdge, bendsIntoRim).
+  // would fly into the rounding there (SlideSurfaces::bendsIntoEnd).
   void endSlide(int i, RunStats& stats, std::vector<CollisionRecord>* log);
-  // Whether ball i, at the end of a slide on a box's face or a cap, would fly into the rounding
-  // of the face's edge or the cap's rim at once.
-  bool bendsIntoEdge(int i, const SlideSurface& face) const;
-  bool bendsIntoRim(int i, const SlideSurface& cap) const;
   // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
   // one that now leaves it flies.
   void updateSlide(int i, RunStats& stats);
@@ -364,8 +232,8 @@ class EventEngine {
   // Not resting, and slower than a ball that may settle.
   bool slow(int k) const;
   struct Support {
-    int staticSlot;  // in statics_, or -1
-    int ball;        // or -1
+    StaticRef shape{};  // when ball is -1
+    int ball = -1;      // or -1
   };
   struct SupportGap {
     Vec3 normal;
@@ -408,7 +276,7 @@ class EventEngine {
     const Particle& p = particles_[i];
     if (p.resting || p.held) return zero_;
     if (p.slidePlane < 0) return pathAcceleration_;
-    return p.creasePlane < 0 ? slideAcceleration_[p.slidePlane] : creaseAcceleration_[i];
+    return p.creasePlane < 0 ? slides_.acceleration(p.slidePlane) : creaseAcceleration_[i];
   }
   // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
   // (a pair that gravity presses together), the same under `exact` and `swept`.
@@ -416,7 +284,7 @@ class EventEngine {
     const Particle& p = particles_[i];
     if (p.resting || p.held) return Vec3::Zero();
     if (p.slidePlane < 0) return gravity_;
-    if (p.creasePlane < 0) return slideGravity_[p.slidePlane];
+    if (p.creasePlane < 0) return slides_.gravity(p.slidePlane);
     return gravity_.dot(creaseLine_[i]) * creaseLine_[i];
   }
   void moveTo(int i, double t) {
@@ -426,15 +294,7 @@ class EventEngine {
   void notePenetration(double overlap, RunStats& stats) const;
   template <typename F>
   void forEachNeighbour(int i, F&& f) const {
-    if (levels_.size() > 1) {
-      forEachNeighbourAcrossLevels(i, f);
-      return;
-    }
-    levels_[0].grid.forEachNeighbourCell(particles_[i].coords, [&](int cell) {
-      members_.forEachIn(cell, [&](int k) {
-        if (k != i) f(k);
-      });
-    });
+    cells_.forEachNeighbour(i, f);
   }
 
   const Bodies& bodies_;
@@ -450,7 +310,7 @@ class EventEngine {
   std::vector<Particle> particles_;
   struct Prediction {
     Contact contact;
-    Crossing crossing;
+    CellLevels::Crossing crossing;
   };
   std::vector<Prediction> predictions_;
   struct TouchedStatic {
@@ -468,98 +328,12 @@ class EventEngine {
   // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
-  std::vector<SlideSurface> slideSurfaces_;
-  int firstCap_ = 0;                      // the first cap's index in slideSurfaces_
-  std::vector<Vec3> slideAcceleration_;   // path acceleration along each surface
-  std::vector<Vec3> slideGravity_;        // gravity along each surface
+  SlideSurfaces slides_;
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
   std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
-  std::vector<CellLevel> levels_;
-  std::vector<CellGrid::Coords> levelCoords_;  // per ball and level (only larger levels used)
-  std::vector<CellGrid::Coords> boxReach_;     // per level and finer level (boxReach)
-  bool cellsCrowded_ = false;  // a level's border cells are crowded (rebuildCellsIfCrowded)
-  CellMembership members_;
-  std::vector<int> staticStart_;  // CSR: static shapes near each cell
-  bool sharedStatics_ = false;    // every cell uses all of statics_
-  std::vector<StaticRef> statics_;
+  CellLevels cells_;
   EventQueue queue_;
-  int held_ = -1;  // the held ball, or -1
-  std::optional<GrabStop> grabStop_;
-  // The held ball's burst guard (kMaxCollisionsInBurst): pushes in a row, each after a
-  // negligible travel.
-  int heldPushesInBurst_ = 0;
-  double heldLastPush_ = -std::numeric_limits<double>::infinity();
+  HeldBall held_;
 };
-
-template <typename F>
-void EventEngine::forEachCellIn(int level, CellGrid::Coords from, CellGrid::Coords to,
-                                F&& f) const {
-  const CellLevel& cells = levels_[level];
-  for (int a = 0; a < 3; ++a) {
-    from[a] = std::max(from[a], 0);
-    to[a] = std::min(to[a], cells.grid.counts()[a] - 1);
-    if (from[a] > to[a]) return;
-  }
-  for (int z = from[2]; z <= to[2]; ++z)
-    for (int y = from[1]; y <= to[1]; ++y)
-      for (int x = from[0]; x <= to[0]; ++x) f(cells.firstCell + cells.grid.index({x, y, z}));
-}
-
-template <typename F>
-void EventEngine::forEachFinerCell(int finer, int level, CellGrid::Coords from, CellGrid::Coords to,
-                                   F&& f) const {
-  const CellGrid& coarse = levels_[level].grid;
-  const CellLevel& fine = levels_[finer];
-  CellGrid::Coords low, high;
-  for (int a = 0; a < 3; ++a) {
-    from[a] = std::max(from[a], 0);
-    to[a] = std::min(to[a], coarse.counts()[a] - 1);
-    if (from[a] > to[a]) return;
-    low[a] = std::max(fine.grid.coordOf(a, coarse.lowerFace(a, from[a])) - 1, 0);
-    high[a] =
-        std::min(fine.grid.coordOf(a, coarse.upperFace(a, to[a])) + 1, fine.grid.counts()[a] - 1);
-  }
-  for (int z = low[2]; z <= high[2]; ++z)
-    for (int y = low[1]; y <= high[1]; ++y)
-      for (int x = low[0]; x <= high[0]; ++x) f(fine.firstCell + fine.grid.index({x, y, z}));
-}
-
-template <typename F>
-void EventEngine::forEachNeighbourAcrossLevels(int i, F&& f) const {
-  const Particle& p = particles_[i];
-  const auto visitCell = [&](int cell) {
-    members_.forEachIn(cell, [&](int k) {
-      if (k != i) f(k);
-    });
-  };
-  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
-    const CellLevel& level = levels_[l];
-    if (l < p.level && followsFiner(p.level, l)) {
-      const auto [from, to] = followerBox(i, l, levelCoords(i, l));
-      forEachCellIn(l, from, to, visitCell);
-      continue;
-    }
-    if (l < p.level) {
-      CellGrid::Coords from = p.coords, to = p.coords;
-      for (int a = 0; a < 3; ++a) {
-        --from[a];
-        ++to[a];
-      }
-      forEachFinerCell(l, p.level, from, to, visitCell);
-      continue;
-    }
-    const CellGrid::Coords& around = l == p.level ? p.coords : levelCoords(i, l);
-    if (l > p.level && followsFiner(l, p.level)) {
-      // Those whose boxes hold it: it meets no other.
-      level.grid.forEachNeighbourCell(around, [&](int cell) {
-        members_.forEachIn(level.firstCell + cell, [&](int k) {
-          if (inFollowersBox(i, k)) f(k);
-        });
-      });
-      continue;
-    }
-    level.grid.forEachNeighbourCell(around, [&](int cell) { visitCell(level.firstCell + cell); });
-  }
-}
 
 }  // namespace carom
