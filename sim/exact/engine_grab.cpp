@@ -47,7 +47,7 @@ void EventEngine::release(const Vec3& velocity) {
   particles_[i].held = false;
   held_.letGo();
   tracks_[i].motion.velocity = velocity;
-  recordEnergy(i);  // `swept`'s books start from the throw
+  books_.record(i, tracks_[i].motion);  // `swept`'s books start from the throw
   changed(i);
   predict(i);
 }
@@ -92,7 +92,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   moveTo(h, now_);
   moveTo(o, now_);
   if (particles_[o].resting) wake(o, stats);
-  restoreEnergy(o);
+  books_.restore(o, tracks_[o].motion);
   Motion& mh = tracks_[h].motion;
   Motion& mo = tracks_[o].motion;
   Vec3 n = mo.position - mh.position;
@@ -104,7 +104,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   if (held_.jams(mh.velocity, bodies_.radius[h], now_)) stopGrab(GrabStopKind::Jam, o);
   const double approach = (mh.velocity - mo.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[h], bodies_.restitution[o]);
-  noteRestitution(restitution);
+  books_.noteRestitution(restitution);
   // The floor of collideBalls; the held ball feels no gravity (gravityOn).
   const auto [minimum, lossless] = pairFloor(h, o, n, restitution);
   Vec3 heldVelocity = mh.velocity, exchanged = mo.velocity;
@@ -118,7 +118,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   if (log)
     log->push_back(
         {now_, ContactKind::BallBall, h, o, mh.position + bodies_.radius[h] * n, approach});
-  closeBooks(o, exchangedEnergy);
+  books_.close(o, exchangedEnergy, tracks_[o].motion);
   predict(h);
   predict(o);
 }

@@ -102,7 +102,7 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
     const StaticRef owner = slides_.surface(k).owner;
     planes[count++] = {slides_.surface(k).plane.normal, restitutionWith(i, owner),
                        contactKindOf(owner.kind)};
-    noteRestitution(planes[count - 1].restitution);
+    books_.noteRestitution(planes[count - 1].restitution);
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
                  tolerance::kMaxSimultaneousReflections,

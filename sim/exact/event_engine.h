@@ -4,10 +4,11 @@
 // earliest is processed, only the balls it changed are predicted again, and predictions that
 // involved a ball changed since are dropped when their time comes (collision counters).
 //
-// Its parts: the cells, which find a ball's neighbours and static shapes (CellLevels, the broad
-// phase); the surfaces a ball may slide on (SlideSurfaces) and the sliding itself
-// (engine_sliding.cpp, where friction's contact phases will go); the rest decisions
-// (engine_resting.cpp); the held ball (HeldBall, engine_grab.cpp).
+// Its parts: the cells, which find a ball's neighbours and the static shapes near it (CellLevels,
+// the broad phase); the contacts' responses (engine_contacts.cpp); the surfaces a ball may slide
+// on (SlideSurfaces) and the sliding itself (engine_sliding.cpp, the room of friction's contact
+// phases); the rest decisions (RestCheck, engine_resting.cpp); `swept`'s energy books
+// (EnergyBooks); the held ball (HeldBall, engine_grab.cpp).
 //
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
@@ -16,6 +17,7 @@
 #include "sim/dynamics/grab.h"
 #include "sim/dynamics/run_stats.h"
 #include "sim/exact/cell_levels.h"
+#include "sim/exact/energy_books.h"
 #include "sim/exact/event_queue.h"
 #include "sim/exact/held_ball.h"
 #include "sim/exact/slide_surfaces.h"
@@ -31,6 +33,8 @@
 #include <vector>
 
 namespace carom {
+
+class RestCheck;
 
 class EventEngine {
  public:
@@ -71,6 +75,9 @@ class EventEngine {
   std::size_t memoryBytes() const;
 
  private:
+  // Rule 3 of the rest policy, a question about the balls as they are (rest_check.h).
+  friend class RestCheck;
+
   // SlideEnd: a ball sliding on a box's face or a capped cylinder's cap reaches its edge or rim.
   enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box, SlideEnd };
   // What a neighbour search reads of every ball, in one cache line.
@@ -89,7 +96,7 @@ class EventEngine {
     int slidePlane = -1;   // the surface (slides_) the ball slides on, or -1 in flight
     int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
-    // Put to rest by the burst guard: held in its wedge, it is not loosened (restCheck).
+    // Put to rest by the burst guard: held in its wedge, it is not loosened (RestCheck).
     bool wedged = false;
     bool held = false;  // the held ball (grab.h)
   };
@@ -102,173 +109,7 @@ class EventEngine {
     std::uint32_t otherCounter = 0;  // the partner ball's counter when predicted
   };
 
-  // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
-  // normal towards the ball, the gap between their surfaces and the contact's restitution.
-  struct StaticContact {
-    Vec3 normal;
-    double gap;
-    double restitution;
-  };
-  static StaticKind staticKindOf(EventKind kind) {
-    return kind == EventKind::Box        ? StaticKind::Box
-           : kind == EventKind::Cylinder ? StaticKind::Cylinder
-                                         : StaticKind::Plane;
-  }
-  StaticContact staticContact(int i, StaticRef ref, const Vec3& position) const;
-  StaticContact staticContact(int i, StaticRef ref) const {
-    return staticContact(i, ref, tracks_[i].motion.position);
-  }
-
-  // Each ball's position now, for building the cells.
-  std::vector<Vec3> positions() const;
-  // Builds the cells again when they are crowded (CellLevels::crowded).
-  void rebuildCellsIfCrowded();
-  void predictAll();
-  // Predicts ball i's next contact and crossing from scratch.
-  void predict(int i);
-  // The earliest contact with a static shape, solved for no further ahead than `until`.
-  void findStaticContact(int i, const BallPath& path,
-                         double until = std::numeric_limits<double>::infinity());
-  void findBallContact(int i, const BallPath& path, int k);
-  // Tests every ball that forEachBall(visit) visits.
-  template <typename ForEachBall>
-  void findBallContacts(int i, const BallPath& path, ForEachBall&& forEachBall);
-  void schedule(int i);
-  void cross(int i, RunStats& stats);
-  // After ball i came to rest: a resting ball has no event of its own, so balls about to hit
-  // it must be told.
-  void warnNeighbours(int i);
-  void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
-  // A contact with a static shape now; `face` is the slide surface it may slide on, or -1.
-  void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
-                         std::vector<CollisionRecord>* log);
-  void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
-  // The least separation speed of balls i and j meeting along unit normal n (from i to j), and
-  // the approach below which restitution takes nothing (rules 1 and 8 of rest_policy.h): a
-  // pair that gravity presses together parts at no less than the rest speed (an elastic one
-  // at the slide speed), and any pair faster than round-off in its velocities.
-  struct PairFloor {
-    double minimum;
-    double lossless;
-  };
-  PairFloor pairFloor(int i, int j, const Vec3& n, double restitution) const;
-  // The held ball h meets a static shape: it slides along what it touches, as far as its
-  // steering takes it, and bounces off nothing (it has no mass to bounce with).
-  void heldMeetsStatic(int h, StaticRef ref, RunStats& stats, std::vector<CollisionRecord>* log);
-  // The held ball h meets ball o: o answers as against an unlimited mass moving at h's velocity.
-  void pushByHeld(int h, int o, RunStats& stats, std::vector<CollisionRecord>* log);
-  // Whether held ball h, pushing ball o along unit normal n (from h to o), would crush it
-  // against a static shape or a resting ball (tolerance::kCrushEscapeFactor).
-  bool crushes(int h, int o, const Vec3& n) const;
-  void stopGrab(GrabStopKind kind, int other);
-  // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
-  // n pointing to the ball.
-  // `plane` is the plane's index when the surface is one: a slow enough contact with a plane
-  // that gravity presses the ball against turns into sliding along it.
-  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                          int plane = -1);
-  // The same contact when it does not end in rest.
-  void bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1);
-  // Sliding (docs/physics.md, "Sliding"): the ball keeps touching the plane and follows
-  // gravity's component along it, an exact path, until a contact sends it off faster than a
-  // bounce of round-off height.
-  void startSliding(int i, int plane);
-  // What a slow contact of ball i with pressing plane `plane` becomes: kAlone (a slide on it),
-  // another plane's index (a slide along their crease), or kNoCapture (a bounce).
-  static constexpr int kAlone = -1;
-  static constexpr int kNoCapture = -2;
-  int slideCapture(int i, int plane) const;
-  void startCrease(int i, int plane);
-  // Lets go of the planes that ball i's velocity leaves faster than the slide speed.
-  void dropPlanesLeft(int i);
-  // Whether ball p slides along `ref` (and so never into it).
-  bool slidesAgainst(const Particle& p, StaticRef ref) const {
-    return (p.slidePlane >= 0 && slides_.holds(ref, p.slidePlane)) ||
-           (p.creasePlane >= 0 && slides_.holds(ref, p.creasePlane));
-  }
-  // The contact's restitution of ball i with a static shape.
-  double restitutionWith(int i, StaticRef ref) const;
-  // When ball i, sliding on a box's face or a cap, reaches the face's edge or the cap's rim.
-  void findSlideEnd(int i, const BallPath& path);
-  // The slide's end: past the edge or rim the ball flies, or meets the shape at once when it
-  // would fly into the rounding there (SlideSurfaces::bendsIntoEnd).
-  void endSlide(int i, RunStats& stats, std::vector<CollisionRecord>* log);
-  // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
-  // one that now leaves it flies.
-  void updateSlide(int i, RunStats& stats);
-  // Puts a sliding ball back on its plane exactly, undoing round-off drift off it.
-  void keepOnPlane(int i);
-  void leaveTouchingStatics(int i, RunStats& stats);
-  void changed(int i);
-  // `swept` (straight sweeps kicked by an integrator under gravity): between two events of a
-  // ball, physics keeps its energy, but the integrator's kicks and the straight sweep's chord
-  // below the true parabola do not, and the errors of successive flights add up (the magic room
-  // gained 96 % in 2,000 s). A contact first gives the ball back the energy it had after its
-  // last event, by changing its speed along gravity, so the error never outlives one flight.
-  void recordEnergy(int i);
-  void restoreEnergy(int i);
-  // The books after ball i's event. An elastic event keeps what physics keeps: the ball's
-  // energy, changed only by `exchanged` (its share of a ball pair's exchange). What the rest
-  // policy's guards gave or took in it (a slide's capture, a rest, a minimum separation) stays
-  // owed, and the ball's next contact settles it, so guards make and lose nothing over time. An
-  // event with an inelastic contact records the ball as it is: the guards model its collapse.
-  void closeBooks(int i, double exchanged);
-  void noteRestitution(double restitution) {
-    inelasticEvent_ = inelasticEvent_ || restitution < 1.0;
-  }
-  // Stops ball i where it is, or moved by `settle` onto the supports that carry it (restCheck)
-  // when that overlaps nothing.
-  void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
-  bool clearAt(int i, const Vec3& centre) const;
-  void wake(int i, RunStats& stats);
-  // Wakes those of `balls` still resting, and predicts them.
-  void wakeEach(const std::vector<int>& balls, RunStats& stats);
-  // The resting balls that may rest on ball k: above it, their gap to it above
-  // `minGapFraction` and at most kSupportGapFraction of the smaller radius.
-  std::vector<int> restingAbove(int k, double minGapFraction) const;
-  // A contact along unit normal n (towards ball i) slow enough to end in rest: when restCheck
-  // holds, ball i rests, and this returns true; resting balls that cannot carry it wake.
-  bool restsOnContact(int i, const Vec3& n, double restitution, RunStats& stats);
-  // Not resting, and slower than a ball that may settle.
-  bool slow(int k) const;
-  struct Support {
-    StaticRef shape{};  // when ball is -1
-    int ball = -1;      // or -1
-  };
-  struct SupportGap {
-    Vec3 normal;
-    double gap;
-  };
-  SupportGap supportGap(int i, const Support& support, const Vec3& centre) const;
-  // What ball i touches within kSupportGapFraction of its radius: its possible supports
-  // (statics, resting balls, balls slower than its rest speed) with their normals, and the
-  // faster balls, which it must not settle into.
-  struct NearContacts {
-    std::vector<Support> supports;
-    std::vector<Vec3> normals;
-    std::vector<Support> moving;
-  };
-  NearContacts nearContacts(int i, const Vec3& centre) const;
-  // Rule 3 of rest_policy.h: whether ball i can rest (its contacts hold it with the balls it
-  // touches fixed, and so do its cluster's with the slow ones free, and it can settle) and
-  // where: `settle` is the move, at most kSupportGapFraction of the radius, after which what it
-  // touches to round-off holds it.
-  struct RestCheck {
-    bool holds = false;
-    Vec3 settle = Vec3::Zero();
-    std::vector<int> loosened;  // resting balls that cannot carry it: they must move
-  };
-  RestCheck restCheck(int i) const;
-  std::optional<Vec3> closingMove(int i, const Vec3& centre,
-                                  const std::vector<Support>& carrying) const;
-  Vec3 closingStep(int i, const Vec3& at, const std::vector<Support>& supports,
-                   double* residual) const;
-  std::optional<Vec3> settlingMove(int i, const Vec3& centre, const NearContacts& near, Vec3 move,
-                                   std::vector<Support> carrying) const;
-  // Ball i at `centre` overlaps nothing, and what it touches to round-off holds it.
-  bool heldAt(int i, const Vec3& centre, const NearContacts& near) const;
-  std::optional<Vec3> lowestPocket(int i, const Vec3& centre, const NearContacts& near) const;
-  bool clusterHolds(int i, int freed = -1) const;
+  // The balls' paths.
   BallPath pathAt(int i, double t) const;
   const Vec3& accelerationOf(int i) const {
     // Without path acceleration nobody's flag need be read (a cache miss in the hot loop).
@@ -291,11 +132,129 @@ class EventEngine {
     tracks_[i].motion.moveTo(t, accelerationOf(i));
     if (particles_[i].slidePlane >= 0) keepOnPlane(i);
   }
-  void notePenetration(double overlap, RunStats& stats) const;
+  void changed(int i);
+
+  // The loop (event_engine.cpp): predictions, crossings and events.
+  // Each ball's position now, for building the cells.
+  std::vector<Vec3> positions() const;
+  // Builds the cells again when they are crowded (CellLevels::crowded).
+  void rebuildCellsIfCrowded();
+  void predictAll();
+  // Predicts ball i's next contact and crossing from scratch.
+  void predict(int i);
+  // The earliest contact with a static shape, solved for no further ahead than `until`.
+  void findStaticContact(int i, const BallPath& path,
+                         double until = std::numeric_limits<double>::infinity());
+  void findBallContact(int i, const BallPath& path, int k);
+  // Tests every ball that forEachBall(visit) visits.
+  template <typename ForEachBall>
+  void findBallContacts(int i, const BallPath& path, ForEachBall&& forEachBall);
+  void schedule(int i);
+  void cross(int i, RunStats& stats);
+  // After ball i came to rest: a resting ball has no event of its own, so balls about to hit
+  // it must be told.
+  void warnNeighbours(int i);
+  void process(int i, RunStats& stats, std::vector<CollisionRecord>* log);
   template <typename F>
   void forEachNeighbour(int i, F&& f) const {
     cells_.forEachNeighbour(i, f);
   }
+
+  // Contacts (engine_contacts.cpp).
+  // Ball i (at `position`, by default its last stored one) against a plane or cylinder: the unit
+  // normal towards the ball, the gap between their surfaces and the contact's restitution.
+  struct StaticContact {
+    Vec3 normal;
+    double gap;
+    double restitution;
+  };
+  static StaticKind staticKindOf(EventKind kind) {
+    return kind == EventKind::Box        ? StaticKind::Box
+           : kind == EventKind::Cylinder ? StaticKind::Cylinder
+                                         : StaticKind::Plane;
+  }
+  StaticContact staticContact(int i, StaticRef ref, const Vec3& position) const;
+  StaticContact staticContact(int i, StaticRef ref) const {
+    return staticContact(i, ref, tracks_[i].motion.position);
+  }
+  // The contact's restitution of ball i with a static shape.
+  double restitutionWith(int i, StaticRef ref) const;
+  // A contact with a static shape now; `face` is the slide surface it may slide on, or -1.
+  void collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
+                         std::vector<CollisionRecord>* log);
+  void collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log);
+  // The least separation speed of balls i and j meeting along unit normal n (from i to j), and
+  // the approach below which restitution takes nothing (rules 1 and 8 of rest_policy.h): a
+  // pair that gravity presses together parts at no less than the rest speed (an elastic one
+  // at the slide speed), and any pair faster than round-off in its velocities.
+  struct PairFloor {
+    double minimum;
+    double lossless;
+  };
+  PairFloor pairFloor(int i, int j, const Vec3& n, double restitution) const;
+  // Ball i meets something that does not move (plane, cylinder, resting ball) along unit normal
+  // n pointing to the ball.
+  // `plane` is the plane's index when the surface is one: a slow enough contact with a plane
+  // that gravity presses the ball against turns into sliding along it.
+  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
+                          int plane = -1);
+  // The same contact when it does not end in rest.
+  void bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1);
+  void leaveTouchingStatics(int i, RunStats& stats);
+  void notePenetration(double overlap, RunStats& stats) const;
+
+  // Sliding (engine_sliding.cpp; docs/physics.md, "Sliding"): the ball keeps touching the plane and follows
+  // gravity's component along it, an exact path, until a contact sends it off faster than a
+  // bounce of round-off height.
+  void startSliding(int i, int plane);
+  // What a slow contact of ball i with pressing plane `plane` becomes: kAlone (a slide on it),
+  // another plane's index (a slide along their crease), or kNoCapture (a bounce).
+  static constexpr int kAlone = -1;
+  static constexpr int kNoCapture = -2;
+  int slideCapture(int i, int plane) const;
+  void startCrease(int i, int plane);
+  // Lets go of the planes that ball i's velocity leaves faster than the slide speed.
+  void dropPlanesLeft(int i);
+  // Whether ball p slides along `ref` (and so never into it).
+  bool slidesAgainst(const Particle& p, StaticRef ref) const {
+    return (p.slidePlane >= 0 && slides_.holds(ref, p.slidePlane)) ||
+           (p.creasePlane >= 0 && slides_.holds(ref, p.creasePlane));
+  }
+  // When ball i, sliding on a box's face or a cap, reaches the face's edge or the cap's rim.
+  void findSlideEnd(int i, const BallPath& path);
+  // The slide's end: past the edge or rim the ball flies, or meets the shape at once when it
+  // would fly into the rounding there (SlideSurfaces::bendsIntoEnd).
+  void endSlide(int i, RunStats& stats, std::vector<CollisionRecord>* log);
+  // After ball i's velocity changed: a sliding ball pushed into its plane bounces off it, and
+  // one that now leaves it flies.
+  void updateSlide(int i, RunStats& stats);
+  // Puts a sliding ball back on its plane exactly, undoing round-off drift off it.
+  void keepOnPlane(int i);
+
+  // Resting (engine_resting.cpp).
+  // Stops ball i where it is, or moved by `settle` onto the supports that carry it (RestCheck)
+  // when that overlaps nothing.
+  void putToRest(int i, RunStats& stats, const Vec3& settle = Vec3::Zero());
+  void wake(int i, RunStats& stats);
+  // Wakes those of `balls` still resting, and predicts them.
+  void wakeEach(const std::vector<int>& balls, RunStats& stats);
+  // The resting balls that may rest on ball k: above it, their gap to it above
+  // `minGapFraction` and at most kSupportGapFraction of the smaller radius.
+  std::vector<int> restingAbove(int k, double minGapFraction) const;
+  // A contact along unit normal n (towards ball i) slow enough to end in rest: when RestCheck
+  // holds, ball i rests, and this returns true; resting balls that cannot carry it wake.
+  bool restsOnContact(int i, const Vec3& n, double restitution, RunStats& stats);
+
+  // The held ball (engine_grab.cpp).
+  // The held ball h meets a static shape: it slides along what it touches, as far as its
+  // steering takes it, and bounces off nothing (it has no mass to bounce with).
+  void heldMeetsStatic(int h, StaticRef ref, RunStats& stats, std::vector<CollisionRecord>* log);
+  // The held ball h meets ball o: o answers as against an unlimited mass moving at h's velocity.
+  void pushByHeld(int h, int o, RunStats& stats, std::vector<CollisionRecord>* log);
+  // Whether held ball h, pushing ball o along unit normal n (from h to o), would crush it
+  // against a static shape or a resting ball (tolerance::kCrushEscapeFactor).
+  bool crushes(int h, int o, const Vec3& n) const;
+  void stopGrab(GrabStopKind kind, int other);
 
   const Bodies& bodies_;
   Vec3 gravity_;
@@ -319,16 +278,12 @@ class EventEngine {
     StaticKind kind;
   };
   std::vector<TouchedStatic> touchedStatics_;  // leaveTouchingStatics's, kept to save allocations
-  bool restoresEnergy_ = false;
-  bool inelasticEvent_ = false;  // the event being processed has an inelastic contact
-  std::vector<double> energy_;   // per unit mass, after each ball's last event (`swept`)
-  // What a ball's restore could not take (it was higher than its energy allows), still owed.
-  std::vector<double> energyExcess_;
   std::vector<double> restSpeed_;
   // Normal speed below which a contact with a pressing plane is a slide: a bounce no higher than
   // touching distance, or one step's kick of gravity under `swept`.
   std::vector<double> slideSpeed_;
   SlideSurfaces slides_;
+  EnergyBooks books_;
   std::vector<Vec3> creaseLine_;          // per ball in a crease: the unit direction of its line
   std::vector<Vec3> creaseAcceleration_;  // and the path acceleration along it
   CellLevels cells_;
