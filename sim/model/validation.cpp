@@ -1,17 +1,14 @@
 #include "sim/model/validation.h"
-#include "sim/core/prefault.h"
 
 #include "sim/core/tolerances.h"
 #include "sim/geometry/shapes.h"
+#include "sim/model/ball_overlap_finder.h"
+#include "sim/model/validation_errors.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdint>
-#include <functional>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -22,147 +19,13 @@ namespace {
 
 namespace tol = tolerance;
 
-// Shortest text that reads back as the same double, with the exponent tidied ("1e300", not
-// "1e+300") so that messages stay short.
-std::string formatNumber(double value, int significantDigits = 0) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value < 0 ? "-inf" : "inf";
-  char buffer[64];
-  const auto result = significantDigits > 0
-                          ? std::to_chars(buffer, buffer + sizeof buffer, value,
-                                          std::chars_format::general, significantDigits)
-                          : std::to_chars(buffer, buffer + sizeof buffer, value);
-  std::string text(buffer, result.ptr);
-  const auto e = text.find('e');
-  if (e == std::string::npos) return text;
-  std::string exponent = text.substr(e + 1);
-  const bool negative = exponent.front() == '-';
-  if (exponent.front() == '+' || negative) exponent.erase(0, 1);
-  exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
-  return text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
-}
-
-// Overlap depths are derived quantities; six digits keep "0.05" from printing as
-// "0.04999999999999999".
-std::string formatDepth(double value) {
-  return formatNumber(value, 6);
-}
-
-// The subject's name in paths: the file's key.
-std::string_view subjectKey(ValidationSubject subject) {
-  switch (subject) {
-    case ValidationSubject::World:
-      return "world";
-    case ValidationSubject::Tolerance:
-      return "tolerance";
-    case ValidationSubject::Planes:
-      return "planes";
-    case ValidationSubject::Cylinders:
-      return "cylinders";
-    case ValidationSubject::Boxes:
-      return "boxes";
-    case ValidationSubject::Balls:
-      return "balls";
-  }
-  return {};
-}
-
-std::string objectPath(const ValidationObject& object) {
-  std::string path(subjectKey(object.subject));
-  if (object.index) path += "[" + std::to_string(*object.index) + "]";
-  return path;
-}
-
-// The path below the object, such as ".position"; a tolerance is spelled as its subject's file
-// or command line spells it.
-std::string_view fieldPath(ValidationField field, ValidationSubject subject) {
-  using F = ValidationField;
-  const bool alone = subject == ValidationSubject::Tolerance;
-  switch (field) {
-    case F::None:
-      return {};
-    case F::Position:
-      return ".position";
-    case F::Velocity:
-      return ".velocity";
-    case F::Radius:
-      return ".radius";
-    case F::Mass:
-      return ".mass";
-    case F::Point:
-      return ".point";
-    case F::Normal:
-      return ".normal";
-    case F::Axis:
-      return ".axis";
-    case F::Length:
-      return ".length";
-    case F::Center:
-      return ".center";
-    case F::HalfExtentX:
-      return ".halfExtents[0]";
-    case F::HalfExtentY:
-      return ".halfExtents[1]";
-    case F::HalfExtentZ:
-      return ".halfExtents[2]";
-    case F::RotationAxis:
-      return ".rotation.axis";
-    case F::RotationDegrees:
-      return ".rotation.degrees";
-    case F::Name:
-      return ".name";
-    case F::Restitution:
-      return ".restitution";
-    case F::Color:
-      return ".color";
-    case F::Gravity:
-      return ".gravity";
-    case F::TimeStep:
-      return ".timeStep";
-    case F::EnergyTolerance:
-      return alone ? ".energy" : ".tolerance[0]";
-    case F::PenetrationTolerance:
-      return alone ? ".penetration" : ".tolerance[1]";
-  }
-  return {};
-}
-
-// A ball's overlap with `other`, reported on the ball's position: by `depth`, or, for a plane,
-// with its centre `behind` the surface.
-ValidationError overlapError(std::size_t ball, ValidationObject other, double depth,
-                             std::optional<double> behind = std::nullopt) {
-  ValidationError error;
-  error.object = {ValidationSubject::Balls, ball};
-  error.path = objectPath(error.object) + ".position";
-  error.other = other;
-  if (behind) {
-    error.problem = ValidationProblem::BehindSurface;
-    error.value = *behind;
-    error.message =
-        "overlaps " + objectPath(other) + " (is " + formatDepth(*behind) + " behind its surface)";
-  } else {
-    error.problem = ValidationProblem::Overlaps;
-    error.value = depth;
-    error.message = "overlaps " + objectPath(other) + " by " + formatDepth(depth);
-  }
-  return error;
-}
-
-class ErrorList {
- public:
-  explicit ErrorList(std::size_t maxErrors) : maxErrors_(maxErrors) {}
-
-  bool full() const { return errors_.size() >= maxErrors_; }
-  std::size_t room() const { return full() ? 0 : maxErrors_ - errors_.size(); }
-  void add(ValidationError error) {
-    if (!full()) errors_.push_back(std::move(error));
-  }
-  std::vector<ValidationError> take() { return std::move(errors_); }
-
- private:
-  std::size_t maxErrors_;
-  std::vector<ValidationError> errors_;
-};
+using validation::BallOverlapFinder;
+using validation::ErrorList;
+using validation::fieldPath;
+using validation::formatNumber;
+using validation::objectPath;
+using validation::overlapError;
+using validation::overlaps;
 
 // The numbers and text a problem quotes (ValidationError's).
 struct Quoted {
@@ -373,10 +236,6 @@ bool checkCount(ValidationSubject list, std::size_t count, std::size_t limit, Er
   return false;
 }
 
-bool overlaps(double depth, double radiusSum) {
-  return depth > tol::kTouchFraction * radiusSum;
-}
-
 // Shapes that passed their own checks, with their scene index, for the overlap tests.
 struct IndexedPlane {
   std::size_t index;
@@ -399,216 +258,6 @@ struct StaticShapes {
   std::vector<IndexedCylinder> cylinders;
   std::vector<IndexedBox> boxes;
   bool empty() const { return planes.empty() && cylinders.empty() && boxes.empty(); }
-};
-
-// Finds the balls that overlap earlier balls with a grid per power-of-two size class: each ball
-// sits in one cell of the class that fits its diameter and looks only at the 27 cells around it
-// in its own and larger classes. Every pair is thus met once, from its smaller member, in time
-// that grows linearly with the number of balls for any scene whose balls do not overlap.
-class BallOverlapFinder {
- public:
-  struct Overlap {
-    std::size_t later;
-    std::size_t earlier;
-    double depth;
-    bool operator>(const Overlap& other) const { return other < *this; }
-    bool operator<(const Overlap& other) const {
-      return later != other.later ? later < other.later : earlier < other.earlier;
-    }
-  };
-
-  // Only the `maxReported` first overlaps (by later, then earlier ball) can be reported.
-  BallOverlapFinder(const std::vector<Ball>& balls, const std::vector<bool>& usable,
-                    std::size_t maxReported)
-      : balls_(balls), levels_(balls.size(), 0) {
-    // Cells are at least 2^-40 of the largest coordinate so that cell indices fit in 64 bits.
-    double largest = 0.0;
-    for (std::size_t i = 0; i < balls.size(); ++i)
-      if (usable[i]) largest = std::max(largest, balls[i].position.cwiseAbs().maxCoeff());
-    const int minLevel =
-        largest > 0.0 ? std::ilogb(largest) + 1 - 40 : std::numeric_limits<int>::min();
-
-    std::vector<std::pair<CellKey, std::size_t>> entries;
-    reservePrefaulted(entries, balls.size());
-    for (std::size_t i = 0; i < balls.size(); ++i) {
-      if (!usable[i]) continue;
-      // A cell is wider than the diameter, so overlapping balls of a class are in neighbouring
-      // cells; ldexp in cellOf is exact, so no rounding can move a ball across a cell border.
-      levels_[i] = std::max(std::ilogb(2.0 * balls[i].radius) + 1, minLevel);
-      entries.push_back({cellOf(balls[i].position, levels_[i]), i});
-    }
-    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first < b.first : a.second < b.second;
-    });
-    order_.reserve(entries.size());
-    for (std::size_t begin = 0; begin < entries.size();) {
-      std::size_t end = begin;
-      while (end < entries.size() && entries[end].first == entries[begin].first) {
-        order_.push_back(entries[end].second);
-        ++end;
-      }
-      cellKeys_.push_back(entries[begin].first);
-      cellRanges_.push_back({begin, end});
-      if (usedLevels_.empty() || usedLevels_.back() != entries[begin].first.level)
-        usedLevels_.push_back(entries[begin].first.level);
-      begin = end;
-    }
-    std::size_t slots = 16;
-    while (slots < 2 * cellKeys_.size()) slots *= 2;
-    slots_.assign(slots, 0);
-    for (std::size_t cell = 0; cell < cellKeys_.size(); ++cell) {
-      std::size_t slot = CellHash{}(cellKeys_[cell]) & (slots - 1);
-      while (slots_[slot] != 0) slot = (slot + 1) & (slots - 1);
-      slots_[slot] = static_cast<std::uint32_t>(cell + 1);
-    }
-    sweepOwnClasses(maxReported);
-  }
-
-  // All overlaps whose later ball is `index`, by earlier ball; call for every usable ball in
-  // increasing order.
-  std::vector<Overlap> overlapsOf(std::size_t index) {
-    find(index);
-    std::vector<Overlap> result;
-    while (!pending_.empty() && pending_.top().later == index) {
-      result.push_back(pending_.top());
-      pending_.pop();
-    }
-    return result;
-  }
-
- private:
-  struct CellKey {
-    int level;
-    std::int64_t x, y, z;
-    auto operator<=>(const CellKey&) const = default;
-  };
-
-  struct CellHash {
-    std::size_t operator()(const CellKey& key) const {
-      // Multiply and fold each part in, so that neighbouring cells land far apart.
-      std::uint64_t hash = static_cast<std::uint32_t>(key.level);
-      for (std::int64_t part : {key.x, key.y, key.z}) {
-        hash = (hash ^ static_cast<std::uint64_t>(part)) * 0x100000001b3ULL;
-        hash ^= hash >> 29;
-      }
-      return static_cast<std::size_t>(hash);
-    }
-  };
-
-  struct Range {
-    std::size_t begin, end;
-  };
-
-  static CellKey cellOf(const Vec3& position, int level) {
-    const auto index = [level](double coordinate) {
-      return static_cast<std::int64_t>(std::floor(std::ldexp(coordinate, -level)));
-    };
-    return {level, index(position.x()), index(position.y()), index(position.z())};
-  }
-
-  // The pairs within each class, found once for all balls: the cells are visited in their
-  // sorted order, and the cells of each of the nine rows of neighbours, (x + dx, y + dy,
-  // z - 1 .. z + 1), come in that order too, so nine cursors that only move forward find them
-  // without a look-up (and its cache miss) per cell. Only the first `maxReported` overlaps are
-  // kept.
-  void sweepOwnClasses(std::size_t maxReported) {
-    std::priority_queue<Overlap, std::vector<Overlap>, std::less<>> kept;  // largest on top
-    const auto keep = [&](const Overlap& overlap) {
-      if (kept.size() == maxReported && !(kept.top() > overlap)) return;
-      kept.push(overlap);
-      if (kept.size() > maxReported) kept.pop();
-    };
-    // Once as many are kept as can be reported, pairs whose later ball comes after the last
-    // kept one's are not tested: a thousand balls in one spot stop at the first few.
-    const auto latest = [&] {
-      return kept.size() == maxReported ? kept.top().later
-                                        : std::numeric_limits<std::size_t>::max();
-    };
-    const auto testCells = [&](std::size_t a, std::size_t b) {
-      // Cells list their balls in increasing order.
-      if (std::max(order_[cellRanges_[a].begin], order_[cellRanges_[b].begin]) > latest()) return;
-      for (std::size_t i = cellRanges_[a].begin; i < cellRanges_[a].end; ++i) {
-        const std::size_t x = order_[i];
-        if (x > latest()) break;
-        for (std::size_t j = cellRanges_[b].begin; j < cellRanges_[b].end; ++j) {
-          if (a == b && j >= i) break;
-          const std::size_t y = order_[j];
-          if (y > x && y > latest()) break;
-          if (const std::optional<double> depth = overlapDepth(x, y))
-            keep({std::max(x, y), std::min(x, y), *depth});
-        }
-      }
-    };
-    std::size_t cursors[9] = {};
-    for (std::size_t cell = 0; cell < cellKeys_.size() && maxReported > 0; ++cell) {
-      const CellKey& key = cellKeys_[cell];
-      int row = 0;
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        for (std::int64_t dy = -1; dy <= 1; ++dy, ++row) {
-          const CellKey first{key.level, key.x + dx, key.y + dy, key.z - 1};
-          const CellKey last{key.level, key.x + dx, key.y + dy, key.z + 1};
-          std::size_t& cursor = cursors[row];
-          while (cursor < cellKeys_.size() && cellKeys_[cursor] < first) ++cursor;
-          // Each pair of cells once: from the later of the two.
-          for (std::size_t other = cursor;
-               other <= cell && other < cellKeys_.size() && !(last < cellKeys_[other]); ++other)
-            testCells(cell, other);
-        }
-      }
-    }
-    for (; !kept.empty(); kept.pop()) pending_.push(kept.top());
-  }
-
-  // The pairs with balls of larger classes, which the sweep leaves out.
-  void find(std::size_t index) {
-    const Ball& ball = balls_[index];
-    const int ownLevel = levels_[index];
-    for (auto level = std::upper_bound(usedLevels_.begin(), usedLevels_.end(), ownLevel);
-         level != usedLevels_.end(); ++level) {
-      const CellKey centre = cellOf(ball.position, *level);
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            const Range* cell = findCell({*level, centre.x + dx, centre.y + dy, centre.z + dz});
-            if (!cell) continue;
-            for (std::size_t k = cell->begin; k < cell->end; ++k) {
-              const std::size_t other = order_[k];
-              if (const std::optional<double> depth = overlapDepth(index, other))
-                pending_.push({std::max(index, other), std::min(index, other), *depth});
-            }
-          }
-        }
-      }
-    }
-  }
-
-  const Range* findCell(const CellKey& key) const {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t slot = CellHash{}(key)&mask;; slot = (slot + 1) & mask) {
-      const std::uint32_t cell = slots_[slot];
-      if (cell == 0) return nullptr;
-      if (cellKeys_[cell - 1] == key) return &cellRanges_[cell - 1];
-    }
-  }
-
-  std::optional<double> overlapDepth(std::size_t a, std::size_t b) const {
-    const double radiusSum = balls_[a].radius + balls_[b].radius;
-    const double depth = radiusSum - (balls_[a].position - balls_[b].position).norm();
-    if (!overlaps(depth, radiusSum)) return std::nullopt;
-    return depth;
-  }
-
-  const std::vector<Ball>& balls_;
-  std::vector<int> levels_;
-  std::vector<std::size_t> order_;  // ball indices grouped by cell
-  // The occupied cells in a flat hash table of open addressing (slots_ holds a cell's index
-  // plus one, 0 when empty, at least half of them empty): a million cells as nodes of a map
-  // would take as many allocations, and a cache miss for each look-up.
-  std::vector<CellKey> cellKeys_;
-  std::vector<Range> cellRanges_;
-  std::vector<std::uint32_t> slots_;
-  std::vector<int> usedLevels_;  // ascending
-  std::priority_queue<Overlap, std::vector<Overlap>, std::greater<Overlap>> pending_;
 };
 
 void checkBallAgainstPlane(const Ball& ball, std::size_t ballIndex, const IndexedPlane& plane,
