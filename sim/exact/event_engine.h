@@ -203,8 +203,8 @@ class EventEngine {
   void leaveTouchingStatics(int i, RunStats& stats);
   void notePenetration(double overlap, RunStats& stats) const;
 
-  // Sliding (engine_sliding.cpp; docs/physics.md, "Sliding"): the ball keeps touching the plane and follows
-  // gravity's component along it, an exact path, until a contact sends it off faster than a
+  // Sliding (engine_sliding.cpp; docs/physics.md, "Sliding"): the ball keeps touching the plane and
+  // follows gravity's component along it, an exact path, until a contact sends it off faster than a
   // bounce of round-off height.
   void startSliding(int i, int plane);
   // What a slow contact of ball i with pressing plane `plane` becomes: kAlone (a slide on it),
