@@ -20,10 +20,10 @@ constexpr long kMaxHeldSlideTurns = 10'000;
 }  // namespace
 
 void EventEngine::hold(int i, const Vec3& velocity, RunStats& stats) {
-  if (held_ >= 0 && held_ != i) release(Vec3::Zero());
+  if (held_.ball() >= 0 && held_.ball() != i) release(Vec3::Zero());
   Particle& p = particles_[i];
   moveTo(i, now_);
-  if (held_ != i) {
+  if (held_.ball() != i) {
     // What rested on it (or it itself) must move as it does.
     if (p.resting)
       wake(i, stats);
@@ -33,9 +33,7 @@ void EventEngine::hold(int i, const Vec3& velocity, RunStats& stats) {
     p.collisionsInBurst = 0;
     p.wedged = false;
     p.held = true;
-    held_ = i;
-    heldPushesInBurst_ = 0;
-    heldLastPush_ = -std::numeric_limits<double>::infinity();
+    held_.take(i);
   }
   tracks_[i].motion.velocity = velocity;
   changed(i);
@@ -43,26 +41,23 @@ void EventEngine::hold(int i, const Vec3& velocity, RunStats& stats) {
 }
 
 void EventEngine::release(const Vec3& velocity) {
-  if (held_ < 0) return;
-  const int i = held_;
+  if (held_.ball() < 0) return;
+  const int i = held_.ball();
   moveTo(i, now_);
   particles_[i].held = false;
-  held_ = -1;
+  held_.letGo();
   tracks_[i].motion.velocity = velocity;
-  recordEnergy(i);  // `swept`'s books start from the throw
+  books_.record(i, tracks_[i].motion);  // `swept`'s books start from the throw
   changed(i);
   predict(i);
 }
 
 void EventEngine::place(const Vec3& position) {
-  if (held_ < 0) return;
-  const int i = held_;
-  Particle& p = particles_[i];
+  if (held_.ball() < 0) return;
+  const int i = held_.ball();
   tracks_[i].motion.position = position;
   tracks_[i].motion.since = now_;
-  const CellGrid::Coords coords = levels_[p.level].grid.coordsOf(position);
-  if (coords != p.coords) moveToCell(i, coords);
-  noteLevelCoords(i, position);
+  cells_.place(i, position);
   changed(i);
   predict(i);
 }
@@ -79,9 +74,7 @@ void EventEngine::heldMeetsStatic(int h, StaticRef ref, RunStats& stats,
   const double touching = tolerance::kTouchFraction * r;
   touchedStatics_.clear();
   touchedStatics_.push_back({n, 0.0, ref.kind});
-  const Particle& p = particles_[h];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const StaticRef other = statics_[s];
+  for (const StaticRef other : cells_.staticsNear(h)) {
     if (other.kind == ref.kind && other.index == ref.index) continue;
     const StaticContact contact = staticContact(h, other);
     if (contact.gap <= touching) touchedStatics_.push_back({contact.normal, 0.0, other.kind});
@@ -99,7 +92,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   moveTo(h, now_);
   moveTo(o, now_);
   if (particles_[o].resting) wake(o, stats);
-  restoreEnergy(o);
+  books_.restore(o, tracks_[o].motion);
   Motion& mh = tracks_[h].motion;
   Motion& mo = tracks_[o].motion;
   Vec3 n = mo.position - mh.position;
@@ -108,16 +101,10 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   notePenetration(radiusSum - distance, stats);
   n = pairNormal(n, distance, mh.velocity - mo.velocity);
   if (crushes(h, o, n)) stopGrab(GrabStopKind::Crush, o);
-  // The burst guard: pushes that get the moving held ball nowhere (a jam of several balls).
-  const double travel = mh.velocity.norm() * (now_ - heldLastPush_);
-  if (mh.velocity.isZero() || travel > tolerance::kBurstTravelFraction * bodies_.radius[h])
-    heldPushesInBurst_ = 0;
-  else if (++heldPushesInBurst_ > tolerance::kMaxCollisionsInBurst)
-    stopGrab(GrabStopKind::Jam, o);
-  heldLastPush_ = now_;
+  if (held_.jams(mh.velocity, bodies_.radius[h], now_)) stopGrab(GrabStopKind::Jam, o);
   const double approach = (mh.velocity - mo.velocity).dot(n);
   const double restitution = std::min(bodies_.restitution[h], bodies_.restitution[o]);
-  noteRestitution(restitution);
+  books_.noteRestitution(restitution);
   // The floor of collideBalls; the held ball feels no gravity (gravityOn).
   const auto [minimum, lossless] = pairFloor(h, o, n, restitution);
   Vec3 heldVelocity = mh.velocity, exchanged = mo.velocity;
@@ -131,7 +118,7 @@ void EventEngine::pushByHeld(int h, int o, RunStats& stats, std::vector<Collisio
   if (log)
     log->push_back(
         {now_, ContactKind::BallBall, h, o, mh.position + bodies_.radius[h] * n, approach});
-  closeBooks(o, exchangedEnergy);
+  books_.close(o, exchangedEnergy, tracks_[o].motion);
   predict(h);
   predict(o);
 }
@@ -148,9 +135,8 @@ bool EventEngine::crushes(int h, int o, const Vec3& n) const {
     const double into = -n.dot(normal);  // cos(φ)
     return into > headOn && std::max(gap, 0.0) < room * into;
   };
-  const Particle& p = particles_[o];
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const StaticContact contact = staticContact(o, statics_[s]);
+  for (const StaticRef shape : cells_.staticsNear(o)) {
+    const StaticContact contact = staticContact(o, shape);
     if (blocks(contact.normal, contact.gap)) return true;
   }
   bool blocked = false;
@@ -165,9 +151,10 @@ bool EventEngine::crushes(int h, int o, const Vec3& n) const {
 }
 
 void EventEngine::stopGrab(GrabStopKind kind, int other) {
-  tracks_[held_].motion.velocity = Vec3::Zero();
-  changed(held_);
-  grabStop_ = GrabStop{kind, held_, other, now_};
+  const int h = held_.ball();
+  tracks_[h].motion.velocity = Vec3::Zero();
+  changed(h);
+  held_.stop(GrabStop{kind, h, other, now_});
 }
 
 }  // namespace carom

@@ -1,15 +1,14 @@
+// EventEngine's loop: the balls' predictions, the queue of their events, and the state the
+// engine hands out.
+
 #include "sim/exact/event_engine.h"
 
 #include "sim/core/prefault.h"
-#include "sim/core/tolerances.h"
-#include "sim/dynamics/response.h"
 #include "sim/dynamics/rest_policy.h"
 #include "sim/geometry/contact_time.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
-#include <tuple>
 
 namespace carom {
 namespace {
@@ -26,7 +25,10 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
       pathAcceleration_(pathAcceleration),
       straightPaths_(pathAcceleration.isZero()),
       collapseSpeed_(collapseSpeed),
-      now_(now) {
+      now_(now),
+      slides_(bodies, gravity, pathAcceleration),
+      // Straight sweeps under gravity are the only paths that are not the true ones.
+      books_(straightPaths_, gravity, bodies.ballCount()) {
   const int n = bodies.ballCount();
   resizePrefaulted(particles_, n);
   resizePrefaulted(tracks_, n);
@@ -44,43 +46,23 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
     restSpeed_[i] = std::max(restSpeed(gravity_, bodies.radius[i]), stepSpeed);
     slideSpeed_[i] = std::max(slideSpeed(gravity_, bodies.radius[i]), stepSpeed);
   }
-  for (int k = 0; k < static_cast<int>(bodies.planes.size()); ++k)
-    slideSurfaces_.push_back({bodies.planes[k], {StaticKind::Plane, k}});
-  for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k) {
-    const BoxShape& box = bodies.boxes[k];
-    for (int axis = 0; axis < 3; ++axis)
-      for (const double side : {-1.0, 1.0}) {
-        const Vec3 normal = side * box.axes.col(axis);
-        slideSurfaces_.push_back(
-            {{normal, normal.dot(box.center) + box.half[axis]}, {StaticKind::Box, k}, axis});
-      }
-  }
-  firstCap_ = static_cast<int>(slideSurfaces_.size());
-  for (int k = 0; k < static_cast<int>(bodies.cylinders.size()); ++k) {
-    const CylinderShape& cylinder = bodies.cylinders[k];
-    for (const double side : {-1.0, 1.0}) {
-      const Vec3 normal = side * cylinder.axis;
-      slideSurfaces_.push_back(
-          {{normal, normal.dot(cylinder.point) + cylinder.halfLength}, {StaticKind::Cylinder, k}});
-    }
-  }
-  for (const SlideSurface& surface : slideSurfaces_) {
-    const Vec3& n = surface.plane.normal;
-    slideAcceleration_.push_back(pathAcceleration_ - pathAcceleration_.dot(n) * n);
-    slideGravity_.push_back(gravity_ - gravity_.dot(n) * n);
-  }
   creaseLine_.resize(n);
   creaseAcceleration_.resize(n);
-  // Straight sweeps under gravity are the only paths that are not the true ones.
-  restoresEnergy_ = straightPaths_ && !gravity_.isZero();
-  if (restoresEnergy_) {
-    energy_.resize(n);
-    energyExcess_.assign(n, 0.0);
-    for (int i = 0; i < n; ++i) recordEnergy(i);
-  }
-  buildGrid();
-  buildStaticLists();
-  for (int i = 0; i < n; ++i) noteStatics(i);
+  for (int i = 0; i < n; ++i) books_.record(i, tracks_[i].motion);
+  cells_.build(bodies_, positions());
+  predictAll();
+}
+
+std::vector<Vec3> EventEngine::positions() const {
+  std::vector<Vec3> at(particles_.size());
+  for (int i = 0; i < static_cast<int>(particles_.size()); ++i)
+    at[i] = tracks_[i].motion.positionAt(now_, accelerationOf(i));
+  return at;
+}
+
+void EventEngine::rebuildCellsIfCrowded() {
+  if (!cells_.crowded()) return;
+  cells_.build(bodies_, positions());
   predictAll();
 }
 
@@ -111,7 +93,7 @@ void EventEngine::predict(int i) {
     predictions_[i].contact = {};
     findStaticContact(i, path, ball.time);
     if (ball.time < predictions_[i].contact.time) predictions_[i].contact = ball;
-    findCrossing(i, path);
+    predictions_[i].crossing = cells_.nextCrossing(i, path, now_, horizon_, straightPaths_);
   }
   schedule(i);
 }
@@ -124,8 +106,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
       until < kNever ? until + 1e-9 * (until - now_) + std::numeric_limits<double>::min() : kNever;
   const double r = bodies_.radius[i];
   const Particle& p = particles_[i];
-  for (int s = particles_[i].staticBegin; s < particles_[i].staticEnd; ++s) {
-    const StaticRef ref = statics_[s];
+  for (const StaticRef ref : cells_.staticsNear(i)) {
     if (slidesAgainst(p, ref)) continue;  // it slides along, never into it
     const double horizon = std::min({best.time, horizon_, bound}) - now_;
     double t = kNever;
@@ -145,7 +126,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
     }
     if (t < horizon) best = {now_ + t, kind, ref.index, 0};
   }
-  if (p.slidePlane >= 0 && slideSurfaces_[p.slidePlane].owner.kind != StaticKind::Plane)
+  if (p.slidePlane >= 0 && slides_.surface(p.slidePlane).owner.kind != StaticKind::Plane)
     findSlideEnd(i, path);
 }
 
@@ -193,59 +174,6 @@ void EventEngine::findBallContact(int i, const BallPath& path, int k) {
     best = {now_ + t, EventKind::Ball, k, particles_[k].counter};
 }
 
-void EventEngine::findCrossing(int i, const BallPath& path) {
-  Crossing& next = predictions_[i].crossing;
-  // A crossing closer than the time's resolution comes an ulp later rather than now: the ball
-  // has not reached the face yet, and one taken now found the ball back beyond the face it had
-  // crossed and crossed again, to and fro for ever at one instant (at 5e53 s, gravity switched
-  // on brought a ball back to a face 1e49 m below it in 1e23 s).
-  const auto timeOf = [&](double t) {
-    const double time = now_ + t;
-    return t > 0.0 && time <= now_ ? std::nextafter(now_, kNever) : time;
-  };
-  // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
-  const Particle& p = particles_[i];
-  const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
-    const CellGrid& grid = levels_[l].grid;
-    const auto lowerFace = [&](int a) {
-      return lattice ? grid.latticeLowerFace(a, c[a], latticeMargin(p.level, l, a))
-                     : grid.lowerFace(a, c[a]);
-    };
-    const auto upperFace = [&](int a) {
-      return lattice ? grid.latticeUpperFace(a, c[a], latticeMargin(p.level, l, a))
-                     : grid.upperFace(a, c[a]);
-    };
-    const auto level = static_cast<std::int8_t>(l);
-    if (straightPaths_) {
-      for (int a = 0; a < 3; ++a) {
-        const double t =
-            straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
-        const double time = timeOf(t);
-        if (time < std::min(next.time, horizon_))
-          next = {time, static_cast<std::int8_t>(a),
-                  static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
-      }
-      return;
-    }
-    for (int a = 0; a < 3; ++a) {
-      for (int direction : {1, -1}) {
-        const double face = direction > 0 ? upperFace(a) : lowerFace(a);
-        const double horizon = std::min(next.time, horizon_) - now_;
-        const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
-                                              path.acceleration[a], face, direction > 0, horizon);
-        if (t < horizon)
-          next = {timeOf(t), static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
-                  level};
-      }
-    }
-  };
-  findIn(p.level, p.coords, false);
-  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
-    if (l > p.level) findIn(l, levelCoords(i, l), false);
-    if (l < p.level && followsFiner(p.level, l)) findIn(l, levelCoords(i, l), true);
-  }
-}
-
 void EventEngine::schedule(int i) {
   queue_.set(i, std::min(predictions_[i].contact.time, predictions_[i].crossing.time));
 }
@@ -265,58 +193,14 @@ void EventEngine::warnNeighbours(int i) {
 
 void EventEngine::cross(int i, RunStats& stats) {
   ++stats.cellCrossings;
-  Particle& p = particles_[i];
-  const Crossing crossing = predictions_[i].crossing;
-  const int crossed = crossing.level;
-  const bool own = crossed == p.level;
-  const int axis = crossing.axis;
-  CellGrid::Coords coords = own ? p.coords : levelCoords(i, crossed);
-  coords[axis] += crossing.direction;
+  const CellLevels::Crossing crossing = predictions_[i].crossing;
   const BallPath path = pathAt(i, now_);
   // The path is unchanged, so the contact already predicted stays valid: only the statics of the
   // new cell and the balls in the cells that just came into reach can bring it forward.
-  if (own) {
-    moveToCell(i, coords);
-    findStaticContact(i, path);
-  } else {
-    levelCoords(i, crossed) = coords;
-  }
-  // What came into reach in the crossed level: the layer of cells ahead of its block, or, in a
-  // finer level it follows, the face of its box ahead.
-  CellGrid::Coords from = coords, to = coords;
-  if (crossed < p.level) {
-    // The box's face ahead: the lattice cell it is now, moved by its reach.
-    CellGrid::Coords ahead = coords;
-    ahead[axis] += crossing.direction * boxReach(p.level, crossed)[axis];
-    std::tie(from, to) = followerBox(i, crossed, ahead);
-    from[axis] = to[axis] = std::clamp(ahead[axis], 0, levels_[crossed].grid.counts()[axis] - 1);
-  } else {
-    for (int a = 0; a < 3; ++a) {
-      --from[a];
-      ++to[a];
-    }
-    (crossing.direction > 0 ? from : to)[axis] = (crossing.direction > 0 ? to : from)[axis];
-  }
-  findBallContacts(i, path, [&](auto&& visit) {
-    const auto visitCell = [&](int cell) { members_.forEachIn(cell, visit); };
-    forEachCellIn(crossed, from, to, visitCell);
-    if (!own) return;
-    for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
-      if (l < p.level && !followsFiner(p.level, l)) {
-        // The smaller balls under the new layer of its own cells.
-        forEachFinerCell(l, p.level, from, to, visitCell);
-      } else if (l > p.level && followsFiner(l, p.level)) {
-        // Larger balls that follow this level: it may have come into their boxes.
-        levels_[l].grid.forEachNeighbourCell(levelCoords(i, l), [&](int cell) {
-          members_.forEachIn(levels_[l].firstCell + cell, [&](int k) {
-            if (inFollowersBox(i, k)) visit(k);
-          });
-        });
-      }
-    }
-  });
-  predictions_[i].crossing = {};
-  findCrossing(i, path);
+  if (cells_.cross(i, crossing)) findStaticContact(i, path);
+  findBallContacts(i, path,
+                   [&](auto&& visit) { cells_.forEachBallComingIntoReach(i, crossing, visit); });
+  predictions_[i].crossing = cells_.nextCrossing(i, path, now_, horizon_, straightPaths_);
   schedule(i);
 }
 
@@ -334,7 +218,7 @@ void EventEngine::advanceTo(double end, RunStats& stats, std::vector<CollisionRe
 
 void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* log) {
   ++stats.events;
-  inelasticEvent_ = false;
+  books_.startEvent();
   if (predictions_[i].crossing.time <= predictions_[i].contact.time) {
     cross(i, stats);
     return;
@@ -356,7 +240,7 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
         return;
       }
       moveTo(i, now_);
-      collideWithStatic(i, ref, surfaceAt(i, ref), stats, log);
+      collideWithStatic(i, ref, slides_.surfaceAt(tracks_[i].motion.position, ref), stats, log);
       return;
     }
     case EventKind::Ball: {
@@ -377,261 +261,8 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
   }
 }
 
-void EventEngine::collideWithStatic(int i, StaticRef ref, int face, RunStats& stats,
-                                    std::vector<CollisionRecord>* log) {
-  restoreEnergy(i);
-  const Motion& m = tracks_[i].motion;
-  const double r = bodies_.radius[i];
-  const auto [n, gap, restitution] = staticContact(i, ref);
-  notePenetration(-gap, stats);
-  const double approach = -m.velocity.dot(n);
-  noteRestitution(restitution);
-  collideWithSurface(i, n, restitution, stats, face);
-  if (!particles_[i].resting) {
-    leaveTouchingStatics(i, stats);
-    updateSlide(i, stats);
-  }
-  const ContactKind kind = contactKindOf(ref.kind);
-  stats.collisions.add(kind);
-  if (log) log->push_back({now_, kind, i, ref.index, m.position - r * n, approach});
-  closeBooks(i, 0.0);
-  if (!particles_[i].resting) predict(i);
-}
-
-void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<CollisionRecord>* log) {
-  Particle& a = particles_[i];
-  Particle& b = particles_[j];
-  moveTo(i, now_);
-  moveTo(j, now_);
-  if (!a.resting) restoreEnergy(i);
-  if (!b.resting) restoreEnergy(j);
-  Motion& ma = tracks_[i].motion;
-  Motion& mb = tracks_[j].motion;
-  Vec3 n = mb.position - ma.position;
-  const double distance = n.norm();
-  const double radiusSum = bodies_.radius[i] + bodies_.radius[j];
-  notePenetration(radiusSum - distance, stats);
-  n = pairNormal(n, distance, ma.velocity - mb.velocity);  // centres that coincide: head-on
-  const double approach = (ma.velocity - mb.velocity).dot(n);
-  const double restitution = std::min(bodies_.restitution[i], bodies_.restitution[j]);
-  noteRestitution(restitution);
-  // The contact was predicted, so it is resolved even when round-off makes the approach look
-  // zero or negative here: the minimum separation then parts the pair, and the same contact
-  // cannot be predicted again at this instant.
-  // Too gentle to move a resting ball: it acts as an immovable surface, unless ball i would rest
-  // on it and it cannot carry i (restCheck), when it wakes first.
-  bool answered = false;
-  double exchangedI = 0.0, exchangedJ = 0.0;
-  if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
-    answered = restsOnContact(i, -n, restitution, stats);
-    if (!answered && b.resting) {
-      bounceOffSurface(i, -n, restitution, stats);
-      if (!a.resting) updateSlide(i, stats);
-      answered = true;
-    }
-  }
-  if (!answered) {
-    if (b.resting) wake(j, stats);
-    // A pair that gravity presses together (a falling ball on a sliding one) separates at no
-    // less than the rest speed, as a ball on a floor would (rule 1 of rest_policy.h). Only an
-    // inelastic pair can collapse: an elastic one parts at the slide speed, which it needs only
-    // when it meets at no speed (balls placed touching, a frictionless pyramid).
-    const auto [minimum, lossless] = pairFloor(i, j, n, restitution);
-    // What the exchange alone gives each ball, without the minimum separation: the energy an
-    // elastic pair's books keep (closeBooks).
-    Vec3 exchangedA = ma.velocity, exchangedB = mb.velocity;
-    resolveBallBall(exchangedA, exchangedB, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
-                    restitution, 0.0);
-    exchangedI = 0.5 * (exchangedA.squaredNorm() - ma.velocity.squaredNorm());
-    exchangedJ = 0.5 * (exchangedB.squaredNorm() - mb.velocity.squaredNorm());
-    resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
-                    restitution, minimum, lossless);
-    changed(i);
-    changed(j);
-    updateSlide(i, stats);
-    updateSlide(j, stats);
-  }
-  ++stats.collisions.ballBall;
-  if (log)
-    log->push_back(
-        {now_, ContactKind::BallBall, i, j, ma.position + bodies_.radius[i] * n, approach});
-  closeBooks(i, exchangedI);
-  // A resting ball that answered as a surface took no part.
-  if (!answered) closeBooks(j, exchangedJ);
-  if (!a.resting) predict(i);
-  if (!b.resting) predict(j);
-}
-
-EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
-                                              double restitution) const {
-  const bool pressed = (gravityOn(j) - gravityOn(i)).dot(n) < 0.0;
-  const double separation = restitution >= 1.0 ? std::min(slideSpeed_[i], slideSpeed_[j])
-                                               : std::min(restSpeed_[i], restSpeed_[j]);
-  // Parting slower than round-off in the balls' own velocities parts nothing (kTangentRateFraction
-  // of the speed, and of the pair's relative speed at most half that): the contact came again
-  // at the same instant, for ever. The collapse speed is the scene's, and a light pair far
-  // faster than its heavy balls (1e11 m/s against 20) took 1e-6 m/s, less than an ulp.
-  constexpr double kRoundOffRate = 2.0 * tolerance::kTangentRateFraction;
-  const double fastest2 =
-      std::max(tracks_[i].motion.velocity.squaredNorm(), tracks_[j].motion.velocity.squaredNorm());
-  // Any other inelastic pair under gravity loses nothing below the rest speed (rule 8).
-  const double minimum = pressed ? std::max(collapseSpeed_, separation) : collapseSpeed_;
-  return {minimum * minimum >= kRoundOffRate * kRoundOffRate * fastest2
-              ? minimum
-              : kRoundOffRate * std::sqrt(fastest2),
-          pressed || restitution >= 1.0 ? 0.0 : separation};
-}
-
-void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                                     int plane) {
-  // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
-  // wall and a resting ball would otherwise rattle between them.
-  if (!restsOnContact(i, n, restitution, stats)) bounceOffSurface(i, n, restitution, stats, plane);
-}
-
-void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                                   int plane) {
-  Particle& p = particles_[i];
-  Motion& m = tracks_[i].motion;
-  const double approach = -m.velocity.dot(n);
-  const double speed = m.velocity.norm();
-  const bool pressed = gravity_.dot(n) < 0.0;
-  const double rest = restSpeed_[i];
-  const int capture =
-      plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]
-          ? slideCapture(i, plane)
-          : kNoCapture;
-  if (capture != kNoCapture) {
-    startSliding(i, plane);
-    if (capture != kAlone) startCrease(i, capture);
-    // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
-    if (restsOnContact(i, n, restitution, stats)) return;
-  } else {
-    // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
-    // slides instead (above), and so bounces in finitely many events.
-    // An elastic contact cannot collapse either: it needs a minimum only to part when it meets
-    // at no speed, and takes the slide speed's.
-    const double pressedMinimum = plane >= 0 ? 0.0 : restitution >= 1.0 ? slideSpeed_[i] : rest;
-    const double minimum = pressed ? pressedMinimum : collapseSpeed_;
-    if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
-    resolveAgainstSurface(m.velocity, n, restitution, minimum);
-    changed(i);
-  }
-  // A cycle of contacts that lets time advance by round-off only must not hang the run. The
-  // flight since the last contact is negligible by the ball's own measure, its speed times the
-  // time against its size, so a fast ball crossing a box is never taken for a wedged one; or
-  // when it is within a few ulps of the ball's position, which it cannot move (a ball 1e12 m
-  // out hopping along a cylinder stayed where it was and hopped for ever).
-  const double positionRoundOff =
-      4.0 * std::numeric_limits<double>::epsilon() * m.position.cwiseAbs().maxCoeff();
-  if ((now_ - p.lastSurfaceCollision) * speed <=
-      std::max(tolerance::kBurstTravelFraction * bodies_.radius[i], positionRoundOff)) {
-    if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) {
-      putToRest(i, stats);
-      p.wedged = true;
-    }
-  } else {
-    p.collisionsInBurst = 0;
-  }
-  p.lastSurfaceCollision = now_;
-}
-
-EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
-                                                      const Vec3& position) const {
-  const double r = bodies_.radius[i];
-  if (ref.kind == StaticKind::Box) {
-    const BoxShape::Contact contact = bodies_.boxes[ref.index].contact(position, r);
-    return {contact.normal, contact.gap, restitutionWith(i, ref)};
-  }
-  if (ref.kind == StaticKind::Cylinder) {
-    const CylinderShape::Contact contact = bodies_.cylinders[ref.index].contact(position, r);
-    return {contact.normal, contact.gap, restitutionWith(i, ref)};
-  }
-  const PlaneShape& plane = bodies_.planes[ref.index];
-  return {plane.normal, plane.gap(position, r), restitutionWith(i, ref)};
-}
-
-double EventEngine::restitutionWith(int i, StaticRef ref) const {
-  const std::vector<double>& shapes = ref.kind == StaticKind::Box ? bodies_.boxRestitution
-                                      : ref.kind == StaticKind::Cylinder
-                                          ? bodies_.cylinderRestitution
-                                          : bodies_.planeRestitution;
-  return std::min(bodies_.restitution[i], shapes[ref.index]);
-}
-
-// A ball touching several static shapes at once (the bottom of a narrow wedge) leaves them all
-// in the one event: it reflects off each shape it still moves into, in turn, as events at the
-// same instant would, until it moves into none. In a wedge of angle θ that takes about π/θ
-// reflections, each a few dot products, where as events each would count towards the burst
-// guard and end in rest with the energy gone. Past kMaxSimultaneousReflections (wedges under
-// about 3e-7 rad, or a ball jammed between parallel walls) the burst guard's rest applies.
-void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
-  const Particle& p = particles_[i];
-  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
-  touchedStatics_.clear();
-  for (int s = p.staticBegin; s < p.staticEnd; ++s) {
-    const StaticRef ref = statics_[s];
-    if (slidesAgainst(p, ref)) continue;  // see updateSlide
-    const auto [n, gap, restitution] = staticContact(i, ref);
-    if (gap <= touching) touchedStatics_.push_back({n, restitution, ref.kind});
-  }
-  // No minimum separation here: in a wedge opening slower than the rest speed it would send
-  // the ball from one wall into the other for ever. An inelastic ball slows down in the loop
-  // instead, and then rests by the supports rule at its next contact.
-  const bool left =
-      reflectOffEach(tracks_[i].motion.velocity, touchedStatics_,
-                     tolerance::kMaxSimultaneousReflections, [&](std::size_t k, double) {
-                       noteRestitution(touchedStatics_[k].restitution);
-                       stats.collisions.add(contactKindOf(touchedStatics_[k].kind));
-                     });
-  if (left)
-    changed(i);
-  else
-    putToRest(i, stats);
-}
-
-void EventEngine::recordEnergy(int i) {
-  if (!restoresEnergy_) return;
-  const Motion& m = tracks_[i].motion;
-  energy_[i] = 0.5 * m.velocity.squaredNorm() - gravity_.dot(m.position) - energyExcess_[i];
-  energyExcess_[i] = 0.0;
-}
-
-void EventEngine::closeBooks(int i, double exchanged) {
-  if (!restoresEnergy_) return;
-  if (inelasticEvent_) {
-    recordEnergy(i);
-    return;
-  }
-  energy_[i] += exchanged;
-  energyExcess_[i] = 0.0;
-}
-
-void EventEngine::restoreEnergy(int i) {
-  if (!restoresEnergy_) return;
-  Motion& m = tracks_[i].motion;
-  energyExcess_[i] = restoreSpecificEnergy(m.velocity, m.position, gravity_, energy_[i]);
-}
-
 void EventEngine::changed(int i) {
   ++particles_[i].counter;
-}
-
-void EventEngine::notePenetration(double overlap, RunStats& stats) const {
-  stats.maxPenetration = std::max(stats.maxPenetration, overlap);
-}
-
-std::string EventEngine::gridSummary() const {
-  std::string grid = levels_.size() > 1 ? "cell grids" : "cell grid";
-  for (std::size_t l = 0; l < levels_.size(); ++l) {
-    const CellGrid::Coords& c = levels_[l].grid.counts();
-    grid += (l > 0 ? ", " : " ") + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
-            std::to_string(c[2]);
-  }
-  if (levels_.size() > 1) grid += " (" + std::to_string(levels_.size()) + " ball size classes)";
-  if (sharedStatics_)
-    return grid + ", all " + std::to_string(statics_.size()) + " static shapes in every cell";
-  return grid + ", " + std::to_string(statics_.size()) + " static-shape entries in cells";
 }
 
 BallState EventEngine::stateOf(int ball) const {
@@ -667,13 +298,9 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
 std::size_t EventEngine::memoryBytes() const {
   return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
          carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
-         carom::memoryBytes(energy_) + carom::memoryBytes(energyExcess_) +
-         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) +
-         carom::memoryBytes(slideSurfaces_) + carom::memoryBytes(slideAcceleration_) +
-         carom::memoryBytes(slideGravity_) + carom::memoryBytes(creaseLine_) +
-         carom::memoryBytes(creaseAcceleration_) + members_.memoryBytes() +
-         carom::memoryBytes(levelCoords_) + carom::memoryBytes(levels_) +
-         carom::memoryBytes(staticStart_) + carom::memoryBytes(statics_) + queue_.memoryBytes();
+         books_.memoryBytes() + carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) +
+         slides_.memoryBytes() + carom::memoryBytes(creaseLine_) +
+         carom::memoryBytes(creaseAcceleration_) + cells_.memoryBytes() + queue_.memoryBytes();
 }
 
 }  // namespace carom

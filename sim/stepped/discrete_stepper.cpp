@@ -318,7 +318,7 @@ class DiscreteStepper final : public Stepper {
     if (pushes_[i] == 2) pushedTwice_.push_back(i);
   }
 
-  // As in `swept` (EventEngine::restoreEnergy): a contact first gives each ball back the energy
+  // As in `swept` (EnergyBooks::restore): a contact first gives each ball back the energy
   // it had after its last contact, which the integrator's steps and the push out of the overlap
   // do not keep, so that their errors never outlive one flight. Gravity's potential makes them
   // matter; without gravity nothing is restored.

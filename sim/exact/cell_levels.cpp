@@ -1,9 +1,10 @@
-// EventEngine's cells: a grid for each size class of balls over where they are, built again when
-// they spread beyond it, and for each cell the static shapes a ball in it can meet.
+// The cells: a grid for each size class of balls over where they are, built again when they
+// spread beyond it, and for each cell the static shapes a ball in it can meet.
 
-#include "sim/exact/event_engine.h"
+#include "sim/exact/cell_levels.h"
 
 #include "sim/core/prefault.h"
+#include "sim/geometry/contact_time.h"
 
 #include <algorithm>
 #include <array>
@@ -28,11 +29,18 @@ int sizeClass(double radius, double smallest, int doublingsPerClass) {
 
 }  // namespace
 
-void EventEngine::buildGrid() {
-  const int n = ballCount();
+void CellLevels::build(const Bodies& bodies, const std::vector<Vec3>& positions) {
+  buildGrid(bodies, positions);
+  buildStaticLists(bodies, positions.size());
+  for (int i = 0; i < static_cast<int>(positions.size()); ++i) noteStatics(i);
+}
+
+void CellLevels::buildGrid(const Bodies& bodies, const std::vector<Vec3>& positions) {
+  const int n = static_cast<int>(positions.size());
   levels_.clear();
   levelCoords_.clear();
-  cellsCrowded_ = false;
+  crowded_ = false;
+  if (places_.size() != positions.size()) resizePrefaulted(places_, positions.size());
   if (n == 0) {
     // A scene without balls (being built in the editor) gets one unit cell.
     levels_.push_back({CellGrid(Vec3::Zero(), Vec3::Zero(), 1.0, 64)});
@@ -41,15 +49,15 @@ void EventEngine::buildGrid() {
   }
   double smallest = kNever, largest = 0.0;
   for (int i = 0; i < n; ++i) {
-    smallest = std::min(smallest, bodies_.radius[i]);
-    largest = std::max(largest, bodies_.radius[i]);
+    smallest = std::min(smallest, bodies.radius[i]);
+    largest = std::max(largest, bodies.radius[i]);
   }
   smallest = std::max(smallest, std::numeric_limits<double>::min());
   const int doublings = static_cast<int>(std::floor(std::log2(largest / smallest)));
   const int doublingsPerClass = std::max(1, doublings / kMaxSizeClasses + 1);
   std::vector<int> classes;
   for (int i = 0; i < n; ++i)
-    classes.push_back(sizeClass(bodies_.radius[i], smallest, doublingsPerClass));
+    classes.push_back(sizeClass(bodies.radius[i], smallest, doublingsPerClass));
   std::vector<int> used = classes;
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
@@ -59,12 +67,12 @@ void EventEngine::buildGrid() {
   for (int i = 0; i < n; ++i) {
     const int l =
         static_cast<int>(std::lower_bound(used.begin(), used.end(), classes[i]) - used.begin());
-    particles_[i].level = static_cast<std::int8_t>(l);
-    const Vec3 at = tracks_[i].motion.positionAt(now_, accelerationOf(i));
+    places_[i].level = static_cast<std::int8_t>(l);
+    const Vec3& at = positions[i];
     lower[l] = lower[l].cwiseMin(at);
     upper[l] = upper[l].cwiseMax(at);
-    levels_[l].maxRadius = std::max(levels_[l].maxRadius, bodies_.radius[i]);
-    levels_[l].minRadius = std::min(levels_[l].minRadius, bodies_.radius[i]);
+    levels_[l].maxRadius = std::max(levels_[l].maxRadius, bodies.radius[i]);
+    levels_[l].minRadius = std::min(levels_[l].minRadius, bodies.radius[i]);
     ++levels_[l].balls;
   }
   // Each grid covers its balls where they are now, and the finite shapes, where balls go (a
@@ -77,12 +85,12 @@ void EventEngine::buildGrid() {
     shapesLower = shapesLower.cwiseMin(centre - reach);
     shapesUpper = shapesUpper.cwiseMax(centre + reach);
   };
-  for (const CylinderShape& cylinder : bodies_.cylinders)
+  for (const CylinderShape& cylinder : bodies.cylinders)
     if (cylinder.capped()) cover(cylinder.point, cylinder.reach());
-  for (const BoxShape& box : bodies_.boxes) cover(box.center, box.reach());
+  for (const BoxShape& box : bodies.boxes) cover(box.center, box.reach());
   int cells = 0;
   for (std::size_t l = 0; l < levels_.size(); ++l) {
-    CellLevel& level = levels_[l];
+    Level& level = levels_[l];
     lower[l] = lower[l].cwiseMin(shapesLower);
     upper[l] = upper[l].cwiseMax(shapesUpper);
     const double margin = 2.0 * level.maxRadius;
@@ -123,14 +131,13 @@ void EventEngine::buildGrid() {
       if (near) boxReach_[std::size_t(l) * levelCount + finer] = reach;
     }
   if (levelCount > 1) levelCoords_.resize(std::size_t(n) * levelCount);
-  for (int i = 0; i < n; ++i) fileBall(i);
-  for (CellLevel& level : levels_) level.builtBorderBalls = level.borderBalls;
+  for (int i = 0; i < n; ++i) fileBall(i, positions[i]);
+  for (Level& level : levels_) level.builtBorderBalls = level.borderBalls;
 }
 
-void EventEngine::fileBall(int i) {
-  Particle& p = particles_[i];
-  const Vec3 at = tracks_[i].motion.positionAt(now_, accelerationOf(i));
-  CellLevel& level = levels_[p.level];
+void CellLevels::fileBall(int i, const Vec3& at) {
+  Place& p = places_[i];
+  Level& level = levels_[p.level];
   p.coords = level.grid.coordsOf(at);
   p.cell = level.firstCell + level.grid.index(p.coords);
   members_.insert(i, p.cell);
@@ -138,8 +145,8 @@ void EventEngine::fileBall(int i) {
   noteLevelCoords(i, at);
 }
 
-void EventEngine::noteLevelCoords(int i, const Vec3& at) {
-  const int own = particles_[i].level;
+void CellLevels::noteLevelCoords(int i, const Vec3& at) {
+  const int own = places_[i].level;
   for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
     const CellGrid& grid = levels_[l].grid;
     if (l > own) {
@@ -151,9 +158,9 @@ void EventEngine::noteLevelCoords(int i, const Vec3& at) {
   }
 }
 
-void EventEngine::moveToCell(int i, const CellGrid::Coords& coords) {
-  Particle& p = particles_[i];
-  CellLevel& level = levels_[p.level];
+void CellLevels::moveToCell(int i, const CellGrid::Coords& coords) {
+  Place& p = places_[i];
+  Level& level = levels_[p.level];
   if (level.grid.isBorder(p.coords)) --level.borderBalls;
   p.coords = coords;
   members_.remove(i);
@@ -161,21 +168,13 @@ void EventEngine::moveToCell(int i, const CellGrid::Coords& coords) {
   members_.insert(i, p.cell);
   if (level.grid.isBorder(coords) &&
       ++level.borderBalls > level.builtBorderBalls + std::max(64, level.balls / 8))
-    cellsCrowded_ = true;
+    crowded_ = true;
   noteStatics(i);
 }
 
-void EventEngine::rebuildCellsIfCrowded() {
-  if (!cellsCrowded_) return;
-  buildGrid();
-  buildStaticLists();
-  for (int i = 0; i < ballCount(); ++i) noteStatics(i);
-  predictAll();
-}
-
-void EventEngine::buildStaticLists() {
+void CellLevels::buildStaticLists(const Bodies& bodies, std::size_t ballCount) {
   int cells = 0;
-  for (const CellLevel& level : levels_) cells += level.grid.cellCount();
+  for (const Level& level : levels_) cells += level.grid.cellCount();
   reservePrefaulted(staticStart_, std::size_t(cells) + 1);
   staticStart_.assign(cells + 1, 0);
   statics_.clear();
@@ -184,7 +183,7 @@ void EventEngine::buildStaticLists() {
   // the lists' order (planes, cylinders, boxes), so each cell's list comes out in that order. A
   // level's cells hold shapes within reach of its largest ball.
   const auto forEachNearPair = [&](auto&& f) {
-    for (const CellLevel& level : levels_) {
+    for (const Level& level : levels_) {
       const CellGrid& grid = level.grid;
       const double reach = level.maxRadius * (1.0 + 1e-9);
       // The cells' faces along each axis, computed once: a million balls make some ten million
@@ -289,12 +288,12 @@ void EventEngine::buildStaticLists() {
           }
       };
       const auto forEachNearPairInLevel = [&](auto&& f) {
-        for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
-          forEachCellNearPlane(bodies_.planes[k], [&](int cell) {
+        for (int k = 0; k < static_cast<int>(bodies.planes.size()); ++k)
+          forEachCellNearPlane(bodies.planes[k], [&](int cell) {
             f(level.firstCell + cell, StaticRef{StaticKind::Plane, k});
           });
-        for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k) {
-          const CylinderShape& cylinder = bodies_.cylinders[k];
+        for (int k = 0; k < static_cast<int>(bodies.cylinders.size()); ++k) {
+          const CylinderShape& cylinder = bodies.cylinders[k];
           const Vec3* centre = cylinder.capped() ? &cylinder.point : nullptr;
           forEachCandidate(centre, cylinder.capped() ? cylinder.reach() : Vec3::Zero(),
                            [&](int cell, const CellBox& box) {
@@ -302,8 +301,8 @@ void EventEngine::buildStaticLists() {
                                f(level.firstCell + cell, StaticRef{StaticKind::Cylinder, k});
                            });
         }
-        for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k) {
-          const BoxShape& shape = bodies_.boxes[k];
+        for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k) {
+          const BoxShape& shape = bodies.boxes[k];
           forEachCandidate(&shape.center, shape.reach(), [&](int cell, const CellBox& box) {
             if (boxNear(shape, box)) f(level.firstCell + cell, StaticRef{StaticKind::Box, k});
           });
@@ -319,14 +318,14 @@ void EventEngine::buildStaticLists() {
   });
   // Many shapes in many cells would take more memory than the lists save time: then every cell
   // shares one list of all shapes.
-  const std::size_t budget = 16 * (particles_.size() + 1024) + 4 * std::size_t(cells);
+  const std::size_t budget = 16 * (ballCount + 1024) + 4 * std::size_t(cells);
   if (total > budget) {
     staticStart_.assign(cells + 1, 0);
-    for (int k = 0; k < static_cast<int>(bodies_.planes.size()); ++k)
+    for (int k = 0; k < static_cast<int>(bodies.planes.size()); ++k)
       statics_.push_back({StaticKind::Plane, k});
-    for (int k = 0; k < static_cast<int>(bodies_.cylinders.size()); ++k)
+    for (int k = 0; k < static_cast<int>(bodies.cylinders.size()); ++k)
       statics_.push_back({StaticKind::Cylinder, k});
-    for (int k = 0; k < static_cast<int>(bodies_.boxes.size()); ++k)
+    for (int k = 0; k < static_cast<int>(bodies.boxes.size()); ++k)
       statics_.push_back({StaticKind::Box, k});
     sharedStatics_ = true;
     return;
@@ -337,10 +336,104 @@ void EventEngine::buildStaticLists() {
   forEachNearPair([&](int cell, StaticRef ref) { statics_[cursor[cell]++] = ref; });
 }
 
-void EventEngine::noteStatics(int i) {
-  Particle& p = particles_[i];
+void CellLevels::noteStatics(int i) {
+  Place& p = places_[i];
   p.staticBegin = sharedStatics_ ? 0 : staticStart_[p.cell];
   p.staticEnd = sharedStatics_ ? static_cast<int>(statics_.size()) : staticStart_[p.cell + 1];
+}
+
+CellLevels::Crossing CellLevels::nextCrossing(int i, const BallPath& path, double now,
+                                              double horizon, bool straight) const {
+  Crossing next;
+  // A crossing closer than the time's resolution comes an ulp later rather than now: the ball
+  // has not reached the face yet, and one taken now found the ball back beyond the face it had
+  // crossed and crossed again, to and fro for ever at one instant (at 5e53 s, gravity switched
+  // on brought a ball back to a face 1e49 m below it in 1e23 s).
+  const auto timeOf = [&](double t) {
+    const double time = now + t;
+    return t > 0.0 && time <= now ? std::nextafter(now, kNever) : time;
+  };
+  // In a finer level it follows, a ball crosses the faces of the lattice beyond the grid too.
+  const Place& p = places_[i];
+  const auto findIn = [&](int l, const CellGrid::Coords& c, bool lattice) {
+    const CellGrid& grid = levels_[l].grid;
+    const auto lowerFace = [&](int a) {
+      return lattice ? grid.latticeLowerFace(a, c[a], latticeMargin(p.level, l, a))
+                     : grid.lowerFace(a, c[a]);
+    };
+    const auto upperFace = [&](int a) {
+      return lattice ? grid.latticeUpperFace(a, c[a], latticeMargin(p.level, l, a))
+                     : grid.upperFace(a, c[a]);
+    };
+    const auto level = static_cast<std::int8_t>(l);
+    if (straight) {
+      for (int a = 0; a < 3; ++a) {
+        const double t =
+            straightExitTime(path.position[a], path.velocity[a], lowerFace(a), upperFace(a));
+        const double time = timeOf(t);
+        if (time < std::min(next.time, horizon))
+          next = {time, static_cast<std::int8_t>(a),
+                  static_cast<std::int8_t>(path.velocity[a] > 0.0 ? 1 : -1), level};
+      }
+      return;
+    }
+    for (int a = 0; a < 3; ++a) {
+      for (int direction : {1, -1}) {
+        const double face = direction > 0 ? upperFace(a) : lowerFace(a);
+        const double until = std::min(next.time, horizon) - now;
+        const double t = boundaryCrossingTime(path.position[a], path.velocity[a],
+                                              path.acceleration[a], face, direction > 0, until);
+        if (t < until)
+          next = {timeOf(t), static_cast<std::int8_t>(a), static_cast<std::int8_t>(direction),
+                  level};
+      }
+    }
+  };
+  findIn(p.level, p.coords, false);
+  for (int l = 0; l < static_cast<int>(levels_.size()); ++l) {
+    if (l > p.level) findIn(l, levelCoords(i, l), false);
+    if (l < p.level && followsFiner(p.level, l)) findIn(l, levelCoords(i, l), true);
+  }
+  return next;
+}
+
+bool CellLevels::cross(int i, const Crossing& crossing) {
+  Place& p = places_[i];
+  const int crossed = crossing.level;
+  const bool own = crossed == p.level;
+  CellGrid::Coords coords = own ? p.coords : levelCoords(i, crossed);
+  coords[crossing.axis] += crossing.direction;
+  if (own)
+    moveToCell(i, coords);
+  else
+    levelCoords(i, crossed) = coords;
+  return own;
+}
+
+void CellLevels::place(int i, const Vec3& position) {
+  const Place& p = places_[i];
+  const CellGrid::Coords coords = levels_[p.level].grid.coordsOf(position);
+  if (coords != p.coords) moveToCell(i, coords);
+  noteLevelCoords(i, position);
+}
+
+std::string CellLevels::summary() const {
+  std::string grid = levels_.size() > 1 ? "cell grids" : "cell grid";
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    const CellGrid::Coords& c = levels_[l].grid.counts();
+    grid += (l > 0 ? ", " : " ") + std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
+            std::to_string(c[2]);
+  }
+  if (levels_.size() > 1) grid += " (" + std::to_string(levels_.size()) + " ball size classes)";
+  if (sharedStatics_)
+    return grid + ", all " + std::to_string(statics_.size()) + " static shapes in every cell";
+  return grid + ", " + std::to_string(statics_.size()) + " static-shape entries in cells";
+}
+
+std::size_t CellLevels::memoryBytes() const {
+  return carom::memoryBytes(places_) + members_.memoryBytes() + carom::memoryBytes(levelCoords_) +
+         carom::memoryBytes(levels_) + carom::memoryBytes(staticStart_) +
+         carom::memoryBytes(statics_);
 }
 
 }  // namespace carom
