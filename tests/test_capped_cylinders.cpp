@@ -5,8 +5,8 @@
 #include "scene_helpers.h"
 #include "sim/measure/measures.h"
 #include "sim/model/scene_builders.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 
 #include <QTest>
 

@@ -2,8 +2,8 @@
 // Newton's cradle, cylinders.
 
 #include "sim/core/tolerances.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

@@ -6,7 +6,7 @@
 // With CAROM_SCREENSHOT_DIR set, pictures of the window showing the refusals are saved there.
 
 #include "sim/core/tolerances.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/outline_dock.h"

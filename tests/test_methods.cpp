@@ -3,8 +3,8 @@
 
 #include "sim/measure/measures.h"
 #include "sim/model/scene_builders.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

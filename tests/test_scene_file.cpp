@@ -7,8 +7,8 @@
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_stream_reader.h"
 #include "sim/measure/measures.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 #include "small_filesystem.h"
 
 #include <QDir>

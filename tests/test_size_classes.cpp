@@ -4,8 +4,8 @@
 // validation accepts run under every method.
 
 #include "sim/model/scene_builders.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QTest>

@@ -3,7 +3,7 @@
 
 #include "sim/core/tolerances.h"
 #include "sim/model/scene.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QObject>
 #include <QTest>

@@ -4,8 +4,8 @@
 
 #include "sim/io/scene_file.h"
 #include "sim/measure/run_watch.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 #include "tests/scene_helpers.h"
 
 #include <QDir>

@@ -17,7 +17,7 @@
 #include "ui/number_box.h"
 #include "ui/scene_files.h"
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 #include "ui/dialogs/video_export.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/scene_recovery.h"

@@ -1,6 +1,6 @@
 #include "ui/simulation_sync.h"
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 #include "ui/editor/running_state.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/validation_text.h"

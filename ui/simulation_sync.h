@@ -5,7 +5,7 @@
 // left alone where the run has it.
 
 #include "sim/model/scene.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QObject>
 #include <QString>

@@ -10,7 +10,7 @@
 #include "app/cli/timeline_bench.h"
 #include "sim/io/file_names.h"
 #include "sim/io/scene_file.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -3,7 +3,7 @@
 // message, how much a document holds before its tree is built, and a key said twice in one
 // object, which Qt's parser would take silently.
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QByteArray>
 #include <QString>

@@ -1,6 +1,6 @@
 #include "sim/io/json_text.h"
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <charconv>
 #include <cmath>

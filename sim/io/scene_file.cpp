@@ -7,7 +7,7 @@
 #include "sim/io/json_text.h"
 #include "sim/io/scene_format.h"
 #include "sim/io/scene_stream_reader.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QFile>
 #include <QJsonArray>

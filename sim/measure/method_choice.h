@@ -5,7 +5,7 @@
 
 #include "sim/measure/accuracy_study.h"
 #include "sim/model/scene.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <atomic>
 #include <optional>

@@ -4,8 +4,8 @@
 // inside a solid, an overlap deeper than a fraction of a radius) and names the first problem.
 // It only reads the simulation: its settings never change the physics.
 
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 
 #include <memory>
 #include <optional>

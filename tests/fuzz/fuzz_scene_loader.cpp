@@ -4,7 +4,7 @@
 
 #include "sim/io/scene_file.h"
 #include "sim/io/scene_stream_reader.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <cstddef>
 #include <cstdint>

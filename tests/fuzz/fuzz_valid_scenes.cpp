@@ -10,8 +10,8 @@
 #include "sim/geometry/shapes.h"
 #include "sim/measure/measures.h"
 #include "sim/measure/run_watch.h"
-#include "sim/model/validation.h"
 #include "sim/simulation.h"
+#include "sim/validation/validation.h"
 
 #include <fuzzer/FuzzedDataProvider.h>
 

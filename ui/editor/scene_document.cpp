@@ -1,6 +1,6 @@
 #include "ui/editor/scene_document.h"
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 #include "ui/editor/validation_text.h"
 
 #include <QFileInfo>

@@ -4,7 +4,7 @@
 // the current locale. The file paths of ValidationError::text() are for files and carom-cli.
 
 #include "sim/model/scene.h"
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <QString>
 

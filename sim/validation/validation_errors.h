@@ -2,7 +2,7 @@
 // How validation spells its problems: numbers as its messages quote them, objects and fields by
 // the paths of the scene file, and the list the problems are gathered in, up to a limit.
 
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include <cstddef>
 #include <optional>

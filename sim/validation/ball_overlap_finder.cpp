@@ -1,4 +1,4 @@
-#include "sim/model/ball_overlap_finder.h"
+#include "sim/validation/ball_overlap_finder.h"
 
 #include "sim/core/prefault.h"
 

@@ -1,10 +1,10 @@
-#include "sim/model/validation.h"
+#include "sim/validation/validation.h"
 
 #include "sim/core/tolerances.h"
 #include "sim/geometry/shapes.h"
-#include "sim/model/ball_overlap_finder.h"
-#include "sim/model/field_checker.h"
-#include "sim/model/validation_errors.h"
+#include "sim/validation/ball_overlap_finder.h"
+#include "sim/validation/field_checker.h"
+#include "sim/validation/validation_errors.h"
 
 #include <algorithm>
 #include <cmath>

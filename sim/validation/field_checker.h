@@ -3,8 +3,8 @@
 // tolerances.h, positive, a direction, a name, a colour), and spells what it finds.
 
 #include "sim/core/tolerances.h"
-#include "sim/model/validation.h"
-#include "sim/model/validation_errors.h"
+#include "sim/validation/validation.h"
+#include "sim/validation/validation_errors.h"
 
 #include <algorithm>
 #include <cmath>

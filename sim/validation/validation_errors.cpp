@@ -1,4 +1,4 @@
-#include "sim/model/validation_errors.h"
+#include "sim/validation/validation_errors.h"
 
 #include <algorithm>
 #include <charconv>
