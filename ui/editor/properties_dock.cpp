@@ -2,6 +2,7 @@
 
 #include "ui/editor/number_field.h"
 #include "ui/editor/number_text.h"
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/standing.h"
 
@@ -26,15 +27,6 @@
 namespace carom::editor {
 
 namespace {
-
-// The dock's kind bits are ObjectKind's values as powers of two.
-int flagOf(ObjectKind kind) {
-  return 1 << static_cast<int>(kind);
-}
-
-ObjectKind kindOfFlag(int flag) {
-  return static_cast<ObjectKind>(std::countr_zero(static_cast<unsigned>(flag)));
-}
 
 // The value every target shares, or nothing when they differ.
 template <typename T, typename Read>
@@ -370,7 +362,7 @@ QComboBox* PropertiesDock::addChoice(const char* name, const char* label, const 
 
 int PropertiesDock::selectedKinds() const {
   int kinds = 0;
-  for (const ObjectRef& ref : document_->selection()) kinds |= flagOf(ref.kind);
+  for (const ObjectRef& ref : document_->selection()) kinds |= kindBit(ref.kind);
   return kinds == 0 ? int(kWorld) : kinds;
 }
 
@@ -389,7 +381,7 @@ void PropertiesDock::refresh() {
                                                                             heading_->font())));
   } else if (std::has_single_bit(static_cast<unsigned>(kinds))) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
-                          .arg(kindPluralName(kindOfFlag(kinds))));
+                          .arg(kindPluralName(kindOfBit(kinds))));
   } else {
     heading_->setText(tr("%n objects selected", nullptr, static_cast<int>(selection.size())));
   }
