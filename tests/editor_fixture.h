@@ -4,6 +4,7 @@
 
 #include "tests/dialog_answerer.h"
 #include "tests/scene_edits.h"
+#include "tests/window_parts.h"
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
@@ -60,7 +61,7 @@ class EditorFixture : public QObject {
     window_->show();
     QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
     QApplication::setActiveWindow(window_.get());
-    QTRY_VERIFY(window_->framesRendered() > 0);
+    QTRY_VERIFY(framesRendered(*window_) > 0);
   }
   editor::SceneDocument& document() { return *window_->document(); }
   render::SceneView& view() { return *qobject_cast<render::SceneView*>(window_->view()); }

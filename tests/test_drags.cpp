@@ -145,7 +145,7 @@ void DragsTest::escapeCancelsAHandleDrag() {
   const Scene before = document().scene();
   const QVector3D eye = view().camera().eye();
   EditorTools::Handle face;
-  for (const EditorTools::Handle& handle : window_->tools()->handles())
+  for (const EditorTools::Handle& handle : editorTools(*window_)->handles())
     if (handle.role == EditorTools::HandleRole::BoxFace && handle.axis == 0 && handle.side == 1)
       face = handle;
   QCOMPARE(face.base, Vec3(2.5, 0.5, 1));
@@ -163,7 +163,7 @@ void DragsTest::escapeCancelsAVelocityArrowDrag() {
   document().setSelection({{ObjectKind::Ball, 0}});
   const Scene before = document().scene();
   const QVector3D eye = view().camera().eye();
-  const std::vector<EditorTools::Handle> arrows = window_->tools()->handles();
+  const std::vector<EditorTools::Handle> arrows = editorTools(*window_)->handles();
   QCOMPARE(arrows.size(), std::size_t{1});
   const QPoint tip = at(arrows.front().tip);
   dragThenEscape(tip, tip + QPoint(0, -60),
@@ -325,7 +325,7 @@ void DragsTest::addCylinderOffersCappedCylinders() {
   QCOMPARE(document().scene().cylinders[0].length, std::optional(1.5));
 
   type(length, "-1");
-  QVERIFY2(window_->statusMessage().contains("positive"), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("positive"), qPrintable(statusMessage(*window_)));
   QCOMPARE(length->text(), QString("1.5"));
   click(Vec3(-2, 0, 1));
   QCOMPARE(document().scene().cylinders[1].length, std::optional(1.5));

@@ -117,7 +117,7 @@ void TestEditor::refusesAPlacementWithNoRoom() {
   click(Vec3(0, 1.0, 0));  // on top of the ball: the post would stand in it
   QCOMPARE(document().scene().cylinders.size(), std::size_t{0});
   QCOMPARE(document().undoStack()->count(), 0);
-  QVERIFY2(window_->statusMessage().contains("overlap"), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("overlap"), qPrintable(statusMessage(*window_)));
 }
 
 // A box lands with its bottom face on the surface under the cursor: the floor, or the top of a
@@ -155,8 +155,8 @@ void TestEditor::addsBoxesRestingOnWhatIsClicked() {
   QCOMPARE(document().scene().boxes.size(), std::size_t{2});
   QCOMPARE(document().undoStack()->count(), commands);
   QVERIFY2(
-      window_->statusMessage().startsWith("Cannot place it there: first would overlap Box 2 by"),
-      qPrintable(window_->statusMessage()));
+      statusMessage(*window_).startsWith("Cannot place it there: first would overlap Box 2 by"),
+      qPrintable(statusMessage(*window_)));
 
   // Undo takes the stacked box away, redo puts it back as it was.
   const carom::Scene withBoth = document().scene();
@@ -306,7 +306,7 @@ void TestEditor::duplicateDeleteCopyPaste() {
   QApplication::clipboard()->setText("not a scene");
   QTest::keyClick(window_.get(), Qt::Key_V, Qt::ControlModifier);
   QCOMPARE(document().scene().balls.size(), std::size_t{2});
-  QVERIFY(window_->statusMessage().startsWith("Nothing to paste"));
+  QVERIFY(statusMessage(*window_).startsWith("Nothing to paste"));
 
   // Select All, then Delete, leaves an empty scene in one step.
   QTest::keyClick(window_.get(), Qt::Key_A, Qt::ControlModifier);
@@ -403,7 +403,7 @@ void TestEditor::titleShowsModified() {
 void TestEditor::dragSnapsToTheGrid() {
   chooseTool("toolSelect");
   window_->findChild<QAction*>("snapToGrid")->trigger();
-  QVERIFY(window_->tools()->snapToGrid());
+  QVERIFY(editorTools(*window_)->snapToGrid());
   const QPoint from = at(Vec3(0, 0.5, 0));
   drag(from, from + QPoint(77, 9), [&] { return document().scene().balls[0].position.x() > 0.2; });
   const Vec3 moved = document().scene().balls[0].position;
@@ -430,7 +430,7 @@ void TestEditor::handleDragsSnapToTheGrid() {
   QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   chooseTool("toolSelect");
   window_->findChild<QAction*>("snapToGrid")->trigger();
-  QVERIFY(window_->tools()->snapToGrid());
+  QVERIFY(editorTools(*window_)->snapToGrid());
   const double step = EditorTools::gridStep();
   const auto onGrid = [&](double value) {
     return std::abs(value / step - std::round(value / step)) < 1e-9;
@@ -438,7 +438,7 @@ void TestEditor::handleDragsSnapToTheGrid() {
 
   document().setSelection({{ObjectKind::Box, 0}});
   EditorTools::Handle face;
-  for (const EditorTools::Handle& handle : window_->tools()->handles())
+  for (const EditorTools::Handle& handle : editorTools(*window_)->handles())
     if (handle.role == EditorTools::HandleRole::BoxFace && handle.axis == 0 && handle.side == 1)
       face = handle;
   QCOMPARE(face.base, Vec3(2.5, 0.5, 0));
@@ -454,7 +454,7 @@ void TestEditor::handleDragsSnapToTheGrid() {
 
   document().setSelection({{ObjectKind::Cylinder, 0}});
   EditorTools::Handle end;
-  for (const EditorTools::Handle& handle : window_->tools()->handles())
+  for (const EditorTools::Handle& handle : editorTools(*window_)->handles())
     if (handle.role == EditorTools::HandleRole::CylinderEnd && handle.side == 1) end = handle;
   QCOMPARE(end.base, Vec3(-2, 1, -2));
   drag(at(end.tip), at(end.tip + Vec3(0, 0.35, 0)),
@@ -473,7 +473,7 @@ void TestEditor::velocityArrowTipDrags() {
   window_->openScene(moving, {}, "moving");
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Ball, 0}});
-  const std::vector<EditorTools::Handle> arrows = window_->tools()->handles();
+  const std::vector<EditorTools::Handle> arrows = editorTools(*window_)->handles();
   QCOMPARE(arrows.size(), std::size_t{1});
   const EditorTools::Handle* arrow = &arrows.front();
   QCOMPARE(arrow->tip, Vec3(1, 0.5, 0));  // half a second of flight
@@ -488,7 +488,7 @@ void TestEditor::velocityArrowTipDrags() {
 
 void TestEditor::altDragGivesABallAtRestAVelocity() {
   chooseTool("toolSelect");
-  QVERIFY(window_->tools()->handles().empty());  // at rest: no arrow to grab
+  QVERIFY(editorTools(*window_)->handles().empty());  // at rest: no arrow to grab
   const QPoint from = at(Vec3(0, 0.5, 0));
   const QPoint to = from + QPoint(60, 0);
   QTest::mousePress(&view(), Qt::LeftButton, Qt::AltModifier, from);
@@ -496,7 +496,7 @@ void TestEditor::altDragGivesABallAtRestAVelocity() {
   QTRY_VERIFY(document().scene().balls[0].velocity.norm() > 0.5);
   QTest::mouseRelease(&view(), Qt::LeftButton, Qt::AltModifier, to);
   QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
-  QCOMPARE(window_->tools()->handles().size(), std::size_t{1});
+  QCOMPARE(editorTools(*window_)->handles().size(), std::size_t{1});
 }
 
 void TestEditor::newAsksAboutUnsavedChanges() {
@@ -698,12 +698,12 @@ void TestEditor::runningStateSurvivesAddingAndDeleting() {
   QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
   QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
   QCOMPARE(window_->simulation().latest()->positions[0], Vec3(2, 3, 0));
-  QVERIFY2(window_->statusMessage().contains("does not fit the running state"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("does not fit the running state"),
+           qPrintable(statusMessage(*window_)));
   // In words, naming the balls as the Outline does, not by the file's paths.
-  QVERIFY2(window_->statusMessage().contains("(in the way would overlap "),
-           qPrintable(window_->statusMessage()));
-  QVERIFY2(!window_->statusMessage().contains("balls["), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("(in the way would overlap "),
+           qPrintable(statusMessage(*window_)));
+  QVERIFY2(!statusMessage(*window_).contains("balls["), qPrintable(statusMessage(*window_)));
 }
 
 void TestEditor::useCurrentStateAsInitial() {

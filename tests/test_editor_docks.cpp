@@ -442,7 +442,7 @@ void TestEditorDocks::refusesBadValues() {
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), 0);
   QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
-  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains(message), qPrintable(statusMessage(*window_)));
   QCOMPARE(this->field(field)->text(), shownBefore);  // the field shows the scene's value again
   // The next good edit clears the message.
   type("mass", "2");
@@ -570,7 +570,7 @@ void TestEditorDocks::refusesBadBoxValues() {
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), commands);
   QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
-  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains(message), qPrintable(statusMessage(*window_)));
   QCOMPARE(this->field(field)->text(), shownBefore);
 }
 
@@ -648,7 +648,7 @@ void TestEditorDocks::picksAColour() {
 void TestEditorDocks::turnsAPlaneByItsHandle() {
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Plane, 1}});  // the wall at x = -4, facing +x
-  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  const std::vector<carom::editor::EditorTools::Handle> handles = editorTools(*window_)->handles();
   QCOMPARE(handles.size(), std::size_t{1});
   const carom::editor::EditorTools::Handle* handle = &handles.front();
   QCOMPARE(handle->base, Vec3(-4, 0, 0));
@@ -675,7 +675,7 @@ void TestEditorDocks::turnsACylinderByItsHandle() {
   addCylinder();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Cylinder, 0}});
-  const std::vector<carom::editor::EditorTools::Handle> handles = window_->tools()->handles();
+  const std::vector<carom::editor::EditorTools::Handle> handles = editorTools(*window_)->handles();
   QCOMPARE(handles.size(), std::size_t{1});
   const carom::editor::EditorTools::Handle* handle = &handles.front();
   QVERIFY((handle->tip - handle->base).normalized().isApprox(Vec3::UnitY()));
@@ -709,10 +709,10 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   addBox();
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Box, 0}});
-  QCOMPARE(window_->tools()->handles().size(), std::size_t{7});  // six faces and the turn
+  QCOMPARE(editorTools(*window_)->handles().size(), std::size_t{7});  // six faces and the turn
   const int commands = document().undoStack()->count();
 
-  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
+  std::optional<Handle> face = findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 0);
   QVERIFY(face);
   QCOMPARE(face->base, Vec3(2.5, 0.5, 0));
   drag(at(face->tip), at(face->tip + Vec3(1, 0, 0)),
@@ -726,7 +726,7 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   QCOMPARE(document().undoStack()->count(), commands + 1);
   QCOMPARE(document().undoStack()->undoText(), QString("Resize Box"));
 
-  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 1);
+  face = findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 1);
   QVERIFY(face);
   drag(at(face->tip), at(face->tip + Vec3(0, 0.5, 0)),
        [&] { return document().scene().boxes[0].halfExtents.y() > 0.7; });
@@ -737,10 +737,10 @@ void TestEditorDocks::resizesABoxByItsFaceHandles() {
   QCOMPARE(document().undoStack()->count(), commands + 2);
 
   // Through the opposite face: refused by the validation, the box stays at its last good size.
-  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2);
+  face = findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 2);
   QVERIFY(face);
   drag(at(face->tip), at(face->tip - Vec3(0, 0, 1.5)),
-       [&] { return window_->statusMessage().contains("Half extents z of Box 0"); });
+       [&] { return statusMessage(*window_).contains("Half extents z of Box 0"); });
   QVERIFY(document().scene().boxes[0].halfExtents.z() > 0.0);
   QVERIFY(std::abs(document().scene().boxes[0].center.z() -
                    document().scene().boxes[0].halfExtents.z() + 0.5) < 1e-9);
@@ -763,7 +763,8 @@ void TestEditorDocks::resizesABoxFromItsNegativeFaces() {
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Box, 0}});
   const int commands = document().undoStack()->count();
-  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0, -1);
+  std::optional<Handle> face =
+      findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 0, -1);
   QVERIFY(face);
   QCOMPARE(face->base, Vec3(1.5, 0.5, 0));
   QVERIFY((face->tip - face->base).normalized().isApprox(-Vec3::UnitX()));
@@ -778,7 +779,7 @@ void TestEditorDocks::resizesABoxFromItsNegativeFaces() {
   QCOMPARE(document().undoStack()->count(), commands + 1);
   QCOMPARE(document().undoStack()->undoText(), QString("Resize Box"));
 
-  face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 2, -1);
+  face = findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 2, -1);
   QVERIFY(face);
   QCOMPARE(face->base, Vec3(wider.center.x(), 0.5, -0.5));
   drag(at(face->tip), at(face->tip + Vec3(0, 0, 0.3)),
@@ -868,7 +869,7 @@ void TestEditorDocks::refusesBadLengths() {
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), commands);
   QVERIFY2(properties().message().contains(message), qPrintable(properties().message()));
-  QVERIFY2(window_->statusMessage().contains(message), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains(message), qPrintable(statusMessage(*window_)));
   QCOMPARE(field("cylinderLength")->text(), QString("1"));
 }
 
@@ -920,7 +921,7 @@ void TestEditorDocks::resizesACappedCylinderByItsEnds() {
   addCappedCylinder(Vec3(2, 0.5, -2), Vec3::UnitY(), 1.0);  // from the floor up to y = 1
   chooseTool("toolSelect");
   document().setSelection({{ObjectKind::Cylinder, 0}});
-  const std::vector<Handle> handles = window_->tools()->handles();
+  const std::vector<Handle> handles = editorTools(*window_)->handles();
   QCOMPARE(handles.size(), std::size_t{3});
   std::optional<Handle> top = findHandle(handles, HandleRole::CylinderEnd, 0, 1);
   const std::optional<Handle> bottom = findHandle(handles, HandleRole::CylinderEnd, 0, -1);
@@ -951,7 +952,7 @@ void TestEditorDocks::resizesACappedCylinderByItsEnds() {
 
   // The lower end raised, with X held: the upper end stays.
   const std::optional<Handle> lower =
-      findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, -1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::CylinderEnd, 0, -1);
   QVERIFY(lower);
   const QPoint from = at(lower->tip), to = at(lower->tip + Vec3(0, 0.4, 0));
   QTest::mousePress(&view(), Qt::LeftButton, Qt::NoModifier, from);
@@ -970,12 +971,11 @@ void TestEditorDocks::resizesACappedCylinderByItsEnds() {
 
   // The upper end pulled down through the lower one: refused once, at the last good length.
   int refusals = 0;
-  connect(window_->tools(), &carom::editor::EditorTools::refused, this, [&] { ++refusals; });
-  top = findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, 1);
+  connect(editorTools(*window_), &carom::editor::EditorTools::refused, this, [&] { ++refusals; });
+  top = findHandle(editorTools(*window_)->handles(), HandleRole::CylinderEnd, 0, 1);
   QVERIFY(top);
-  drag(at(top->tip), at(top->tip - Vec3(0, 1.6, 0)), [&] {
-    return window_->statusMessage().contains("Length of Cylinder 0 must be above zero");
-  });
+  drag(at(top->tip), at(top->tip - Vec3(0, 1.6, 0)),
+       [&] { return statusMessage(*window_).contains("Length of Cylinder 0 must be above zero"); });
   QCOMPARE(refusals, 1);
   const carom::Cylinder shortest = document().scene().cylinders[0];
   QVERIFY(*shortest.length > 0.0 && *shortest.length < *raised.length);
@@ -994,7 +994,7 @@ void TestEditorDocks::turnsABoxByItsHandle() {
   document().setSelection({{ObjectKind::Box, 0}});
   const int commands = document().undoStack()->count();
   const std::optional<Handle> turn =
-      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::BoxTurn, 1);
   QVERIFY(turn);
   QCOMPARE(turn->base, Vec3(2, 1, 0));
   // 30 degrees anticlockwise seen from above, in steps along the arc.
@@ -1030,7 +1030,7 @@ void TestEditorDocks::turnsABoxByItsHandle() {
   QVERIFY(carom::testing::applyEdit(document(), tilted, "Tilt").isEmpty());
   const carom::BoxShape before = carom::boxShape(document().scene().boxes[0]);
   const std::optional<Handle> tiltedTurn =
-      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::BoxTurn, 1);
   QVERIFY(tiltedTurn);
   const Vec3 centre = document().scene().boxes[0].center;
   const auto aroundUp = [&](double degrees) -> Vec3 {
@@ -1128,7 +1128,7 @@ void TestEditorDocks::toolbarRefusesBadValues() {
   QTest::keyClicks(spin, typed);
   QCOMPARE(spin->text(), typed);  // every keystroke reached the box
   QTest::keyClick(spin, Qt::Key_Return);
-  QVERIFY2(window_->statusMessage().startsWith(message), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).startsWith(message), qPrintable(statusMessage(*window_)));
   QCOMPARE(spin->value(), before);
   QCOMPARE(spin->text(), shownBefore);
   QVERIFY(document().scene() == scene);
@@ -1325,7 +1325,7 @@ void TestEditorDocks::refusesNamesOverTheLimit() {
   type("name", QString(257, 'n'));
   const QString typed = "Name of first must be at most 256 characters long (got 257)";
   QVERIFY2(properties().message().contains(typed), qPrintable(properties().message()));
-  QVERIFY2(window_->statusMessage().contains(typed), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains(typed), qPrintable(statusMessage(*window_)));
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), 0);
   QCOMPARE(field("name")->text(), QString("first"));
@@ -1361,7 +1361,7 @@ void TestEditorDocks::outlineRefusesNamesOverTheLimit() {
   QTest::keyClick(editor, Qt::Key_Return);
   // Named by the name it keeps.
   const QString refusal = "Name of floor must be at most 256 characters long (got 300)";
-  QTRY_VERIFY2(window_->statusMessage().contains(refusal), qPrintable(window_->statusMessage()));
+  QTRY_VERIFY2(statusMessage(*window_).contains(refusal), qPrintable(statusMessage(*window_)));
   QVERIFY(document().scene() == before);
   QCOMPARE(document().undoStack()->count(), 0);
   QCOMPARE(floor.data().toString(), QString("floor"));
@@ -1403,7 +1403,7 @@ void TestEditorDocks::longNamesAreElided() {
   QVERIFY(field("name")->sizeHint().width() <= shortLabelWidth(field("name")->font()));
 
   // The Ball story follows the ball under an elided name.
-  auto* chart = window_->ballStoryDock()->findChild<QChartView*>()->chart();
+  auto* chart = ballStoryDock(*window_)->findChild<QChartView*>()->chart();
   const auto ballMarker = [chart]() -> QLegendMarker* {
     for (QLegendMarker* marker : chart->legend()->markers())
       if (marker->isVisible() && marker->label().startsWith("WWW")) return marker;

@@ -115,7 +115,7 @@ void TestFaults::saveOnAFullDiskKeepsTheFileAndTheEdits() {
   }
   QCOMPARE(bytesOf(file), before);
   QVERIFY(window_->isWindowModified());
-  QVERIFY(!window_->statusMessage().startsWith("Saved"));
+  QVERIFY(!statusMessage(*window_).startsWith("Saved"));
   // Ctrl+Q asks about the unsaved changes; Cancel keeps the window.
   {
     MessageBoxes boxes(QMessageBox::Cancel);
@@ -129,7 +129,7 @@ void TestFaults::saveOnAFullDiskKeepsTheFileAndTheEdits() {
   QVERIFY(disk.unfill());
   QTest::keyClick(window_.get(), Qt::Key_S, Qt::ControlModifier);
   QTRY_VERIFY(!window_->isWindowModified());
-  QVERIFY2(window_->statusMessage().startsWith("Saved"), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).startsWith("Saved"), qPrintable(statusMessage(*window_)));
   QVERIFY(carom::io::loadSceneFile(file).scene == edited);
 }
 
@@ -165,7 +165,7 @@ void TestFaults::recoveryCopyOnAFullDiskKeepsTheLastOne() {
   SmallFilesystem disk(200 * 1024, SceneRecovery::folder());
   if (!disk.mounted()) QSKIP(qPrintable(disk.error()));
   openWindow();
-  SceneRecovery* recovery = window_->recovery();
+  SceneRecovery* recovery = sceneRecovery(*window_);
   deleteTheFirstBall();
   QVERIFY(recovery->autosave());
   const carom::Scene copied = document().scene();
@@ -178,8 +178,8 @@ void TestFaults::recoveryCopyOnAFullDiskKeepsTheLastOne() {
   QVERIFY(!recovery->autosave());
   QCOMPARE(failed.size(), 1);
   QCOMPARE(failed.first().first().toString(), QString("No space left on device"));
-  QVERIFY2(window_->statusMessage().contains("recovery copy could not be written"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("recovery copy could not be written"),
+           qPrintable(statusMessage(*window_)));
   QVERIFY(carom::io::loadSceneFile(recovery->copyFile()).scene == copied);
   QVERIFY(disk.unfill());
   QVERIFY(recovery->autosave());

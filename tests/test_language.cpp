@@ -205,7 +205,7 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   QTRY_COMPARE(menuTitles().first(), QString("Datei"));
   QVERIFY2(menuTitles().contains("Hilfe"), qPrintable(menuTitles().join(", ")));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Starten"));
-  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Überwachung"));
+  QCOMPARE(watchMenu(*window_)->title().remove('&'), QString("Überwachung"));
   QCOMPARE(window_->findChild<QAction*>("watchTolerances")->text().remove('&'),
            QString("Toleranzen…"));
   QCOMPARE(window_->findChild<QAction*>("toolAddBall")->text(), QString("Kugel hinzufügen"));
@@ -233,7 +233,7 @@ void TestLanguage::switchesLanguageLiveFromTheMenu() {
   chooseLanguage("en");
   QTRY_COMPARE(menuTitles().first(), QString("File"));
   QCOMPARE(window_->findChild<QAction*>("run")->text().remove('&'), QString("Run"));
-  QCOMPARE(window_->watchMenu()->title().remove('&'), QString("Watch"));
+  QCOMPARE(watchMenu(*window_)->title().remove('&'), QString("Watch"));
   QCOMPARE(window_->propertiesDock()->windowTitle(), QString("Properties"));
   QCOMPARE(labelOf("timeStep"), QString("Time step"));
   QCOMPARE(gravityY->text(), QString("-9.81"));
@@ -515,7 +515,7 @@ void TestLanguage::countsTakeTheirPluralForms() {
   }
   window_->openScene(scene, {});
   window_->setRunning(true);
-  QTRY_VERIFY2(window_->statusText().contains(readout), qPrintable(window_->statusText()));
+  QTRY_VERIFY2(statusText(*window_).contains(readout), qPrintable(statusText(*window_)));
   window_->setRunning(false);
   if (heading.isEmpty()) return;
   carom::editor::Selection all;
@@ -542,8 +542,7 @@ void TestLanguage::exampleTitleAndToolbarMessagesFollowTheLanguage() {
   QTest::keyClick(timeStep, Qt::Key_Backspace);
   QTest::keyClicks(timeStep, "2e9");
   QTest::keyClick(timeStep, Qt::Key_Return);
-  QVERIFY2(window_->statusMessage().startsWith("Zeitschritt"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).startsWith("Zeitschritt"), qPrintable(statusMessage(*window_)));
 }
 
 void TestLanguage::ballStoryAndExportImageFollowTheLanguage_data() {
@@ -581,7 +580,7 @@ void TestLanguage::ballStoryAndExportImageFollowTheLanguage_data() {
 void TestLanguage::ballStoryAndExportImageFollowTheLanguage() {
   QFETCH(QString, code);
   chooseLanguage(code);
-  carom::ui::BallStoryDock* dock = window_->ballStoryDock();
+  carom::ui::BallStoryDock* dock = ballStoryDock(*window_);
   QFETCH(QString, dockTitle);
   // The events that carry the change are posted: the texts follow on the next turn.
   QTRY_COMPARE(dock->windowTitle(), dockTitle);
@@ -723,7 +722,7 @@ void TestLanguage::exponentsAreLowerCase() {
   QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClicks(toolbarX, typed);
   QTest::keyClick(toolbarX, Qt::Key_Return);
-  QCOMPARE(window_->statusMessage(), message);
+  QCOMPARE(statusMessage(*window_), message);
   // Within the range, the same separator is read.
   QTest::keyClick(toolbarX, Qt::Key_A, Qt::ControlModifier);
   QTest::keyClicks(toolbarX, QString(typed).replace("12", "11"));
@@ -752,7 +751,7 @@ void TestLanguage::numbersOfARunAreReadableInTheLanguage() {
   window_->resize(1280, 800);
   const QString point = carom::editor::numberLocale().decimalPoint();
   const QString otherPoint = point == "." ? "," : ".";
-  auto* energyView = window_->energyPlot()->findChild<QChartView*>();
+  auto* energyView = energyPlot(*window_)->findChild<QChartView*>();
   QVERIFY(energyView);
   // Before the run the time axis spans 0 to 1 s: "0.0 0.3 0.5 0.8 1.0" did not step evenly.
   QTRY_VERIFY(!chartTexts(energyView).bottomTicks.isEmpty());
@@ -780,7 +779,7 @@ void TestLanguage::numbersOfARunAreReadableInTheLanguage() {
                 .hasMatch(),
            qPrintable(status->text()));
   // Both plots: no text cut short, ticks that say their values, in the language's format.
-  auto* storyView = window_->ballStoryDock()->findChild<QChartView*>();
+  auto* storyView = ballStoryDock(*window_)->findChild<QChartView*>();
   QVERIFY(storyView);
   for (const auto& [dockName, view] :
        {std::pair{"energyDock", energyView}, std::pair{"ballStoryDock", storyView}}) {

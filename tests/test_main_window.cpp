@@ -3,6 +3,7 @@
 #include "sim/io/scene_file.h"
 #include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
+#include "tests/window_parts.h"
 #include "ui/dialogs/accuracy_window.h"
 #include "ui/docks/energy_plot.h"
 #include "ui/editor/scene_document.h"
@@ -93,7 +94,7 @@ class TestMainWindow : public QObject {
   void startsWithTheMagicRoomAndShowsItsBalls() {
     auto* view = qobject_cast<carom::render::SceneView*>(window_->view());
     QVERIFY(view);
-    QTRY_VERIFY(window_->framesRendered() > 0);
+    QTRY_VERIFY(framesRendered(*window_) > 0);
     const carom::Scene scene = magicRoom();
     const QImage frame = view->grabFramebuffer();
     const double ratio = frame.width() / double(view->width());
@@ -147,7 +148,7 @@ class TestMainWindow : public QObject {
   void collisionRateStartsOverAfterReset() {
     const auto rate = [this] {
       const QRegularExpressionMatch match =
-          QRegularExpression("(\\d+) collisions/s").match(window_->statusText());
+          QRegularExpression("(\\d+) collisions/s").match(statusText(*window_));
       return match.hasMatch() ? match.captured(1).toInt() : -1;
     };
     QTest::keyClick(window_.get(), Qt::Key_Space);
@@ -155,7 +156,7 @@ class TestMainWindow : public QObject {
     QTest::keyClick(window_.get(), Qt::Key_R);
     QVERIFY(waitForSnapshot(*window_,
                             [](const SimulationSnapshot& s) { return !s.running && s.time == 0; }));
-    QTRY_VERIFY(window_->statusText().startsWith("t = 0.000 s"));
+    QTRY_VERIFY(statusText(*window_).startsWith("t = 0.000 s"));
     QCOMPARE(rate(), 0);
   }
 
@@ -178,9 +179,9 @@ class TestMainWindow : public QObject {
     auto stepped = waitForSnapshot(
         *window_, [](const SimulationSnapshot& s) { return s.stats.collisions.total() == 1; });
     QVERIFY(stepped);
-    QTRY_VERIFY(!window_->statusText().startsWith("t = 0.000 s"));
+    QTRY_VERIFY(!statusText(*window_).startsWith("t = 0.000 s"));
     const QRegularExpressionMatch match =
-        QRegularExpression("(\\d+) collisions/s").match(window_->statusText());
+        QRegularExpression("(\\d+) collisions/s").match(statusText(*window_));
     QVERIFY(match.hasMatch());
     QCOMPARE(match.captured(1).toInt(), 0);  // not measured yet: 1 / dt before
   }
@@ -206,7 +207,7 @@ class TestMainWindow : public QObject {
     // and says sound is unavailable; F3 still toggles mute.
     QVERIFY(!window_->sound().available());
     QTest::keyClick(window_.get(), Qt::Key_S);
-    QTRY_VERIFY(window_->statusText().contains("sound unavailable"));
+    QTRY_VERIFY(statusText(*window_).contains("sound unavailable"));
     QTest::keyClick(window_.get(), Qt::Key_F3);
     QVERIFY(window_->sound().muted());
   }
@@ -274,8 +275,8 @@ class TestMainWindow : public QObject {
     QVERIFY(method->itemText(method->count() - 1).startsWith("auto"));
     method->setCurrentIndex(method->count() - 1);
     QTRY_VERIFY(accuracy->isVisible());
-    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
-    const QString status = window_->statusMessage();
+    QTRY_VERIFY_WITH_TIMEOUT(statusMessage(*window_).startsWith("Auto chose"), 30000);
+    const QString status = statusMessage(*window_);
     const auto chosen = waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
       return status.startsWith(
           QString("Auto chose %1")
@@ -290,12 +291,12 @@ class TestMainWindow : public QObject {
     // An accuracy below round-off: nothing meets it, and the settings stay.
     const carom::World before = chosen->world;
     accuracy->setValue(1e-20);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().contains("no setting meets"), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(statusMessage(*window_).contains("no setting meets"), 30000);
     QVERIFY(waitForSnapshot(*window_, [&](const SimulationSnapshot& s) {
       return s.world.method == before.method && s.world.timeStep == before.timeStep;
     }));
     accuracy->setValue(1e-3);
-    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(statusMessage(*window_).startsWith("Auto chose"), 30000);
     // Back to a method of one's own: the field goes, and that method is the world's.
     method->setCurrentIndex(0);
     QTRY_VERIFY(!accuracy->isVisible());
@@ -324,8 +325,7 @@ class TestMainWindow : public QObject {
     QTRY_VERIFY(accuracy->isVisible());
     const QUndoStack* stack = window_->document()->undoStack();
     QTRY_VERIFY_WITH_TIMEOUT(stack->text(stack->count() - 1).startsWith("Auto: "), 30000);
-    QVERIFY2(window_->statusMessage().startsWith("Auto chose"),
-             qPrintable(window_->statusMessage()));
+    QVERIFY2(statusMessage(*window_).startsWith("Auto chose"), qPrintable(statusMessage(*window_)));
     QVERIFY2(method->toolTip().contains("the cheapest setting with an energy error under"),
              qPrintable(method->toolTip()));
     QVERIFY(window_->findChild<QUndoView*>());  // the History shows the stack's texts
@@ -341,7 +341,7 @@ class TestMainWindow : public QObject {
     QCOMPARE(accuracy->value(), 0.01);
     QCOMPARE(window_->document()->scene().world.autoMethod->energyPerSecond, 0.01);
     // Opened under auto, it chooses again.
-    QTRY_VERIFY_WITH_TIMEOUT(window_->statusMessage().startsWith("Auto chose"), 30000);
+    QTRY_VERIFY_WITH_TIMEOUT(statusMessage(*window_).startsWith("Auto chose"), 30000);
     QCOMPARE(method->currentIndex(), automatic);
   }
 
@@ -586,11 +586,11 @@ class TestMainWindow : public QObject {
     speed->setValue(100.0);
     QTest::keyClick(window_.get(), Qt::Key_Space);
     QVERIFY(waitForSnapshot(*window_, [](const SimulationSnapshot& s) { return s.fallingBehind; }));
-    QTRY_VERIFY_WITH_TIMEOUT(window_->statusText().contains("cannot keep up"), 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(statusText(*window_).contains("cannot keep up"), 15000);
     // The warning stays up while the physics stays behind; it does not blink with each batch.
     for (int k = 0; k < 10; ++k) {
       QTest::qWait(100);
-      QVERIFY2(window_->statusText().contains("cannot keep up"), qPrintable(window_->statusText()));
+      QVERIFY2(statusText(*window_).contains("cannot keep up"), qPrintable(statusText(*window_)));
     }
   }
 
@@ -607,7 +607,7 @@ class TestMainWindow : public QObject {
   }
 
   void energyPlotFollowsTheRun() {
-    carom::ui::EnergyPlot* plot = window_->energyPlot();
+    carom::ui::EnergyPlot* plot = energyPlot(*window_);
     QVERIFY(plot && plot->isVisible());
     QTest::keyClick(window_.get(), Qt::Key_Space);
     QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() > 20, 10000);
@@ -630,7 +630,7 @@ class TestMainWindow : public QObject {
     });
     QVERIFY(added);
     QTest::keyClick(window_.get(), Qt::Key_Space);
-    carom::ui::EnergyPlot* plot = window_->energyPlot();
+    carom::ui::EnergyPlot* plot = energyPlot(*window_);
     QTRY_VERIFY_WITH_TIMEOUT(plot->pointCount() > 5, 10000);
     const QList<QAbstractSeries*> series = plot->findChild<QChartView*>()->chart()->series();
     QCOMPARE(series.size(), 3);
@@ -655,7 +655,7 @@ class TestMainWindow : public QObject {
     QTimer ticker;
     connect(&ticker, &QTimer::timeout, [&] { ++ticks; });
     ticker.start(10);
-    const int framesBefore = window_->framesRendered();
+    const int framesBefore = framesRendered(*window_);
     auto* step = window_->findChild<QDoubleSpinBox*>("timeStep");
     QVERIFY(step);
     const double stepBefore = step->value();
@@ -666,7 +666,7 @@ class TestMainWindow : public QObject {
     QTest::keyClick(window_.get(), Qt::Key_Plus);  // input is handled at once
     QVERIFY(step->value() > stepBefore);
     QVERIFY2(ticks > 20, qPrintable(QString::number(ticks)));
-    QVERIFY(window_->framesRendered() >= framesBefore + 3);
+    QVERIFY(framesRendered(*window_) >= framesBefore + 3);
     // The stall is not over yet, and afterwards the physics carries on.
     QVERIFY(window_->simulation().latest()->time < 0.05);
     QVERIFY(waitForSnapshot(*window_,

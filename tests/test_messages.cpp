@@ -75,7 +75,7 @@ class TestMessages : public carom::testing::EditorFixture {
     QVERIFY(carom::ui::installTranslation(*QCoreApplication::instance(), code));
     openWindow();
     window_->openScene(scene, {}, "room");
-    QTRY_VERIFY(window_->framesRendered() > 0);
+    QTRY_VERIFY(framesRendered(*window_) > 0);
   }
   QString outlineLabel(const ObjectRef& ref) {
     carom::editor::OutlineModel& outline = *window_->outlineDock()->model();
@@ -134,7 +134,7 @@ void TestMessages::placingABallNamesWhatItWouldOverlap() {
   chooseTool("toolAddBall");
   click(clicked);
   QVERIFY(document().scene().balls.empty());
-  const QString message = window_->statusMessage();
+  const QString message = statusMessage(*window_);
   QVERIFY2(!hasPath(message), qPrintable(message));
   // The plane as the Outline names it, the ball that would have been added as it would.
   QVERIFY2(message.contains(outlineLabel(overlapped)), qPrintable(message));
@@ -184,7 +184,7 @@ void TestMessages::typedPositionNamesWhatItWouldOverlap() {
   document().setSelection({ball});
   type(field, typed);
   QCOMPARE(document().scene().balls[0].position, Vec3(0, 0.5, 0));
-  const QString message = window_->statusMessage();
+  const QString message = statusMessage(*window_);
   QCOMPARE(properties().message(), message);
   QVERIFY2(!hasPath(message), qPrintable(message));
   QVERIFY2(message.contains(outlineLabel(ball)), qPrintable(message));
@@ -211,7 +211,7 @@ void TestMessages::typedRadiusNamesTheFieldAndTheBall() {
   document().setSelection({ball});
   type("ballRadius", "-1");
   QCOMPARE(document().scene().balls[0].radius, 0.5);
-  const QString message = window_->statusMessage();
+  const QString message = statusMessage(*window_);
   QCOMPARE(properties().message(), message);
   QVERIFY2(!hasPath(message), qPrintable(message));
   QVERIFY2(message.contains(outlineLabel(ball)), qPrintable(message));
@@ -227,9 +227,9 @@ void TestMessages::typedWorldSettingNamesTheField() {
   openIn("en", carom::testing::floorScene());
   document().setSelection({});
   type("timeStep", "0");
-  QCOMPARE(window_->statusMessage(), QString("Time step must be above zero (got 0 s)"));
+  QCOMPARE(statusMessage(*window_), QString("Time step must be above zero (got 0 s)"));
   type("worldRestitution", "1.5");
-  QCOMPARE(window_->statusMessage(), QString("Restitution must be between 0 and 1 (got 1.5)"));
+  QCOMPARE(statusMessage(*window_), QString("Restitution must be between 0 and 1 (got 1.5)"));
 }
 
 // Each kind of problem the validation reports, worded: never the file's message in English.

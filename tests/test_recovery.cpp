@@ -30,8 +30,8 @@ int runChild(const QString& file) {
   const bool opened = file.startsWith("example:") ? window.openExample(file.mid(8), false)
                                                   : window.openFile(file, false);
   if (!opened) return 3;
-  window.recovery()->setInterval(kChildIntervalMilliseconds);
-  QObject::connect(window.recovery(), &SceneRecovery::autosaved, [] {
+  sceneRecovery(window)->setInterval(kChildIntervalMilliseconds);
+  QObject::connect(sceneRecovery(window), &SceneRecovery::autosaved, [] {
     std::printf("autosaved\n");
     std::fflush(stdout);
   });
@@ -145,11 +145,11 @@ void TestRecovery::notNowKeepsTheCopy() {
 }
 
 void TestRecovery::aCleanEndLeavesNothing() {
-  window_->recovery()->setInterval(kChildIntervalMilliseconds);
+  sceneRecovery(*window_)->setInterval(kChildIntervalMilliseconds);
   document().setSelection({{carom::editor::ObjectKind::Ball, 0}});
   QTest::keyClick(window_.get(), Qt::Key_Delete);
-  QTRY_VERIFY(QFileInfo::exists(window_->recovery()->copyFile()));
-  const QString copy = window_->recovery()->copyFile();
+  QTRY_VERIFY(QFileInfo::exists(sceneRecovery(*window_)->copyFile()));
+  const QString copy = sceneRecovery(*window_)->copyFile();
   // A live session's copy is not an orphan.
   QVERIFY(SceneRecovery::orphans().isEmpty());
   DialogAnswerer discard(QMessageBox::Discard);
@@ -160,7 +160,7 @@ void TestRecovery::aCleanEndLeavesNothing() {
 }
 
 void TestRecovery::copiesFollowTheUnsavedState() {
-  SceneRecovery* recovery = window_->recovery();
+  SceneRecovery* recovery = sceneRecovery(*window_);
   QVERIFY(recovery->autosave());  // nothing unsaved: no copy
   QVERIFY(!QFileInfo::exists(recovery->copyFile()));
   document().setSelection({{carom::editor::ObjectKind::Ball, 0}});

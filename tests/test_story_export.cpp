@@ -43,7 +43,7 @@ class TestStoryExport : public carom::testing::EditorFixture {
   void screenshotOfTheMagicRoom();
 
  private:
-  BallStoryDock& dock() { return *window_->ballStoryDock(); }
+  BallStoryDock& dock() { return *ballStoryDock(*window_); }
   // The floor scene's ball thrown sideways and up, so that it bounces between the walls.
   void throwTheBall() {
     carom::Scene edited = document().scene();
@@ -227,7 +227,7 @@ void TestStoryExport::exportWritesTheChosenSize() {
   const QString file = folder.filePath("view.png");
   const QSize size(640, 360);
   QVERIFY(view().size() != size);
-  QCOMPARE(window_->imageExport()->write(file, size), QString());
+  QCOMPARE(imageExport(*window_)->write(file, size), QString());
   const QImage image(file);
   QCOMPARE(image.size(), size);
   // The red ball where the view's camera, at the picture's aspect ratio, puts it.
@@ -298,7 +298,7 @@ void TestStoryExport::exportLeavesOutTheEditorsMarks() {
 
   QTemporaryDir folder;
   const QString file = folder.filePath("selected.png");
-  QCOMPARE(window_->imageExport()->write(file, size), QString());
+  QCOMPARE(imageExport(*window_)->write(file, size), QString());
   const QImage exported(file);
   QCOMPARE(exported.size(), size);
   if (qEnvironmentVariableIsSet("CAROM_SCREENSHOT_DIR")) {
@@ -329,9 +329,9 @@ void TestStoryExport::exportRefusesBadSizesAndUnwritablePaths() {
 
   QTemporaryDir folder;
   const QString file = folder.filePath("big.png");
-  QVERIFY(!window_->imageExport()->write(file, QSize(9000, 100)).isEmpty());
+  QVERIFY(!imageExport(*window_)->write(file, QSize(9000, 100)).isEmpty());
   QVERIFY(!QFile::exists(file));
-  const QString error = window_->imageExport()->write("/nonexistent/folder/view.png", {64, 64});
+  const QString error = imageExport(*window_)->write("/nonexistent/folder/view.png", {64, 64});
   QVERIFY2(error.startsWith("Could not write"), qPrintable(error));
 }
 
@@ -364,7 +364,7 @@ void TestStoryExport::exportImageMenuAsksSizeThenFile() {
   QCOMPARE(suggested, view().size() * view().devicePixelRatio());
   QVERIFY2(refusal.startsWith("Width: must be between"), qPrintable(refusal));
   QCOMPARE(QImage(typed + ".png").size(), QSize(320, 200));
-  QVERIFY2(window_->statusMessage().contains("320×200"), qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("320×200"), qPrintable(statusMessage(*window_)));
 }
 
 void TestStoryExport::screenshotOfTheMagicRoom() {
@@ -378,7 +378,7 @@ void TestStoryExport::screenshotOfTheMagicRoom() {
   QCOMPARE(view().trails().size(), std::size_t(2));
   QCOMPARE(view().velocityArrows().size(), std::size_t(2));
   // The trail's own colour, lighter than its ball, shows along its path in the view.
-  QTRY_VERIFY(window_->framesRendered() > 0);
+  QTRY_VERIFY(framesRendered(*window_) > 0);
   const QImage frame = view().grabFramebuffer();
   const QColor trail = view().trails()[0].color;
   const std::vector<Vec3>& path = view().trails()[0].points;
@@ -404,7 +404,7 @@ void TestStoryExport::screenshotOfTheMagicRoom() {
   if (!folder.isEmpty()) {
     QDir().mkpath(folder);
     QVERIFY(window_->grab().save(QDir(folder).filePath("ball-story.png")));
-    QVERIFY(window_->imageExport()
+    QVERIFY(imageExport(*window_)
                 ->write(QDir(folder).filePath("ball-story-view.png"), QSize(1280, 720))
                 .isEmpty());
   }

@@ -201,7 +201,7 @@ void TestUserSession::deletingABallKeepsEveryOtherName() {
   const Scene room = magicRoom();
   QVERIFY(document().scene() == room);
   QCOMPARE(room.balls[0].color, std::string("#e63946"));  // the red one
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   click(room.balls[0].position);
   QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 0}}));
   QTest::keyClick(window_.get(), Qt::Key_Delete);
@@ -219,7 +219,7 @@ void TestUserSession::deletingABallKeepsEveryOtherName() {
 void TestUserSession::deletingADuplicateKeepsTheOriginals() {
   openExample("magic-room");
   const Scene room = magicRoom();
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   click(room.balls[9].position);
   QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 9}}));
   QTest::keyClick(window_.get(), Qt::Key_D, Qt::ControlModifier);
@@ -240,7 +240,7 @@ void TestUserSession::deletingADuplicateKeepsTheOriginals() {
 void TestUserSession::objectsAddedAwayFromTheBallsAreDrawn() {
   QTest::keyClick(window_.get(), Qt::Key_N, Qt::ControlModifier);
   QVERIFY(document().scene().balls.empty());
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   const QSize size = view().size();
   QTest::keyClick(window_.get(), Qt::Key_B);
   for (double x : {0.45, 0.5, 0.55})
@@ -302,7 +302,7 @@ void TestUserSession::backgroundClicksSelectNothing() {
     for (const double turn : {0.0, 2.5}) {
       view().camera().orbit(turn, -0.4 * turn);
       view().update();
-      QTRY_VERIFY(window_->framesRendered() > 2);
+      QTRY_VERIFY(framesRendered(*window_) > 2);
       clickTheBackground();
     }
   }
@@ -403,7 +403,7 @@ void TestUserSession::openingAScenesFramesIt() {
   view().camera().zoom(6);
   view().camera().orbit(1.0, 0.3);
   openExample("gas-box");
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   carom::render::Camera home;
   home.setAspectRatio(view().camera().aspectRatio());
   home.home(view().scene()->bounds);
@@ -439,7 +439,7 @@ void TestUserSession::newGivesAFloorToBuildOn() {
   QVERIFY(fresh.planes[0].point.isZero());
   QVERIFY(fresh.planes[0].normal == Vec3::UnitY());
   QVERIFY(!document().isModified());
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   QTest::keyClick(window_.get(), Qt::Key_B);
   const QSize size = view().size();
   QTest::mouseClick(&view(), Qt::LeftButton, {}, QPoint(size.width() / 2, size.height() / 2));
@@ -458,7 +458,7 @@ void TestUserSession::newGivesAFloorToBuildOn() {
 // A passing message (a refusal, a save) shows beside the time/fps/energy readout, not over it.
 void TestUserSession::statusMessagesLeaveTheReadout() {
   window_->setRunning(true);
-  QTRY_VERIFY(window_->statusText().contains("fps"));
+  QTRY_VERIFY(statusText(*window_).contains("fps"));
   window_->setRunning(false);
   const QStringList labels = [&] {
     QStringList texts;
@@ -468,7 +468,7 @@ void TestUserSession::statusMessagesLeaveTheReadout() {
   }();
   QVERIFY(labels.join(' ').contains("fps"));
   window_->showMessage("Something was refused");
-  QCOMPARE(window_->statusMessage(), QString("Something was refused"));
+  QCOMPARE(statusMessage(*window_), QString("Something was refused"));
   bool readoutVisible = false;
   for (QLabel* label : window_->statusBar()->findChildren<QLabel*>())
     if (label->isVisible() && label->text().contains("fps")) readoutVisible = true;
@@ -497,17 +497,17 @@ void TestUserSession::wholeSessionInEveryLanguage() {
   window_->findChild<QAction*>("example:galton-board")->trigger();
   const Scene board = *carom::io::loadSceneFile(":/scenes/galton-board.json").scene;
   QTRY_VERIFY(document().scene() == board);
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   const std::size_t ball = board.balls.size(), peg = board.cylinders.size();
 
   // One of each shape, on the floor in front of the board and behind it.
   QTest::keyClick(window_.get(), Qt::Key_B);
   click(Vec3(1.5, 0, 1.0));
-  QVERIFY2(document().scene().balls.size() == ball + 1, qPrintable(window_->statusMessage()));
+  QVERIFY2(document().scene().balls.size() == ball + 1, qPrintable(statusMessage(*window_)));
   QTest::keyClick(window_.get(), Qt::Key_K);
   click(Vec3(-1.5, 0, 1.0));
   QVERIFY2(document().scene().boxes.size() == board.boxes.size() + 1,
-           qPrintable(window_->statusMessage()));
+           qPrintable(statusMessage(*window_)));
   const std::size_t box = board.boxes.size();
   const carom::Box& placed = document().scene().boxes[box];
   QVERIFY(std::abs(placed.center.y() - placed.halfExtents.y()) < 1e-9);  // on the floor
@@ -519,7 +519,7 @@ void TestUserSession::wholeSessionInEveryLanguage() {
   QTest::keyClicks(toolLength, number("1.5"));
   QTest::keyClick(toolLength, Qt::Key_Return);
   click(Vec3(1.5, 0, -1.0));
-  QVERIFY2(document().scene().cylinders.size() == peg + 1, qPrintable(window_->statusMessage()));
+  QVERIFY2(document().scene().cylinders.size() == peg + 1, qPrintable(statusMessage(*window_)));
   const carom::Cylinder post = document().scene().cylinders[peg];
   QCOMPARE(post.length, std::optional(1.5));
   QVERIFY2(std::abs(post.point.y() - 0.75) < 1e-9, qPrintable(QString::number(post.point.y())));
@@ -530,7 +530,7 @@ void TestUserSession::wholeSessionInEveryLanguage() {
   const Vec3 aside(-away.z(), 0, away.x());  // past the board's side, not through it
   click(Vec3(target.x(), 0, target.z()) + 1.2 * away + 1.2 * aside);
   QVERIFY2(document().scene().planes.size() == board.planes.size() + 1,
-           qPrintable(window_->statusMessage()));
+           qPrintable(statusMessage(*window_)));
 
   // Negative values typed in the language's format, each shown from its sign.
   QTest::keyClick(window_.get(), Qt::Key_V);
@@ -627,7 +627,7 @@ void TestUserSession::openEditDeleteSaveReopen() {
   QVERIFY(carom::io::saveSceneFile(start, file, nullptr));
   openThroughTheDialog(file);
   QVERIFY(document().scene() == start);
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
 
   Scene expected = start;
   // Delete the first plane (the floor), a middle cylinder, and the last ball, each by a click
@@ -668,7 +668,7 @@ void TestUserSession::openEditDeleteSaveReopen() {
 // and turned by its handles, the stacked one deleted; every step undone and redone with the
 // keys; then Save As, a new window, Open, and every field of every object compared.
 void TestUserSession::buildWithBoxesSaveReopen() {
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   QTest::keyClick(window_.get(), Qt::Key_K);
   QVERIFY(window_->findChild<QAction*>("toolAddBox")->isChecked());
   Scene before = document().scene();
@@ -711,14 +711,14 @@ void TestUserSession::buildWithBoxesSaveReopen() {
   const Scene typedIn = document().scene();
   type("halfExtents.y", "0");
   QVERIFY(document().scene() == typedIn);
-  QVERIFY2(window_->statusMessage().contains("Half extents y of crate must be above zero"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("Half extents y of crate must be above zero"),
+           qPrintable(statusMessage(*window_)));
 
   // The second box, made longer by its +x face and turned by its handle.
   click(document().scene().boxes[1].center + Vec3(0, 0.5, 0));
   QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 1}}));
   before = document().scene();
-  std::optional<Handle> face = findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0);
+  std::optional<Handle> face = findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 0);
   QVERIFY(face);
   drag(at(face->tip), at(face->tip + Vec3(0.5, 0, 0)),
        [&] { return document().scene().boxes[1].halfExtents.x() > 0.7; });
@@ -728,7 +728,7 @@ void TestUserSession::buildWithBoxesSaveReopen() {
   undoRedo(before, document().scene());
   before = document().scene();
   const std::optional<Handle> turn =
-      findHandle(window_->tools()->handles(), HandleRole::BoxTurn, 1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::BoxTurn, 1);
   QVERIFY(turn);
   const Vec3 top = turn->base;
   const auto turnedTip = [&](double degrees) -> Vec3 {
@@ -773,7 +773,7 @@ void TestUserSession::buildWithBoxesSaveReopen() {
 // again; every step undone and redone with the keys; then Save As, a new window, Open, and
 // every field of every object compared.
 void TestUserSession::buildWithCappedCylindersSaveReopen() {
-  QTRY_VERIFY(window_->framesRendered() > 2);
+  QTRY_VERIFY(framesRendered(*window_) > 2);
   QTest::keyClick(window_.get(), Qt::Key_K);
   click(Vec3(2, 0, 1.5));
   QCOMPARE(document().scene().boxes.size(), std::size_t{1});
@@ -802,8 +802,8 @@ void TestUserSession::buildWithCappedCylindersSaveReopen() {
   type("cylinderLength", "0");
   QVERIFY(document().scene() == standing);
   QCOMPARE(document().undoStack()->count(), commands);
-  QVERIFY2(window_->statusMessage().contains("Length of Cylinder 0 must be above zero"),
-           qPrintable(window_->statusMessage()));
+  QVERIFY2(statusMessage(*window_).contains("Length of Cylinder 0 must be above zero"),
+           qPrintable(statusMessage(*window_)));
 
   // The next post is capped like the last one, with its lower cap on the floor.
   before = document().scene();
@@ -818,7 +818,7 @@ void TestUserSession::buildWithCappedCylindersSaveReopen() {
   QTest::keyClick(window_.get(), Qt::Key_V);
   before = document().scene();
   std::optional<Handle> end =
-      findHandle(window_->tools()->handles(), HandleRole::CylinderEnd, 0, 1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::CylinderEnd, 0, 1);
   QVERIFY(end);
   drag(at(end->tip), at(end->tip + Vec3(0, 0.5, 0)),
        [&] { return document().scene().cylinders[1].length.value_or(0) > 1.65; });
@@ -836,7 +836,7 @@ void TestUserSession::buildWithCappedCylindersSaveReopen() {
   QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Box, 0}}));
   before = document().scene();
   const std::optional<Handle> face =
-      findHandle(window_->tools()->handles(), HandleRole::BoxFace, 0, -1);
+      findHandle(editorTools(*window_)->handles(), HandleRole::BoxFace, 0, -1);
   QVERIFY(face);
   drag(at(face->tip), at(face->tip + Vec3(0.4, 0, 0)),
        [&] { return document().scene().boxes[0].halfExtents.x() < 0.35; });

@@ -109,7 +109,7 @@ class TestVideoExport : public carom::testing::EditorFixture {
   }
   // Exports the stretch as PNGs into `folder`; empty, or what went wrong.
   QString exportPngs(const QString& folder) {
-    VideoExport& exporter = *window_->videoExport();
+    VideoExport& exporter = *videoExport(*window_);
     QSignalSpy finished(&exporter, &VideoExport::finished);
     const QString refused = exporter.start(settings(VideoSettings::Format::Png, folder));
     if (!refused.isEmpty()) return refused;
@@ -172,7 +172,7 @@ void TestVideoExport::pngFramesOfTheRecordedRun() {
   runPast(1.0);
   QTemporaryDir folder;
   const QString frames = folder.filePath("frames");  // made by the export
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QSignalSpy finished(&exporter, &VideoExport::finished);
   QSignalSpy progressed(&exporter, &VideoExport::progressed);
   QCOMPARE(exporter.start(settings(VideoSettings::Format::Png, frames)), QString());
@@ -182,7 +182,7 @@ void TestVideoExport::pngFramesOfTheRecordedRun() {
   QVERIFY2(ok, qPrintable(text));
   QVERIFY(!exporter.busy());
   QVERIFY2(text.startsWith("Exported 25 video frames of 320×240 at 24 fps"), qPrintable(text));
-  QCOMPARE(window_->statusMessage(), text);
+  QCOMPARE(statusMessage(*window_), text);
   QCOMPARE(progressed.count(), 25);
   QCOMPARE(progressed.last().at(0).toInt(), 25);
   const QStringList files = frameFiles(frames);
@@ -257,7 +257,7 @@ void TestVideoExport::mp4HasTheFramesAndDuration() {
   runPast(1.0);
   QTemporaryDir folder;
   const QString file = folder.filePath("run.mp4");
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QSignalSpy finished(&exporter, &VideoExport::finished);
   QCOMPARE(exporter.start(settings(VideoSettings::Format::Mp4, file)), QString());
   const auto [ok, text] = waitForEnd(finished);
@@ -284,7 +284,7 @@ void TestVideoExport::cancelStopsAndRemovesTheMp4() {
   runPast(1.0);
   QTemporaryDir folder;
   const QString file = folder.filePath("cancelled.mp4");
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QSignalSpy finished(&exporter, &VideoExport::finished);
   int seenAtCancel = -1;
   // Cancel as the user does, with the progress dialog's button, after three frames.
@@ -326,7 +326,7 @@ void TestVideoExport::cancelStopsAndRemovesTheMp4() {
 void TestVideoExport::cancelLeavesThePngsWritten() {
   runPast(1.0);
   QTemporaryDir folder;
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QSignalSpy finished(&exporter, &VideoExport::finished);
   connect(&exporter, &VideoExport::progressed, this, [&](int written, int) {
     if (written == 2) exporter.cancel();
@@ -370,7 +370,7 @@ void TestVideoExport::badInputsAreRefused() {
   QCOMPARE(read.path, QString("kept"));
 
   // Paths that cannot be written: refused before anything starts.
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QTemporaryDir folder;
   QFile blocker(folder.filePath("a-file"));
   QVERIFY(blocker.open(QIODevice::WriteOnly));
@@ -407,7 +407,7 @@ void TestVideoExport::ffmpegFailingIsSaid() {
   QTemporaryDir folder;
   VideoSettings failing = settings(VideoSettings::Format::Mp4, folder.filePath("failed.mp4"));
   failing.to = 0.25;
-  VideoExport& exporter = *window_->videoExport();
+  VideoExport& exporter = *videoExport(*window_);
   QSignalSpy finished(&exporter, &VideoExport::finished);
   const QString started = exporter.start(failing);
   qputenv("PATH", path);
@@ -415,7 +415,7 @@ void TestVideoExport::ffmpegFailingIsSaid() {
   const auto [ok, text] = waitForEnd(finished);
   QVERIFY(!ok);
   QVERIFY2(text.startsWith("ffmpeg failed (exit code 7): fake encoder gave up"), qPrintable(text));
-  QCOMPARE(window_->statusMessage(), text);
+  QCOMPARE(statusMessage(*window_), text);
   QVERIFY(!exporter.busy());
   QVERIFY(!QFile::exists(failing.path));
 }
@@ -453,7 +453,7 @@ void TestVideoExport::menuPausesAsksAndExports() {
     dialog->selectFile(folder.path());
     QMetaObject::invokeMethod(dialog, "accept");
   });
-  QSignalSpy finished(window_->videoExport(), &VideoExport::finished);
+  QSignalSpy finished(videoExport(*window_), &VideoExport::finished);
   QAction* action = window_->findChild<QAction*>("exportVideo");
   QVERIFY(action);
   QCOMPARE(action->text(), QString("Export &Video…"));

@@ -72,18 +72,17 @@ class TestWatchWindow : public carom::testing::EditorFixture {
     QVERIFY(snapshot->watchEvent);
     QCOMPARE(snapshot->watchEvent->lastGoodTime, 0.0);
     QVERIFY(!run->isChecked());
-    QVERIFY2(window_->statusMessage().contains("ball 1 (nut)"),
-             qPrintable(window_->statusMessage()));
+    QVERIFY2(statusMessage(*window_).contains("ball 1 (nut)"), qPrintable(statusMessage(*window_)));
     // The ball is selected and the camera looks at it.
     QCOMPARE(document().selection(), (carom::editor::Selection{{ObjectKind::Ball, 1}}));
     const QVector3D target = view().camera().target();
     const Vec3& nut = snapshot->positions[1];
     QVERIFY((Vec3(target.x(), target.y(), target.z()) - nut).norm() < 1e-4);
-    QTRY_VERIFY(!window_->watchDialog());
+    QTRY_VERIFY(!watchDialog(*window_));
     // Resumed, the run goes on: the same problem is not reported again while it lasts.
     window_->setRunning(true);
     QTRY_VERIFY_WITH_TIMEOUT(latest()->time > 0.5, 10000);
-    QVERIFY(!window_->watchDialog());
+    QVERIFY(!watchDialog(*window_));
   }
 
   // A name as long as the format allows is elided in the dialog and the status bar, which then
@@ -97,7 +96,7 @@ class TestWatchWindow : public carom::testing::EditorFixture {
     carom::testing::DialogAnswerer answer(QMessageBox::Ok);
     window_->setRunning(true);
     QTRY_VERIFY(answer.answered());
-    for (const QString& text : {answer.text(), window_->statusMessage()}) {
+    for (const QString& text : {answer.text(), statusMessage(*window_)}) {
       QVERIFY2(text.contains("ball 1 (nut NNN") && text.contains("box 0 (BBB"), qPrintable(text));
       QCOMPARE(text.count("\u2026"), 2);
       QVERIFY2(text.size() < 200, qPrintable(text));
@@ -107,16 +106,16 @@ class TestWatchWindow : public carom::testing::EditorFixture {
   // The dialog offers the last frame that passed the watch, from the timeline.
   void offersTheMomentBefore() {
     window_->setRunning(true);
-    QTRY_VERIFY(window_->watchDialog());
+    QTRY_VERIFY(watchDialog(*window_));
     const auto stopped = latest();
     QVERIFY(stopped->watchEvent);
-    auto* before = window_->watchDialog()->findChild<QPushButton*>("showMomentBefore");
+    auto* before = watchDialog(*window_)->findChild<QPushButton*>("showMomentBefore");
     QVERIFY(before);
     before->click();
     QTRY_VERIFY(latest()->frame + 1 == stopped->frameCount);
     QCOMPARE(latest()->time, stopped->watchEvent->lastGoodTime);
     QVERIFY(latest()->positions != stopped->positions);
-    QTRY_VERIFY(!window_->watchDialog());
+    QTRY_VERIFY(!watchDialog(*window_));
   }
 
   void checksTurnedOffLetTheRunGoOn() {
@@ -126,12 +125,12 @@ class TestWatchWindow : public carom::testing::EditorFixture {
       action->trigger();
       QVERIFY(!action->isChecked());
     }
-    QVERIFY(!window_->watchMenu()->settings().escape);
+    QVERIFY(!watchMenu(*window_)->settings().escape);
     QCOMPARE(QSettings().value("watch/on/escape").toBool(), false);
     window_->setRunning(true);
     QTRY_VERIFY_WITH_TIMEOUT(latest()->time > 1.0, 10000);
     QVERIFY(latest()->running);
-    QVERIFY(!window_->watchDialog());
+    QVERIFY(!watchDialog(*window_));
     QCOMPARE(latest()->watchEvents, std::uint64_t(0));
     // Remembered for the next window.
     carom::ui::WatchMenu again;
@@ -158,7 +157,7 @@ class TestWatchWindow : public carom::testing::EditorFixture {
     window_->findChild<QAction*>("watchTolerances")->trigger();
     QVERIFY(refuse.answered());
     QVERIFY2(refusal.contains("-1"), qPrintable(refusal));
-    QCOMPARE(window_->watchMenu()->settings(), carom::WatchSettings{});
+    QCOMPARE(watchMenu(*window_)->settings(), carom::WatchSettings{});
     // A tolerance wider than the nut's overlap (two radii) with escape off: the run goes on.
     carom::testing::ModalAnswerer<carom::ui::WatchToleranceDialog> widen(
         [](carom::ui::WatchToleranceDialog* dialog) {
@@ -167,12 +166,12 @@ class TestWatchWindow : public carom::testing::EditorFixture {
         });
     window_->findChild<QAction*>("watchTolerances")->trigger();
     QVERIFY(widen.answered());
-    QCOMPARE(window_->watchMenu()->settings().penetrationTolerance, 2.5);
+    QCOMPARE(watchMenu(*window_)->settings().penetrationTolerance, 2.5);
     QCOMPARE(QSettings().value("watch/penetration").toDouble(), 2.5);
     window_->findChild<QAction*>("watch:escape")->trigger();
     window_->setRunning(true);
     QTRY_VERIFY_WITH_TIMEOUT(latest()->time > 1.0, 10000);
-    QVERIFY(!window_->watchDialog());
+    QVERIFY(!watchDialog(*window_));
   }
 
  private:

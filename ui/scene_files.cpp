@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLocale>
@@ -96,6 +97,12 @@ QString SceneFiles::exampleTitle(int index) {
   return tr(kExamples[index].title);
 }
 
+bool SceneFiles::event(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  return QObject::event(event);
+}
+
+// Renames an open example in the program's current language.
 void SceneFiles::retranslate() {
   if (openedExample_ >= 0) document_->setTitle(exampleTitle(openedExample_));
 }

@@ -52,8 +52,6 @@ class SceneFiles : public QObject {
   // program's current language.
   static QStringList exampleFiles();
   static QString exampleTitle(int index);
-  // Renames an open example in the program's current language.
-  void retranslate();
 
  signals:
   // Around every scene that opens: the window stops the old one first and frames the new one.
@@ -62,7 +60,12 @@ class SceneFiles : public QObject {
   // For the status bar ("Saved …").
   void message(const QString& text);
 
+ protected:
+  // A LanguageChange, which the window passes on to its children, renames an open example.
+  bool event(QEvent* event) override;
+
  private:
+  void retranslate();
   bool saveTo(const QString& fileName);
   // Commits what the user is typing in a dock, before a save or a question about saving.
   void commitTypedValue();

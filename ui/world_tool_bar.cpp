@@ -5,7 +5,9 @@
 #include "ui/editor/scene_document.h"
 #include "ui/number_box.h"
 
+#include <QAction>
 #include <QComboBox>
+#include <QEvent>
 #include <QLabel>
 #include <QSignalBlocker>
 
@@ -34,6 +36,17 @@ WorldToolBar::WorldToolBar(editor::SceneDocument* document, QWidget* parent)
               [index](World& world) { world.integrator = Integrator(index); });
   });
   addWidget(integrator_);
+  addTimeStepActions();
+  retranslate();
+}
+
+void WorldToolBar::addTimeStepActions() {
+  largerStepAction_ = new QAction(this);
+  largerStepAction_->setShortcuts({Qt::Key_Plus, Qt::Key_Equal});
+  connect(largerStepAction_, &QAction::triggered, this, [this] { changeTimeStep(1.25); });
+  smallerStepAction_ = new QAction(this);
+  smallerStepAction_->setShortcut(Qt::Key_Minus);
+  connect(smallerStepAction_, &QAction::triggered, this, [this] { changeTimeStep(1.0 / 1.25); });
 }
 
 void WorldToolBar::addGravity() {
@@ -144,6 +157,11 @@ void WorldToolBar::retranslateMethodTip() {
   method_->setToolTip(tip);
 }
 
+void WorldToolBar::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QToolBar::changeEvent(event);
+}
+
 void WorldToolBar::retranslate() {
   setWindowTitle(tr("World"));
   gravityLabel_->setText(tr("Gravity"));
@@ -162,6 +180,8 @@ void WorldToolBar::retranslate() {
       tr("Auto's tolerance: the relative energy error per simulated second (and a penetration of "
          "at most 5% of the radius)"));
   integrator_->setToolTip(tr("Integrator of the swept and discrete methods"));
+  largerStepAction_->setText(tr("Larger Time Step"));
+  smallerStepAction_->setText(tr("Smaller Time Step"));
   // The boxes show their values in the language's number format.
   for (NumberBox* box : {gravity_[0], gravity_[1], gravity_[2], timeStep_, accuracy_}) {
     const QSignalBlocker blocker(box);

@@ -5,6 +5,7 @@
 #include "sim/measure/method_choice.h"
 #include "sim/model/scene.h"
 
+#include <QList>
 #include <QString>
 #include <QToolBar>
 
@@ -36,15 +37,21 @@ class WorldToolBar : public QToolBar {
   void changeTimeStep(double factor);
   // The accuracy auto aims at.
   const AccuracyTolerance& autoTolerance() const;
-  void retranslate();
+  // Larger and Smaller Time Step (+ and -), for the window, whose keys they are.
+  QList<QAction*> timeStepActions() const { return {largerStepAction_, smallerStepAction_}; }
 
  signals:
   // For the status bar: a refusal, or what auto is doing or chose.
   void message(const QString& text);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void addGravity();
   void addMethod();
+  void addTimeStepActions();
+  void retranslate();
   void retranslateMethodTip();
 
   editor::SceneDocument* document_;
@@ -60,6 +67,8 @@ class WorldToolBar : public QToolBar {
   QAction* accuracyLabelAction_ = nullptr;
   QAction* accuracyBoxAction_ = nullptr;
   QComboBox* integrator_ = nullptr;
+  QAction* largerStepAction_ = nullptr;
+  QAction* smallerStepAction_ = nullptr;
 };
 
 }  // namespace carom::ui

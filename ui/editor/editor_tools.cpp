@@ -2,6 +2,7 @@
 
 #include "sim/geometry/ray_cast.h"
 #include "sim/geometry/shapes.h"
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/scene_document.h"
 #include "ui/render/scene_view.h"
 
@@ -40,20 +41,6 @@ std::pair<Vec3, Vec3> tangents(const Vec3& normal) {
   return {u, normal.cross(u)};
 }
 
-ObjectKind objectKindOf(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Plane:
-      return ObjectKind::Plane;
-    case ShapeKind::Cylinder:
-      return ObjectKind::Cylinder;
-    case ShapeKind::Box:
-      return ObjectKind::Box;
-    case ShapeKind::Ball:
-      break;
-  }
-  return ObjectKind::Ball;
-}
-
 // The point of the line through `point` along the unit `axis` nearest to the ray; none when
 // the ray runs along the line.
 std::optional<Vec3> closestOnLine(const Vec3& origin, const Vec3& direction, const Vec3& point,
@@ -64,20 +51,6 @@ std::optional<Vec3> closestOnLine(const Vec3& origin, const Vec3& direction, con
   if (denominator < 1e-9) return std::nullopt;
   const double s = (axis.dot(w) - b * direction.dot(w)) / denominator;
   return point + s * axis;
-}
-
-// `rotation` followed by a turn of `degrees` about the unit `axis`. A turn about the axis the
-// box already turns about (always the case for an upright box turned about y) only changes its
-// degrees, so that the file keeps the numbers the user expects.
-Rotation turnedAbout(const std::optional<Rotation>& rotation, const Vec3& axis, double degrees) {
-  if (!rotation) return Rotation{axis, degrees};
-  const Vec3 own = rotation->axis.normalized();
-  if (std::abs(own.dot(axis)) > 1.0 - 1e-12)
-    return Rotation{rotation->axis, rotation->degrees + (own.dot(axis) > 0 ? degrees : -degrees)};
-  constexpr double kRadians = std::numbers::pi / 180.0;
-  const Eigen::AngleAxisd turned(Eigen::AngleAxisd(degrees * kRadians, axis) *
-                                 Eigen::AngleAxisd(rotation->degrees * kRadians, own));
-  return Rotation{turned.axis(), turned.angle() / kRadians};
 }
 
 }  // namespace
@@ -152,60 +125,14 @@ std::optional<EditorTools::Picked> EditorTools::pick(const QPointF& position) co
   const Eigen::AlignedBox3d clip = view_->clipBox();
   const std::optional<RayHit> hit = castRay(document_->scene(), origin, direction, &clip);
   if (!hit) return std::nullopt;
-  return Picked{{objectKindOf(hit->kind), hit->index}, hit->point};
+  return Picked{{kindOfShape(hit->kind), hit->index}, hit->point};
 }
 
 std::vector<EditorTools::Handle> EditorTools::handles() const {
   const Selection& selection = document_->selection();
   if (selection.size() != 1) return {};
-  const ObjectRef& ref = selection.front();
-  const Scene& scene = document_->scene();
   const double arrow = kDirectionArrowFraction * view_->clipBox().diagonal().norm();
-  switch (ref.kind) {
-    case ObjectKind::Ball: {
-      const Ball& ball = scene.balls[ref.index];
-      if (ball.velocity.isZero()) return {};
-      return {{ball.position, ball.position + kArrowSeconds * ball.velocity}};
-    }
-    case ObjectKind::Plane: {
-      const Plane& plane = scene.planes[ref.index];
-      return {{plane.point, plane.point + arrow * plane.normal.normalized()}};
-    }
-    case ObjectKind::Cylinder: {
-      const Cylinder& cylinder = scene.cylinders[ref.index];
-      const Vec3 axis = cylinder.axis.normalized();
-      if (!cylinder.length) return {{cylinder.point, cylinder.point + arrow * axis}};
-      std::vector<Handle> arrows;
-      for (const int side : {1, -1}) {
-        const Vec3 end = cylinder.point + side * 0.5 * *cylinder.length * axis;
-        arrows.push_back({end, end + side * arrow * axis, HandleRole::CylinderEnd, 0, side});
-      }
-      // The turn goes on from the end's arrow, so that the two tips stay an arrow apart however
-      // short the cylinder is.
-      const Vec3 beyond = arrows.front().tip;
-      arrows.push_back({beyond, beyond + arrow * axis});
-      return arrows;
-    }
-    case ObjectKind::Box: {
-      const Box& box = scene.boxes[ref.index];
-      const BoxShape shape = boxShape(box);
-      std::vector<Handle> arrows;
-      for (int k = 0; k < 3; ++k) {
-        for (const int side : {1, -1}) {
-          const Vec3 along = side * shape.axes.col(k);
-          const Vec3 face = box.center + box.halfExtents[k] * along;
-          arrows.push_back({face, face + arrow * along, HandleRole::BoxFace, k, side});
-        }
-      }
-      const Vec3 top = box.center + box.halfExtents.y() * shape.axes.col(1);
-      const Vec3 toCorner =
-          box.halfExtents.x() * shape.axes.col(0) + box.halfExtents.z() * shape.axes.col(2);
-      arrows.push_back(
-          {top, top + toCorner + arrow * toCorner.normalized(), HandleRole::BoxTurn, 1});
-      return arrows;
-    }
-  }
-  return {};
+  return objectHandles(document_->scene(), selection.front(), arrow);
 }
 
 std::optional<EditorTools::Handle> EditorTools::handleAt(const QPointF& position) const {
@@ -219,59 +146,6 @@ std::optional<EditorTools::Handle> EditorTools::handleAt(const QPointF& position
     nearestPixels = pixels;
   }
   return nearest;
-}
-
-QString EditorTools::dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const {
-  switch (ref.kind) {
-    case ObjectKind::Plane: {
-      Plane& plane = scene.planes[ref.index];
-      const Vec3 direction = point - plane.point;
-      if (direction.norm() > 0.0) plane.normal = direction.normalized();
-      return tr("Turn Plane");
-    }
-    case ObjectKind::Cylinder: {
-      Cylinder& cylinder = scene.cylinders[ref.index];
-      if (grabbedHandle_.role == HandleRole::CylinderEnd) {
-        const Vec3 along = grabbedHandle_.side * cylinder.axis.normalized();
-        const Vec3 fixedEnd = cylinder.point - 0.5 * *cylinder.length * along;
-        // The end follows the tip; the validation refuses a length of zero or less.
-        cylinder.length = draggedSize(*cylinder.length + along.dot(point - grabPoint_));
-        cylinder.point = fixedEnd + 0.5 * *cylinder.length * along;
-        return tr("Resize Cylinder");
-      }
-      const Vec3 direction = point - cylinder.point;
-      if (direction.norm() > 0.0) cylinder.axis = direction.normalized();
-      return tr("Turn Cylinder");
-    }
-    case ObjectKind::Box: {
-      Box& box = scene.boxes[ref.index];
-      const BoxShape shape = boxShape(box);
-      if (grabbedHandle_.role == HandleRole::BoxTurn) {
-        // The angle the tip has swept about the up axis through the centre since the press.
-        const Vec3 up = shape.axes.col(1);
-        Vec3 from = grabPoint_ - box.center;
-        Vec3 to = point - box.center;
-        from -= up.dot(from) * up;
-        to -= up.dot(to) * up;
-        const double radians = std::atan2(up.dot(from.cross(to)), from.dot(to));
-        box.rotation = turnedAbout(box.rotation, up, radians * 180.0 / std::numbers::pi);
-        return tr("Turn Box");
-      }
-      const int k = grabbedHandle_.axis;
-      const Vec3 along = grabbedHandle_.side * shape.axes.col(k);
-      const Vec3 fixedFace = box.center - box.halfExtents[k] * along;
-      // The face follows the tip; the validation refuses a box turned inside out.
-      box.halfExtents[k] =
-          0.5 * draggedSize(2.0 * box.halfExtents[k] + along.dot(point - grabPoint_));
-      box.center = fixedFace + box.halfExtents[k] * along;
-      return tr("Resize Box");
-    }
-    case ObjectKind::Ball:
-      break;
-  }
-  Ball& ball = scene.balls[ref.index];
-  ball.velocity = (point - ball.position) / kArrowSeconds;
-  return tr("Change Velocity");
 }
 
 std::optional<Vec3> EditorTools::onDragPlane(const QPointF& position, const Vec3& point) const {
@@ -408,7 +282,7 @@ bool EditorTools::pressOnRunningBall(const QPointF& position) {
   const auto [origin, direction] = view_->rayAt(position);
   const Eigen::AlignedBox3d clip = view_->clipBox();
   const std::optional<RayHit> hit = castRay(running, origin, direction, &clip);
-  if (!hit || objectKindOf(hit->kind) != ObjectKind::Ball) return false;
+  if (!hit || kindOfShape(hit->kind) != ObjectKind::Ball) return false;
   document_->setSelection({{ObjectKind::Ball, hit->index}});
   // The grab begins when the cursor moves: a click only selects, and leaves the ball alone.
   drag_ = Drag::PendingGrab;
@@ -474,7 +348,9 @@ bool EditorTools::mouseMove(QMouseEvent* event) {
   Scene edited = draggedAtPress_;
   QString text;
   if (drag_ == Drag::Handle) {
-    text = dragHandle(edited, local.front(), *point);
+    text = dragHandle(
+        edited, local.front(),
+        {grabbedHandle_, grabPoint_, *point, [this](double size) { return draggedSize(size); }});
   } else {
     const Vec3 offset = keptOnSurfaces(event->position(), *point - grabPoint_);
     for (const ObjectRef& ref : local) {

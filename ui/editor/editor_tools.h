@@ -5,6 +5,7 @@
 
 #include "sim/geometry/ray_cast.h"
 #include "sim/model/scene.h"
+#include "ui/editor/object_handles.h"
 #include "ui/editor/object_ref.h"
 #include "ui/editor/scene_change.h"
 #include "ui/editor/standing.h"
@@ -44,33 +45,18 @@ class EditorTools : public QObject {
   std::optional<double> cylinderLength() const { return cylinderLength_; }
   void setCylinderLength(std::optional<double> length);
 
-  // A ball's velocity arrow is this many seconds of its flight long.
-  static constexpr double kArrowSeconds = 0.5;
   // A plane's normal and a cylinder's axis arrows are this fraction of the view's clip box.
   static constexpr double kDirectionArrowFraction = 0.12;
 
-  // What dragging a handle's tip does: point the object's direction at the cursor (a ball's
-  // velocity, a plane's normal, a cylinder's axis), move a box's face or a capped cylinder's end
-  // along its line with the opposite one fixed, or turn a box about its own up axis. With
-  // snapping on, a moved face or end makes the box's size or the cylinder's length a whole
-  // number of grid steps.
-  enum class HandleRole { Direction, BoxFace, CylinderEnd, BoxTurn };
-  struct Handle {
-    Vec3 base;
-    Vec3 tip;
-    HandleRole role = HandleRole::Direction;
-    int axis = 0;  // the box's own x, y or z: a face's, or y, the axis a turn is about
-    int side = 1;  // a face or an end: +1 on the side its axis points to, -1 on the other
-  };
+  // The selected object's handles (object_handles.h).
+  using Handle = editor::Handle;
+  using HandleRole = editor::HandleRole;
   // A run is in progress and the view shows its balls at `positions` (empty: the scene's
   // start, being edited). Then a Select drag on a ball grabs it in the running world
   // (grabStarted, grabMoved, grabReleased) instead of moving it in the scene.
   void setRunningBalls(std::vector<Vec3> positions) { runningBalls_ = std::move(positions); }
 
-  // The arrows a single selected object shows: a ball's velocity (none at rest), a plane's
-  // normal from its point, an infinite cylinder's axis from its point; a capped cylinder's two
-  // ends, and the axis beyond the end its axis points to; a box's six faces, and over its top,
-  // out past a corner, the handle that turns it.
+  // The arrows a single selected object shows (objectHandles()).
   std::vector<Handle> handles() const;
 
  signals:
@@ -115,9 +101,6 @@ class EditorTools : public QObject {
   std::optional<Picked> pick(const QPointF& position) const;
   // The handle whose tip is under the cursor, if any.
   std::optional<Handle> handleAt(const QPointF& position) const;
-  // The edit a drag of the grabbed handle to `point` makes of `ref` in `scene`; returns the
-  // command's text. Both name the object's copy that the drag edits, as it was at the press.
-  QString dragHandle(Scene& scene, const ObjectRef& ref, const Vec3& point) const;
   // Where the cursor's ray meets the plane through `point` facing the camera.
   std::optional<Vec3> onDragPlane(const QPointF& position, const Vec3& point) const;
   // Where the grabbed face, end or turn handle's tip follows the cursor: along the face's axis

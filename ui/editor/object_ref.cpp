@@ -1,5 +1,7 @@
 #include "ui/editor/object_ref.h"
 
+#include "ui/editor/object_kinds.h"
+
 #include <QCoreApplication>
 #include <QFontMetrics>
 
@@ -14,18 +16,27 @@ Selection normalized(Selection selection) {
   return selection;
 }
 
+namespace {
+
+// The member each type of object is placed and dragged by.
+constexpr auto placePoint(const Ball&) {
+  return &Ball::position;
+}
+constexpr auto placePoint(const Plane&) {
+  return &Plane::point;
+}
+constexpr auto placePoint(const Cylinder&) {
+  return &Cylinder::point;
+}
+constexpr auto placePoint(const Box&) {
+  return &Box::center;
+}
+
+}  // namespace
+
 int objectCount(const Scene& scene, ObjectKind kind) {
-  switch (kind) {
-    case ObjectKind::Ball:
-      return static_cast<int>(scene.balls.size());
-    case ObjectKind::Plane:
-      return static_cast<int>(scene.planes.size());
-    case ObjectKind::Cylinder:
-      return static_cast<int>(scene.cylinders.size());
-    case ObjectKind::Box:
-      return static_cast<int>(scene.boxes.size());
-  }
-  return 0;
+  return visitObjects(scene, kind,
+                      [](const auto& objects) { return static_cast<int>(objects.size()); });
 }
 
 bool exists(const Scene& scene, const ObjectRef& ref) {
@@ -33,37 +44,20 @@ bool exists(const Scene& scene, const ObjectRef& ref) {
 }
 
 const ObjectInfo& objectInfo(const Scene& scene, const ObjectRef& ref) {
-  switch (ref.kind) {
-    case ObjectKind::Plane:
-      return scene.planes[ref.index];
-    case ObjectKind::Cylinder:
-      return scene.cylinders[ref.index];
-    case ObjectKind::Box:
-      return scene.boxes[ref.index];
-    case ObjectKind::Ball:
-      break;
-  }
-  return scene.balls[ref.index];
+  return visitObjects(scene, ref.kind,
+                      [&](const auto& objects) -> const ObjectInfo& { return objects[ref.index]; });
 }
 
 ObjectInfo& objectInfo(Scene& scene, const ObjectRef& ref) {
   return const_cast<ObjectInfo&>(objectInfo(std::as_const(scene), ref));
 }
 
-// In ObjectKind's order.
-constexpr const char* kKindNames[] = {
-    QT_TRANSLATE_NOOP("ObjectRef", "Ball"), QT_TRANSLATE_NOOP("ObjectRef", "Plane"),
-    QT_TRANSLATE_NOOP("ObjectRef", "Cylinder"), QT_TRANSLATE_NOOP("ObjectRef", "Box")};
-constexpr const char* kKindPluralNames[] = {
-    QT_TRANSLATE_NOOP("ObjectRef", "Balls"), QT_TRANSLATE_NOOP("ObjectRef", "Planes"),
-    QT_TRANSLATE_NOOP("ObjectRef", "Cylinders"), QT_TRANSLATE_NOOP("ObjectRef", "Boxes")};
-
 QString kindName(ObjectKind kind) {
-  return QCoreApplication::translate("ObjectRef", kKindNames[static_cast<int>(kind)]);
+  return QCoreApplication::translate("ObjectRef", kindInfo(kind).name);
 }
 
 QString kindPluralName(ObjectKind kind) {
-  return QCoreApplication::translate("ObjectRef", kKindPluralNames[static_cast<int>(kind)]);
+  return QCoreApplication::translate("ObjectRef", kindInfo(kind).pluralName);
 }
 
 QString objectLabel(const Scene& scene, const ObjectRef& ref) {
@@ -79,34 +73,17 @@ QString elidedName(const QString& name, const QFont& font) {
 }
 
 Vec3 objectPosition(const Scene& scene, const ObjectRef& ref) {
-  switch (ref.kind) {
-    case ObjectKind::Plane:
-      return scene.planes[ref.index].point;
-    case ObjectKind::Cylinder:
-      return scene.cylinders[ref.index].point;
-    case ObjectKind::Box:
-      return scene.boxes[ref.index].center;
-    case ObjectKind::Ball:
-      break;
-  }
-  return scene.balls[ref.index].position;
+  return visitObjects(scene, ref.kind, [&](const auto& objects) {
+    const auto& object = objects[ref.index];
+    return object.*placePoint(object);
+  });
 }
 
 void setObjectPosition(Scene& scene, const ObjectRef& ref, const Vec3& position) {
-  switch (ref.kind) {
-    case ObjectKind::Plane:
-      scene.planes[ref.index].point = position;
-      return;
-    case ObjectKind::Cylinder:
-      scene.cylinders[ref.index].point = position;
-      return;
-    case ObjectKind::Box:
-      scene.boxes[ref.index].center = position;
-      return;
-    case ObjectKind::Ball:
-      scene.balls[ref.index].position = position;
-      return;
-  }
+  visitObjects(scene, ref.kind, [&](auto& objects) {
+    auto& object = objects[ref.index];
+    object.*placePoint(object) = position;
+  });
 }
 
 Scene extract(const Scene& scene, const Selection& selection) {
@@ -114,42 +91,21 @@ Scene extract(const Scene& scene, const Selection& selection) {
   part.world = scene.world;
   for (const ObjectRef& ref : selection) {
     if (!exists(scene, ref)) continue;
-    switch (ref.kind) {
-      case ObjectKind::Ball:
-        part.balls.push_back(scene.balls[ref.index]);
-        break;
-      case ObjectKind::Plane:
-        part.planes.push_back(scene.planes[ref.index]);
-        break;
-      case ObjectKind::Cylinder:
-        part.cylinders.push_back(scene.cylinders[ref.index]);
-        break;
-      case ObjectKind::Box:
-        part.boxes.push_back(scene.boxes[ref.index]);
-        break;
-    }
+    forEachKind([&](auto array, ObjectKind kind) {
+      if (kind == ref.kind) (part.*array).push_back((scene.*array)[ref.index]);
+    });
   }
   return part;
 }
 
 Selection append(Scene& scene, const Scene& objects) {
   Selection added;
-  for (const Plane& plane : objects.planes) {
-    added.push_back({ObjectKind::Plane, static_cast<int>(scene.planes.size())});
-    scene.planes.push_back(plane);
-  }
-  for (const Cylinder& cylinder : objects.cylinders) {
-    added.push_back({ObjectKind::Cylinder, static_cast<int>(scene.cylinders.size())});
-    scene.cylinders.push_back(cylinder);
-  }
-  for (const Box& box : objects.boxes) {
-    added.push_back({ObjectKind::Box, static_cast<int>(scene.boxes.size())});
-    scene.boxes.push_back(box);
-  }
-  for (const Ball& ball : objects.balls) {
-    added.push_back({ObjectKind::Ball, static_cast<int>(scene.balls.size())});
-    scene.balls.push_back(ball);
-  }
+  forEachKind([&](auto array, ObjectKind kind) {
+    for (const auto& object : objects.*array) {
+      added.push_back({kind, static_cast<int>((scene.*array).size())});
+      (scene.*array).push_back(object);
+    }
+  });
   return normalized(added);
 }
 
@@ -221,25 +177,20 @@ void eraseIndices(std::vector<T>& items, const Selection& selection, ObjectKind 
 
 void assign(Scene& scene, const Selection& selection, const Scene& objects) {
   const Selection sorted = normalized(selection);
-  assignIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
-  assignIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
-  assignIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
-  assignIndices(scene.boxes, sorted, ObjectKind::Box, objects.boxes);
+  forEachKind([&](auto array, ObjectKind kind) {
+    assignIndices(scene.*array, sorted, kind, objects.*array);
+  });
 }
 
 void remove(Scene& scene, const Selection& selection) {
-  eraseIndices(scene.balls, selection, ObjectKind::Ball);
-  eraseIndices(scene.planes, selection, ObjectKind::Plane);
-  eraseIndices(scene.cylinders, selection, ObjectKind::Cylinder);
-  eraseIndices(scene.boxes, selection, ObjectKind::Box);
+  forEachKind([&](auto array, ObjectKind kind) { eraseIndices(scene.*array, selection, kind); });
 }
 
 void insert(Scene& scene, const Selection& selection, const Scene& objects) {
   const Selection sorted = normalized(selection);
-  insertIndices(scene.balls, sorted, ObjectKind::Ball, objects.balls);
-  insertIndices(scene.planes, sorted, ObjectKind::Plane, objects.planes);
-  insertIndices(scene.cylinders, sorted, ObjectKind::Cylinder, objects.cylinders);
-  insertIndices(scene.boxes, sorted, ObjectKind::Box, objects.boxes);
+  forEachKind([&](auto array, ObjectKind kind) {
+    insertIndices(scene.*array, sorted, kind, objects.*array);
+  });
 }
 
 }  // namespace carom::editor

@@ -1,5 +1,6 @@
 #include "ui/editor/outline_dock.h"
 
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/scene_document.h"
 
 #include <QColor>
@@ -150,11 +151,9 @@ QVariant OutlineModel::data(const QModelIndex& index, int role) const {
       return objectLabel(scene, *ref);
     case Qt::EditRole:
       return QString::fromStdString(objectInfo(scene, *ref).name);
-    case Qt::ToolTipRole: {
-      // The scene file's list names, in ObjectKind's order, as the validation's messages use.
-      constexpr const char* kLists[kObjectKindCount] = {"balls", "planes", "cylinders", "boxes"};
-      return QString("%1[%2]").arg(kLists[int(ref->kind)]).arg(ref->index);
-    }
+    case Qt::ToolTipRole:
+      // The scene file's list name, as the validation's messages use.
+      return QString("%1[%2]").arg(kindInfo(ref->kind).list).arg(ref->index);
     case Qt::DecorationRole: {
       const QColor color(QString::fromStdString(objectInfo(scene, *ref).color));
       if (!color.isValid()) return {};

@@ -1,12 +1,14 @@
 #include "ui/editor/properties_dock.h"
 
+#include "ui/editor/number_field.h"
 #include "ui/editor/number_text.h"
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/scene_document.h"
 #include "ui/editor/standing.h"
 
 #include <QColorDialog>
 #include <QComboBox>
-#include <QFocusEvent>
+#include <QEvent>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -24,78 +26,7 @@
 
 namespace carom::editor {
 
-// A field for a number: six significant digits to read, as the toolbar's boxes show them, and
-// the shortest text that reads back as the same value while it is edited and in its tooltip. A
-// field left without a change is not modified, so it never rounds what is stored.
-class NumberField : public QLineEdit {
- public:
-  // What the tooltip calls the field ("Position x"); `hint` is a line added under it.
-  void setName(const QString& name, const QString& hint = {}) {
-    name_ = name;
-    hint_ = hint;
-    showValue();
-  }
-  // Nothing: an empty field (several objects that differ, a restitution left to the world).
-  void setValue(std::optional<double> value) {
-    value_ = value;
-    showValue();
-  }
-  // Room for a six-digit value with its sign ("-0.642395") instead of QLineEdit's 17 x's.
-  QSize sizeHint() const override {
-    QSize size = QLineEdit::sizeHint();
-    const QFontMetrics metrics = fontMetrics();
-    size.rwidth() += metrics.horizontalAdvance(formatNumber(-0.888888, 'f', 6)) -
-                     17 * metrics.horizontalAdvance(QLatin1Char('x')) + kCursorWidth;
-    return size;
-  }
-
- protected:
-  void focusInEvent(QFocusEvent* event) override {
-    if (!isModified()) showValue(true);
-    QLineEdit::focusInEvent(event);
-  }
-  void focusOutEvent(QFocusEvent* event) override {
-    QLineEdit::focusOutEvent(event);  // finishes the edit, which may show a new value
-    // A context menu takes the focus for a moment, in the middle of an edit.
-    if (event->reason() != Qt::PopupFocusReason && !isModified()) showValue(false);
-  }
-
- private:
-  void showValue() { showValue(hasFocus()); }
-  void showValue(bool editing) {
-    const QSignalBlocker blocker(this);
-    QString text;
-    if (value_) text = editing ? formatNumber(*value_) : formatShortNumber(*value_);
-    setText(text);
-    // setText() leaves the cursor at the end, and a field too narrow for its text scrolls to
-    // show the cursor: "-0.642395" read "642395". Shown at rest, the value's start (its sign
-    // and leading digits) matters most.
-    if (!editing) setCursorPosition(0);
-    setModified(false);
-    QStringList tip{value_ ? PropertiesDock::tr("%1: %2").arg(name_, formatNumber(*value_))
-                           : name_};
-    if (!hint_.isEmpty()) tip << hint_;
-    setToolTip(tip.join('\n'));
-  }
-
-  // The text cursor's width, which QLineEdit's own size hint leaves room for as well.
-  static constexpr int kCursorWidth = 1;
-
-  QString name_;
-  QString hint_;
-  std::optional<double> value_;
-};
-
 namespace {
-
-// The dock's kind bits are ObjectKind's values as powers of two.
-int flagOf(ObjectKind kind) {
-  return 1 << static_cast<int>(kind);
-}
-
-ObjectKind kindOfFlag(int flag) {
-  return static_cast<ObjectKind>(std::countr_zero(static_cast<unsigned>(flag)));
-}
 
 // The value every target shares, or nothing when they differ.
 template <typename T, typename Read>
@@ -431,7 +362,7 @@ QComboBox* PropertiesDock::addChoice(const char* name, const char* label, const 
 
 int PropertiesDock::selectedKinds() const {
   int kinds = 0;
-  for (const ObjectRef& ref : document_->selection()) kinds |= flagOf(ref.kind);
+  for (const ObjectRef& ref : document_->selection()) kinds |= kindBit(ref.kind);
   return kinds == 0 ? int(kWorld) : kinds;
 }
 
@@ -450,7 +381,7 @@ void PropertiesDock::refresh() {
                                                                             heading_->font())));
   } else if (std::has_single_bit(static_cast<unsigned>(kinds))) {
     heading_->setText(tr("%1: %n selected", nullptr, static_cast<int>(selection.size()))
-                          .arg(kindPluralName(kindOfFlag(kinds))));
+                          .arg(kindPluralName(kindOfBit(kinds))));
   } else {
     heading_->setText(tr("%n objects selected", nullptr, static_cast<int>(selection.size())));
   }

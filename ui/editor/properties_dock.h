@@ -51,7 +51,7 @@ class PropertiesDock : public QDockWidget {
 
  private:
   // Which objects a row applies to; a row shows when every selected object is of its kinds.
-  // The object bits are 1 << ObjectKind.
+  // The object bits are kindBit()s (object_kinds.h).
   enum Kinds { kBalls = 1, kPlanes = 2, kCylinders = 4, kBoxes = 8, kObjects = 15, kWorld = 16 };
   // Accessors return the field inside a scene, for one object (unused for world rows). The
   // scene is const for reading; a write goes through the same accessor on the edited copy.

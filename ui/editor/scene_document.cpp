@@ -1,6 +1,7 @@
 #include "ui/editor/scene_document.h"
 
 #include "sim/validation/validation.h"
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/validation_text.h"
 
 #include <QFileInfo>
@@ -15,23 +16,8 @@ namespace {
 
 SceneObjectIndices indicesOf(const Selection& refs) {
   SceneObjectIndices indices;
-  for (const ObjectRef& ref : refs) {
-    const auto index = static_cast<std::size_t>(ref.index);
-    switch (ref.kind) {
-      case ObjectKind::Ball:
-        indices.balls.push_back(index);
-        break;
-      case ObjectKind::Plane:
-        indices.planes.push_back(index);
-        break;
-      case ObjectKind::Cylinder:
-        indices.cylinders.push_back(index);
-        break;
-      case ObjectKind::Box:
-        indices.boxes.push_back(index);
-        break;
-    }
-  }
+  for (const ObjectRef& ref : refs)
+    (indices.*kindInfo(ref.kind).validated).push_back(static_cast<std::size_t>(ref.index));
   return indices;
 }
 
@@ -176,17 +162,14 @@ QString SceneDocument::editObjects(const Selection& refs, const Scene& values, c
 }
 
 QString SceneDocument::addObjects(const Scene& objects, const QString& text) {
-  const std::size_t sizes[kObjectKindCount] = {scene_.balls.size(), scene_.planes.size(),
-                                               scene_.cylinders.size(), scene_.boxes.size()};
+  std::size_t sizes[kObjectKindCount] = {};
+  forEachKind([&](auto array, ObjectKind kind) { sizes[int(kind)] = (scene_.*array).size(); });
   emit aboutToChange();
   const Selection added = append(scene_, objects);
   const std::vector<ValidationError> errors = validateObjects(scene_, indicesOf(added), 1);
   // Worded while the added objects are there to be named.
   const QString error = errors.empty() ? QString() : validationText(errors.front(), scene_);
-  scene_.balls.resize(sizes[int(ObjectKind::Ball)]);
-  scene_.planes.resize(sizes[int(ObjectKind::Plane)]);
-  scene_.cylinders.resize(sizes[int(ObjectKind::Cylinder)]);
-  scene_.boxes.resize(sizes[int(ObjectKind::Box)]);
+  forEachKind([&](auto array, ObjectKind kind) { (scene_.*array).resize(sizes[int(kind)]); });
   if (!error.isEmpty()) return error;
   if (added.empty()) return {};
   auto* command = new SceneEditCommand(this, text, added);

@@ -1,6 +1,7 @@
 #include "ui/editor/standing.h"
 
 #include "sim/geometry/shapes.h"
+#include "ui/editor/object_kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,32 +58,36 @@ bool over(const Flat& flat, const Vec3& x) {
   return true;
 }
 
+constexpr double kUnbounded = -std::numeric_limits<double>::infinity();
+
 // The least of x · direction over the object's points (-infinity for one without an end that
 // way).
-double lowestAlong(const Scene& scene, const ObjectRef& ref, const Vec3& direction) {
-  constexpr double kUnbounded = -std::numeric_limits<double>::infinity();
-  switch (ref.kind) {
-    case ObjectKind::Ball: {
-      const Ball& ball = scene.balls[ref.index];
-      return ball.position.dot(direction) - ball.radius;
-    }
-    case ObjectKind::Plane:
-      return kUnbounded;
-    case ObjectKind::Cylinder: {
-      const Cylinder& cylinder = scene.cylinders[ref.index];
-      const double along = cylinder.axis.normalized().dot(direction);
-      const double across = cylinder.radius * std::sqrt(std::max(0.0, 1.0 - along * along));
-      if (!cylinder.length)
-        return std::abs(along) < 1e-12 ? cylinder.point.dot(direction) - across : kUnbounded;
-      return cylinder.point.dot(direction) - 0.5 * *cylinder.length * std::abs(along) - across;
-    }
-    case ObjectKind::Box: {
-      const BoxShape shape = boxShape(scene.boxes[ref.index]);
-      return shape.center.dot(direction) -
-             shape.half.dot((shape.axes.transpose() * direction).cwiseAbs());
-    }
-  }
+double lowestAlong(const Ball& ball, const Vec3& direction) {
+  return ball.position.dot(direction) - ball.radius;
+}
+
+double lowestAlong(const Plane&, const Vec3&) {
   return kUnbounded;
+}
+
+double lowestAlong(const Cylinder& cylinder, const Vec3& direction) {
+  const double along = cylinder.axis.normalized().dot(direction);
+  const double across = cylinder.radius * std::sqrt(std::max(0.0, 1.0 - along * along));
+  if (!cylinder.length)
+    return std::abs(along) < 1e-12 ? cylinder.point.dot(direction) - across : kUnbounded;
+  return cylinder.point.dot(direction) - 0.5 * *cylinder.length * std::abs(along) - across;
+}
+
+double lowestAlong(const Box& box, const Vec3& direction) {
+  const BoxShape shape = boxShape(box);
+  return shape.center.dot(direction) -
+         shape.half.dot((shape.axes.transpose() * direction).cwiseAbs());
+}
+
+double lowestAlong(const Scene& scene, const ObjectRef& ref, const Vec3& direction) {
+  return visitObjects(scene, ref.kind, [&](const auto& objects) {
+    return lowestAlong(objects[ref.index], direction);
+  });
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "ui/editor/validation_text.h"
 
+#include "ui/editor/object_kinds.h"
 #include "ui/editor/object_ref.h"
 
 #include <QCoreApplication>
@@ -17,27 +18,10 @@ QString translated(const char* context, const char* text) {
   return QCoreApplication::translate(context, text);
 }
 
-std::optional<ObjectKind> kindOf(ValidationSubject subject) {
-  switch (subject) {
-    case ValidationSubject::Balls:
-      return ObjectKind::Ball;
-    case ValidationSubject::Planes:
-      return ObjectKind::Plane;
-    case ValidationSubject::Cylinders:
-      return ObjectKind::Cylinder;
-    case ValidationSubject::Boxes:
-      return ObjectKind::Box;
-    case ValidationSubject::World:
-    case ValidationSubject::Tolerance:
-      break;
-  }
-  return std::nullopt;
-}
-
 // As the Outline names it, shortened as the window's other messages shorten names. An object
 // `scene` lacks (a caller's wrong scene) is named by kind and index rather than read past the end.
 QString objectName(const ValidationObject& object, const Scene& scene) {
-  const ObjectRef ref{*kindOf(object.subject), static_cast<int>(object.index.value_or(0))};
+  const ObjectRef ref{*kindOfSubject(object.subject), static_cast<int>(object.index.value_or(0))};
   const QString label =
       exists(scene, ref) ? objectLabel(scene, ref)
                          : translated("ObjectRef", "%1 %2").arg(kindName(ref.kind)).arg(ref.index);
@@ -178,10 +162,11 @@ QString validationText(const ValidationError& error, const Scene& scene) {
   if (error.problem == P::TooMany)
     return QCoreApplication::translate("ValidationText",
                                        "%1: at most %2 in a scene (this would make %3)")
-        .arg(kindPluralName(*kindOf(object.subject)), number(error.high), number(error.value));
+        .arg(kindPluralName(*kindOfSubject(object.subject)), number(error.high),
+             number(error.value));
 
   // The field, of its object when it has one ("Radius of Ball 3"); the world's settings alone.
-  const QString what = kindOf(object.subject)
+  const QString what = kindOfSubject(object.subject)
                            ? QCoreApplication::translate("ValidationText", "%1 of %2")
                                  .arg(fieldLabel(field), objectName(object, scene))
                            : fieldLabel(field);
