@@ -1077,6 +1077,112 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::EditMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="434"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="413"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="415"/>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="412"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="414"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="437"/>
+        <source>&amp;Paste</source>
+        <translation>E&amp;infügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="438"/>
+        <source>&amp;Duplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="439"/>
+        <source>De&amp;lete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>Select &amp;All</source>
+        <translation>&amp;Alles auswählen</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::EditorToolBar</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Ball</source>
+        <translation>Kugel hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Plane</source>
+        <translation>Ebene hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Cylinder</source>
+        <translation>Zylinder hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="447"/>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="452"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Am &amp;Raster ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="456"/>
+        <source>Moves land on multiples of %1 m</source>
+        <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="446"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="449"/>
+        <source>Add Box</source>
+        <translation>Quader hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EnergyPlot</name>
     <message>
         <location filename="../ui/energy_plot.cpp" line="67"/>
@@ -1105,6 +1211,67 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ExamplesMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="487"/>
+        <source>&amp;Examples</source>
+        <translation>&amp;Beispiele</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::FileMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="424"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="427"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="425"/>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="428"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="429"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="430"/>
+        <source>Export &amp;Image…</source>
+        <translation>Bild &amp;exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="431"/>
+        <source>Export &amp;Video…</source>
+        <translation>&amp;Video exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="702"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="432"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::GrabControl</name>
     <message>
         <location filename="../ui/grab_control.cpp" line="65"/>
@@ -1130,6 +1297,29 @@
         <location filename="../ui/grab_control.cpp" line="88"/>
         <source>Thrown at the throw limit, %1 m/s (Simulation &gt; Throw Speed Limit).</source>
         <translation>Mit der Wurfgrenze von %1 m/s geworfen (Simulation &gt; Wurfgeschwindigkeitsgrenze).</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::HelpMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="505"/>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="503"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="504"/>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>&amp;Tastatur und Maus</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="506"/>
+        <source>&amp;About Carom</source>
+        <translation>Ü&amp;ber Carom</translation>
     </message>
 </context>
 <context>
@@ -1574,6 +1764,14 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::HistoryDock</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="441"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::ImageExport</name>
     <message>
         <location filename="../ui/image_export.cpp" line="114"/>
@@ -1645,12 +1843,70 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::LanguageMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="500"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::MainWindow</name>
     <message>
         <location filename="../ui/main_window.cpp" line="499"/>
         <source>Energy</source>
         <translation>Energie</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="494"/>
+        <source>&amp;Follow Ball</source>
+        <translation>Kugel &amp;folgen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="580"/>
+        <source>%1[*] — Carom</source>
+        <translation>%1[*] — Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <source>Apply Settings</source>
+        <translation>Einstellungen übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="124"/>
+        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
+        <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden (%1); die letzte bleibt erhalten. Speichern Sie die Szene sicherheitshalber an einem anderen Ort.</translation>
+    </message>
+    <message>
+        <source>&amp;Physics Notes</source>
+        <translation type="vanished">&amp;Physik-Notizen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="790"/>
+        <source>Use Current State as Initial</source>
+        <translation>Aktuellen Zustand als Anfang übernehmen</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::NumberBox</name>
+    <message>
+        <location filename="../ui/number_box.cpp" line="31"/>
+        <source>must be finite (got %1)</source>
+        <translation>muss endlich sein (erhalten: %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="33"/>
+        <source>must be between %1 and %2 (got %3)</source>
+        <translation>muss zwischen %1 und %2 liegen (erhalten: %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="80"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::RunControls</name>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
         <location filename="../ui/main_window.cpp" line="460"/>
@@ -1689,41 +1945,6 @@
         <translation>Zurück zum Anfangszustand der Szene (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
-        <source>&amp;Full Screen</source>
-        <translation>&amp;Vollbild</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
-        <source>&amp;Follow Ball</source>
-        <translation>Kugel &amp;folgen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
-        <source>&amp;Explosions</source>
-        <translation>&amp;Explosionen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
-        <source>&amp;Antialiasing</source>
-        <translation>&amp;Kantenglättung</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
-        <source>&amp;Mute</source>
-        <translation>Stu&amp;mmschalten</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
-        <source>Larger Time Step</source>
-        <translation>Größerer Zeitschritt</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
-        <source>Smaller Time Step</source>
-        <translation>Kleinerer Zeitschritt</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="477"/>
         <source>Simulation</source>
         <translation>Simulation</translation>
@@ -1738,278 +1959,6 @@
         <location filename="../ui/main_window.cpp" line="480"/>
         <source>Simulated seconds per real second</source>
         <translation>Simulierte Sekunden pro echter Sekunde</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
-        <source>&amp;File</source>
-        <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
-        <source>Open &amp;Recent</source>
-        <translation>&amp;Zuletzt geöffnet</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
-        <source>&amp;Edit</source>
-        <translation>&amp;Bearbeiten</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Simulation</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
-        <source>Speed vs &amp;Accuracy…</source>
-        <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Select</source>
-        <translation>Auswählen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Ball</source>
-        <translation>Kugel hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Plane</source>
-        <translation>Ebene hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Cylinder</source>
-        <translation>Zylinder hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
-        <source>Tools</source>
-        <translation>Werkzeuge</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
-        <source>Snap to &amp;Grid</source>
-        <translation>Am &amp;Raster ausrichten</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
-        <source>Moves land on multiples of %1 m</source>
-        <translation>Verschiebungen landen auf Vielfachen von %1 m</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
-        <source>&amp;User Guide</source>
-        <translation>&amp;Benutzerhandbuch</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="580"/>
-        <source>%1[*] — Carom</source>
-        <translation>%1[*] — Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
-        <source>Apply Settings</source>
-        <translation>Einstellungen übernehmen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
-        <source>&amp;New</source>
-        <translation>&amp;Neu</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
-        <source>&amp;Open…</source>
-        <translation>Ö&amp;ffnen…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Rückgängig: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="124"/>
-        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
-        <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden (%1); die letzte bleibt erhalten. Speichern Sie die Szene sicherheitshalber an einem anderen Ort.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
-        <source>&amp;Redo %1</source>
-        <translation>&amp;Wiederholen: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
-        <source>Save &amp;As…</source>
-        <translation>Speichern &amp;unter…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
-        <source>Export &amp;Image…</source>
-        <translation>Bild &amp;exportieren…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
-        <source>Export &amp;Video…</source>
-        <translation>&amp;Video exportieren…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
-        <source>&amp;Tools</source>
-        <translation>&amp;Werkzeuge</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
-        <source>&amp;Throw Speed Limit…</source>
-        <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
-        <source>Timeline &amp;Memory…</source>
-        <translation>Zeitleisten-S&amp;peicher…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
-        <source>F&amp;rame Scene</source>
-        <translation>Szene ins &amp;Bild holen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
-        <source>&amp;Keyboard and Mouse</source>
-        <translation>&amp;Tastatur und Maus</translation>
-    </message>
-    <message>
-        <source>&amp;Physics Notes</source>
-        <translation type="vanished">&amp;Physik-Notizen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
-        <source>&amp;About Carom</source>
-        <translation>Ü&amp;ber Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="702"/>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederholen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
-        <source>&amp;Copy</source>
-        <translation>&amp;Kopieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
-        <source>&amp;Paste</source>
-        <translation>E&amp;infügen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
-        <source>&amp;Duplicate</source>
-        <translation>&amp;Duplizieren</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
-        <source>De&amp;lete</source>
-        <translation>&amp;Löschen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
-        <source>Select &amp;All</source>
-        <translation>&amp;Alles auswählen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
-        <source>&amp;Use Current State as Initial</source>
-        <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
-        <source>Edits Apply to the &amp;Running State</source>
-        <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
-        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
-        <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
-        <source>History</source>
-        <translation>Verlauf</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="790"/>
-        <source>Use Current State as Initial</source>
-        <translation>Aktuellen Zustand als Anfang übernehmen</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
-        <source>&amp;Examples</source>
-        <translation>&amp;Beispiele</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
-        <source>&amp;View</source>
-        <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
-        <source>Add Box</source>
-        <translation>Quader hinzufügen</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::NumberBox</name>
-    <message>
-        <location filename="../ui/number_box.cpp" line="31"/>
-        <source>must be finite (got %1)</source>
-        <translation>muss endlich sein (erhalten: %1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/number_box.cpp" line="33"/>
-        <source>must be between %1 and %2 (got %3)</source>
-        <translation>muss zwischen %1 und %2 liegen (erhalten: %3)</translation>
-    </message>
-    <message>
-        <location filename="../ui/number_box.cpp" line="80"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2133,6 +2082,44 @@
         <location filename="../ui/scene_files.cpp" line="176"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>Die Szene %1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SimulationMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="459"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="468"/>
+        <source>Speed vs &amp;Accuracy…</source>
+        <translation>&amp;Geschwindigkeit und Genauigkeit…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="469"/>
+        <source>&amp;Throw Speed Limit…</source>
+        <translation>&amp;Wurfgeschwindigkeitsgrenze…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="470"/>
+        <source>Timeline &amp;Memory…</source>
+        <translation>Zeitleisten-S&amp;peicher…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="471"/>
+        <source>&amp;Use Current State as Initial</source>
+        <translation>Aktuellen Zustand als &amp;Anfang übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="472"/>
+        <source>Edits Apply to the &amp;Running State</source>
+        <translation>Änderungen gelten für den &amp;laufenden Zustand</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="474"/>
+        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
+        <translation>Aus: Eine Änderung startet die Simulation mit der geänderten Szene neu. Ein: Kugeln, die die Änderung nicht betrifft, behalten ihren laufenden Zustand.</translation>
     </message>
 </context>
 <context>
@@ -2443,6 +2430,39 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ViewMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="495"/>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Vollbild</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="496"/>
+        <source>&amp;Explosions</source>
+        <translation>&amp;Explosionen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="497"/>
+        <source>&amp;Antialiasing</source>
+        <translation>&amp;Kantenglättung</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="498"/>
+        <source>&amp;Mute</source>
+        <translation>Stu&amp;mmschalten</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="493"/>
+        <source>F&amp;rame Scene</source>
+        <translation>Szene ins &amp;Bild holen</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="492"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::WatchAlert</name>
     <message>
         <location filename="../ui/watch_alert.cpp" line="36"/>
@@ -2645,6 +2665,16 @@
         <location filename="../ui/world_tool_bar.cpp" line="162"/>
         <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
         <translation>Toleranz von auto: der relative Energiefehler je simulierter Sekunde (und ein Eindringen von höchstens 5 % des Radius)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <source>Larger Time Step</source>
+        <translation>Größerer Zeitschritt</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="467"/>
+        <source>Smaller Time Step</source>
+        <translation>Kleinerer Zeitschritt</translation>
     </message>
 </context>
 <context>

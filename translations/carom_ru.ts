@@ -1083,6 +1083,112 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::EditMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="434"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Правка</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="413"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Отменить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="415"/>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Повторить: %1</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="412"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Отменить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="414"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Повторить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="436"/>
+        <source>&amp;Copy</source>
+        <translation>&amp;Копировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="437"/>
+        <source>&amp;Paste</source>
+        <translation>В&amp;ставить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="438"/>
+        <source>&amp;Duplicate</source>
+        <translation>&amp;Дублировать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="439"/>
+        <source>De&amp;lete</source>
+        <translation>&amp;Удалить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="440"/>
+        <source>Select &amp;All</source>
+        <translation>Выделить &amp;всё</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::EditorToolBar</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Select</source>
+        <translation>Выбор</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Ball</source>
+        <translation>Добавить шар</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Plane</source>
+        <translation>Добавить плоскость</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="448"/>
+        <source>Add Cylinder</source>
+        <translation>Добавить цилиндр</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="447"/>
+        <source>Tools</source>
+        <translation>Инструменты</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="452"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="455"/>
+        <source>Snap to &amp;Grid</source>
+        <translation>Привязка к &amp;сетке</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="456"/>
+        <source>Moves land on multiples of %1 m</source>
+        <translation>Перемещения кратны %1 м</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="446"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Инструменты</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="449"/>
+        <source>Add Box</source>
+        <translation>Добавить ящик</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::EnergyPlot</name>
     <message>
         <location filename="../ui/energy_plot.cpp" line="67"/>
@@ -1111,6 +1217,67 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ExamplesMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="487"/>
+        <source>&amp;Examples</source>
+        <translation>&amp;Примеры</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::FileMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="424"/>
+        <source>&amp;File</source>
+        <translation>&amp;Файл</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="427"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Недавние файлы</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="425"/>
+        <source>&amp;New</source>
+        <translation>&amp;Создать</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="426"/>
+        <source>&amp;Open…</source>
+        <translation>&amp;Открыть…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="428"/>
+        <source>&amp;Save</source>
+        <translation>Со&amp;хранить</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="429"/>
+        <source>Save &amp;As…</source>
+        <translation>Сохранить &amp;как…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="430"/>
+        <source>Export &amp;Image…</source>
+        <translation>Экспорт &amp;изображения…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="431"/>
+        <source>Export &amp;Video…</source>
+        <translation>Экспорт ви&amp;део…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="702"/>
+        <source>(none)</source>
+        <translation>(нет)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="432"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Выход</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::GrabControl</name>
     <message>
         <location filename="../ui/grab_control.cpp" line="65"/>
@@ -1136,6 +1303,29 @@
         <location filename="../ui/grab_control.cpp" line="88"/>
         <source>Thrown at the throw limit, %1 m/s (Simulation &gt; Throw Speed Limit).</source>
         <translation>Брошен с предельной скоростью %1 м/с (Симуляция &gt; Предел скорости броска).</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::HelpMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="505"/>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Руководство пользователя</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="503"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Справка</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="504"/>
+        <source>&amp;Keyboard and Mouse</source>
+        <translation>&amp;Клавиатура и мышь</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="506"/>
+        <source>&amp;About Carom</source>
+        <translation>&amp;О программе Carom</translation>
     </message>
 </context>
 <context>
@@ -1580,6 +1770,14 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::HistoryDock</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="441"/>
+        <source>History</source>
+        <translation>История</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::ImageExport</name>
     <message>
         <location filename="../ui/image_export.cpp" line="114"/>
@@ -1651,12 +1849,70 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::LanguageMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="500"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Язык</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::MainWindow</name>
     <message>
         <location filename="../ui/main_window.cpp" line="499"/>
         <source>Energy</source>
         <translation>Энергия</translation>
     </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="494"/>
+        <source>&amp;Follow Ball</source>
+        <translation>&amp;Следить за шаром</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="580"/>
+        <source>%1[*] — Carom</source>
+        <translation>%1[*] — Carom</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="607"/>
+        <source>Apply Settings</source>
+        <translation>Применить настройки</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="124"/>
+        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
+        <translation>Не удалось записать резервную копию (%1); сохранена предыдущая. Для надёжности сохраните сцену в другом месте.</translation>
+    </message>
+    <message>
+        <source>&amp;Physics Notes</source>
+        <translation type="vanished">&amp;Заметки по физике</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="790"/>
+        <source>Use Current State as Initial</source>
+        <translation>Сделать текущее состояние начальным</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::NumberBox</name>
+    <message>
+        <location filename="../ui/number_box.cpp" line="31"/>
+        <source>must be finite (got %1)</source>
+        <translation>должно быть конечным (получено %1)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="33"/>
+        <source>must be between %1 and %2 (got %3)</source>
+        <translation>должно быть от %1 до %2 (получено %3)</translation>
+    </message>
+    <message>
+        <location filename="../ui/number_box.cpp" line="80"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::RunControls</name>
     <message>
         <location filename="../ui/main_window.cpp" line="205"/>
         <location filename="../ui/main_window.cpp" line="460"/>
@@ -1695,41 +1951,6 @@
         <translation>Вернуть сцену в начальное состояние (R)</translation>
     </message>
     <message>
-        <location filename="../ui/main_window.cpp" line="495"/>
-        <source>&amp;Full Screen</source>
-        <translation>&amp;Полноэкранный режим</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="494"/>
-        <source>&amp;Follow Ball</source>
-        <translation>&amp;Следить за шаром</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="496"/>
-        <source>&amp;Explosions</source>
-        <translation>&amp;Взрывы</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="497"/>
-        <source>&amp;Antialiasing</source>
-        <translation>&amp;Сглаживание</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="498"/>
-        <source>&amp;Mute</source>
-        <translation>Без &amp;звука</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="466"/>
-        <source>Larger Time Step</source>
-        <translation>Увеличить шаг по времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="467"/>
-        <source>Smaller Time Step</source>
-        <translation>Уменьшить шаг по времени</translation>
-    </message>
-    <message>
         <location filename="../ui/main_window.cpp" line="477"/>
         <source>Simulation</source>
         <translation>Симуляция</translation>
@@ -1744,278 +1965,6 @@
         <location filename="../ui/main_window.cpp" line="480"/>
         <source>Simulated seconds per real second</source>
         <translation>Секунд модели за секунду реального времени</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="424"/>
-        <source>&amp;File</source>
-        <translation>&amp;Файл</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="427"/>
-        <source>Open &amp;Recent</source>
-        <translation>&amp;Недавние файлы</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="434"/>
-        <source>&amp;Edit</source>
-        <translation>&amp;Правка</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="459"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Симуляция</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="468"/>
-        <source>Speed vs &amp;Accuracy…</source>
-        <translation>Скорость и &amp;точность…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Select</source>
-        <translation>Выбор</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Ball</source>
-        <translation>Добавить шар</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Plane</source>
-        <translation>Добавить плоскость</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="448"/>
-        <source>Add Cylinder</source>
-        <translation>Добавить цилиндр</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="447"/>
-        <source>Tools</source>
-        <translation>Инструменты</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="452"/>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="455"/>
-        <source>Snap to &amp;Grid</source>
-        <translation>Привязка к &amp;сетке</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="456"/>
-        <source>Moves land on multiples of %1 m</source>
-        <translation>Перемещения кратны %1 м</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="505"/>
-        <source>&amp;User Guide</source>
-        <translation>&amp;Руководство пользователя</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="580"/>
-        <source>%1[*] — Carom</source>
-        <translation>%1[*] — Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="607"/>
-        <source>Apply Settings</source>
-        <translation>Применить настройки</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="425"/>
-        <source>&amp;New</source>
-        <translation>&amp;Создать</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="426"/>
-        <source>&amp;Open…</source>
-        <translation>&amp;Открыть…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="428"/>
-        <source>&amp;Save</source>
-        <translation>Со&amp;хранить</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="413"/>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Отменить: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="124"/>
-        <source>The recovery copy could not be written (%1); the last one is kept. Save the scene elsewhere to be safe.</source>
-        <translation>Не удалось записать резервную копию (%1); сохранена предыдущая. Для надёжности сохраните сцену в другом месте.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="415"/>
-        <source>&amp;Redo %1</source>
-        <translation>&amp;Повторить: %1</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="429"/>
-        <source>Save &amp;As…</source>
-        <translation>Сохранить &amp;как…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="430"/>
-        <source>Export &amp;Image…</source>
-        <translation>Экспорт &amp;изображения…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="431"/>
-        <source>Export &amp;Video…</source>
-        <translation>Экспорт ви&amp;део…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="446"/>
-        <source>&amp;Tools</source>
-        <translation>&amp;Инструменты</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="469"/>
-        <source>&amp;Throw Speed Limit…</source>
-        <translation>Пр&amp;едел скорости броска…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="470"/>
-        <source>Timeline &amp;Memory…</source>
-        <translation>Па&amp;мять временной шкалы…</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="493"/>
-        <source>F&amp;rame Scene</source>
-        <translation>Показать всю с&amp;цену</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="503"/>
-        <source>&amp;Help</source>
-        <translation>&amp;Справка</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="504"/>
-        <source>&amp;Keyboard and Mouse</source>
-        <translation>&amp;Клавиатура и мышь</translation>
-    </message>
-    <message>
-        <source>&amp;Physics Notes</source>
-        <translation type="vanished">&amp;Заметки по физике</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="506"/>
-        <source>&amp;About Carom</source>
-        <translation>&amp;О программе Carom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="702"/>
-        <source>(none)</source>
-        <translation>(нет)</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="412"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Отменить</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="414"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Повторить</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="436"/>
-        <source>&amp;Copy</source>
-        <translation>&amp;Копировать</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="437"/>
-        <source>&amp;Paste</source>
-        <translation>В&amp;ставить</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="438"/>
-        <source>&amp;Duplicate</source>
-        <translation>&amp;Дублировать</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="439"/>
-        <source>De&amp;lete</source>
-        <translation>&amp;Удалить</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="440"/>
-        <source>Select &amp;All</source>
-        <translation>Выделить &amp;всё</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="471"/>
-        <source>&amp;Use Current State as Initial</source>
-        <translation>&amp;Сделать текущее состояние начальным</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="472"/>
-        <source>Edits Apply to the &amp;Running State</source>
-        <translation>Правки применяются к &amp;идущей симуляции</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="474"/>
-        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
-        <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="441"/>
-        <source>History</source>
-        <translation>История</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="790"/>
-        <source>Use Current State as Initial</source>
-        <translation>Сделать текущее состояние начальным</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="432"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Выход</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="487"/>
-        <source>&amp;Examples</source>
-        <translation>&amp;Примеры</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="492"/>
-        <source>&amp;View</source>
-        <translation>&amp;Вид</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="500"/>
-        <source>&amp;Language</source>
-        <translation>&amp;Язык</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="449"/>
-        <source>Add Box</source>
-        <translation>Добавить ящик</translation>
-    </message>
-</context>
-<context>
-    <name>carom::ui::NumberBox</name>
-    <message>
-        <location filename="../ui/number_box.cpp" line="31"/>
-        <source>must be finite (got %1)</source>
-        <translation>должно быть конечным (получено %1)</translation>
-    </message>
-    <message>
-        <location filename="../ui/number_box.cpp" line="33"/>
-        <source>must be between %1 and %2 (got %3)</source>
-        <translation>должно быть от %1 до %2 (получено %3)</translation>
-    </message>
-    <message>
-        <location filename="../ui/number_box.cpp" line="80"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2139,6 +2088,44 @@
         <location filename="../ui/scene_files.cpp" line="176"/>
         <source>The scene %1 has unsaved changes. Save them?</source>
         <translation>В сцене %1 есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+</context>
+<context>
+    <name>carom::ui::SimulationMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="459"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Симуляция</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="468"/>
+        <source>Speed vs &amp;Accuracy…</source>
+        <translation>Скорость и &amp;точность…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="469"/>
+        <source>&amp;Throw Speed Limit…</source>
+        <translation>Пр&amp;едел скорости броска…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="470"/>
+        <source>Timeline &amp;Memory…</source>
+        <translation>Па&amp;мять временной шкалы…</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="471"/>
+        <source>&amp;Use Current State as Initial</source>
+        <translation>&amp;Сделать текущее состояние начальным</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="472"/>
+        <source>Edits Apply to the &amp;Running State</source>
+        <translation>Правки применяются к &amp;идущей симуляции</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="474"/>
+        <source>Off: an edit restarts the simulation from the edited scene. On: balls the edit leaves alone keep their running state.</source>
+        <translation>Выключено: правка перезапускает симуляцию с изменённой сцены. Включено: шары, которых правка не касается, сохраняют текущее состояние.</translation>
     </message>
 </context>
 <context>
@@ -2456,6 +2443,39 @@
     </message>
 </context>
 <context>
+    <name>carom::ui::ViewMenu</name>
+    <message>
+        <location filename="../ui/main_window.cpp" line="495"/>
+        <source>&amp;Full Screen</source>
+        <translation>&amp;Полноэкранный режим</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="496"/>
+        <source>&amp;Explosions</source>
+        <translation>&amp;Взрывы</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="497"/>
+        <source>&amp;Antialiasing</source>
+        <translation>&amp;Сглаживание</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="498"/>
+        <source>&amp;Mute</source>
+        <translation>Без &amp;звука</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="493"/>
+        <source>F&amp;rame Scene</source>
+        <translation>Показать всю с&amp;цену</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="492"/>
+        <source>&amp;View</source>
+        <translation>&amp;Вид</translation>
+    </message>
+</context>
+<context>
     <name>carom::ui::WatchAlert</name>
     <message>
         <location filename="../ui/watch_alert.cpp" line="36"/>
@@ -2658,6 +2678,16 @@
         <location filename="../ui/world_tool_bar.cpp" line="162"/>
         <source>Auto&apos;s tolerance: the relative energy error per simulated second (and a penetration of at most 5% of the radius)</source>
         <translation>Допуск auto: относительная ошибка энергии за секунду моделирования (и проникновение не более 5% радиуса)</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="466"/>
+        <source>Larger Time Step</source>
+        <translation>Увеличить шаг по времени</translation>
+    </message>
+    <message>
+        <location filename="../ui/main_window.cpp" line="467"/>
+        <source>Smaller Time Step</source>
+        <translation>Уменьшить шаг по времени</translation>
     </message>
 </context>
 <context>
