@@ -5,6 +5,7 @@
 // paintGL only copies the last whole picture onto the screen. Each picture keeps the positions,
 // camera and overlays its first piece found, so that its pieces fit together.
 
+#include "ui/render/ball_renderer.h"
 #include "ui/render/render_target.h"
 #include "ui/render/scene_view.h"
 
@@ -109,7 +110,9 @@ bool SceneView::drawPiece() {
     picture.velocityArrows = velocityArrows_;
     picture.handleArrows = handleArrows_;
     // A new scene's radii and colours take pieces of their own.
-    if (ballAttributesDirty_ && !uploadBallAttributes(kAttributePieceBalls)) return false;
+    if (ballRenderer_->attributesDirty() &&
+        !ballRenderer_->uploadAttributes(scene_.get(), highlightedBalls_, kAttributePieceBalls))
+      return false;
     if (staticDataDirty_) uploadStaticData();
     if (positionsDirty_) uploadBallPositions();
     if (!bindPieceTarget()) return false;
@@ -122,7 +125,7 @@ bool SceneView::drawPiece() {
   if (!bindPieceTarget()) return false;
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  const int balls = squareBallCount_ + spriteBallCount_;
+  const int balls = ballRenderer_->preparedBalls();
   if (picture.nextBall < balls) {
     const int count = std::min(pieceBalls(), balls - picture.nextBall);
     drawBallRange(picture.frame, picture.pixelHeight, picture.nextBall, count);
