@@ -3,6 +3,7 @@
 #include "ui/render/ball_renderer.h"
 #include "ui/render/explosion_renderer.h"
 #include "ui/render/line_renderer.h"
+#include "ui/render/picture_targets.h"
 #include "ui/render/render_target.h"
 #include "ui/render/statics_renderer.h"
 #include "ui/render/view_vertices.h"
@@ -217,7 +218,7 @@ void SceneView::initializeGL() {
   lineRenderer_ = std::make_unique<LineRenderer>(gl);
   explosionRenderer_ = std::make_unique<ExplosionRenderer>(gl);
   multisample_ = std::make_unique<RenderTarget>(gl, multisamples(gl));
-  for (auto& target : pictureTargets_) target = std::make_unique<RenderTarget>(gl, 0);
+  pictureTargets_ = std::make_unique<PictureTargets>(gl);
   glReady_ = true;
   staticDataDirty_ = true;
   positionsDirty_ = true;
@@ -236,9 +237,8 @@ void SceneView::releaseGl() {
   if (!glReady_) return;
   glReady_ = false;
   cancelPicture();
-  shownTarget_ = -1;
   multisample_.reset();
-  for (auto& target : pictureTargets_) target.reset();
+  pictureTargets_.reset();
   ballRenderer_.reset();
   staticsRenderer_.reset();
   lineRenderer_.reset();

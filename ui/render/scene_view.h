@@ -2,6 +2,8 @@
 // The 3D view of a running scene: OpenGL 3.3 core, the balls as ray-cast impostors nearest
 // first, and additive sparks where they collide. Huge scenes are drawn in pieces
 // (scene_view_pieces.cpp), so that the window stays responsive while a picture is drawn.
+// The view keeps what it shows and when it draws; the GL side of each kind of thing is its
+// renderer's (BallRenderer, StaticsRenderer, LineRenderer, ExplosionRenderer).
 
 #include "sim/dynamics/run_stats.h"
 #include "ui/render/camera.h"
@@ -21,7 +23,6 @@
 #include <QTimer>
 #include <QVector3D>
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -33,6 +34,7 @@ namespace carom::render {
 class BallRenderer;
 class ExplosionRenderer;
 class LineRenderer;
+class PictureTargets;
 class RenderTarget;
 class StaticsRenderer;
 
@@ -268,11 +270,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   QTimer explosionFrameTimer_;  // keeps frames coming while explosions fade
   std::uint64_t contentVersion_ = 0;
 
-  // Drawing in pieces: two framebuffers in turn, one drawn while the other is shown.
+  // Drawing in pieces, into pictureTargets_.
   QTimer pieceTimer_;
   PiecewisePicture piecewise_;
   std::optional<PictureKey> drawnKey_;  // of the picture shown or being drawn
-  int shownTarget_ = -1;                // into pictureTargets_, -1 before the first picture
   double ballsPerMillisecond_ = 0.0;    // measured in the last piece of balls
 
   // GL state, valid between initializeGL and releaseGl.
@@ -284,7 +285,7 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   std::unique_ptr<LineRenderer> lineRenderer_;
   std::unique_ptr<ExplosionRenderer> explosionRenderer_;
   std::unique_ptr<RenderTarget> multisample_;
-  std::array<std::unique_ptr<RenderTarget>, 2> pictureTargets_;
+  std::unique_ptr<PictureTargets> pictureTargets_;
 };
 
 }  // namespace carom::render

@@ -6,6 +6,7 @@
 // camera and overlays its first piece found, so that its pieces fit together.
 
 #include "ui/render/ball_renderer.h"
+#include "ui/render/picture_targets.h"
 #include "ui/render/render_target.h"
 #include "ui/render/scene_view.h"
 
@@ -18,7 +19,7 @@ namespace carom::render {
 
 bool SceneView::drawsInPieces() const {
   return scene_ && static_cast<int>(scene_->ballRadii.size()) >= kPiecewiseBalls && glReady_ &&
-         !pictureTargets_[0]->failed() && !pictureTargets_[1]->failed();
+         !pictureTargets_->failed();
 }
 
 SceneView::PictureKey SceneView::currentPictureKey() const {
@@ -35,8 +36,8 @@ void SceneView::showLastPicture() {
     piecewise_.workMilliseconds = 0.0;
     pieceTimer_.start();
   }
-  if (shownTarget_ >= 0) {
-    pictureTargets_[shownTarget_]->blitTo(defaultFramebufferObject(), devicePixelSize());
+  if (RenderTarget* shown = pictureTargets_->shown()) {
+    shown->blitTo(defaultFramebufferObject(), devicePixelSize());
   } else {
     clearFrame();
     glDisable(GL_DEPTH_TEST);
@@ -79,13 +80,13 @@ void SceneView::drawNextPiece() {
     return;
   }
   piecewise_.drawing = false;
-  shownTarget_ = shownTarget_ == 0 ? 1 : 0;
+  pictureTargets_->flip();
   update();
   emit frameRendered(piecewise_.workMilliseconds);
 }
 
 bool SceneView::bindPieceTarget() {
-  RenderTarget& target = *pictureTargets_[shownTarget_ == 0 ? 1 : 0];
+  RenderTarget& target = pictureTargets_->hidden();
   if (!target.bind(piecewise_.key.size, defaultFramebufferObject())) {
     cancelPicture();  // and drawsInPieces() is false from now on
     return false;
@@ -134,8 +135,7 @@ bool SceneView::drawPiece() {
   }
   drawAfterBalls(picture.frame, picture.explosions, picture.trails, picture.velocityArrows,
                  picture.handleArrows);
-  if (picture.multisampled)
-    multisample_->blitTo(pictureTargets_[shownTarget_ == 0 ? 1 : 0]->framebuffer());
+  if (picture.multisampled) multisample_->blitTo(pictureTargets_->hidden().framebuffer());
   return true;
 }
 
