@@ -45,4 +45,11 @@ std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name, const char*
   return program;
 }
 
+void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame) {
+  program.bind();
+  program.setUniformValue("viewProjection", frame.viewProjection);
+  program.setUniformValue("eyePosition", frame.eye);
+  program.setUniformValue("lightDirection", frame.light);
+}
+
 }  // namespace carom::render

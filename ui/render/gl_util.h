@@ -3,6 +3,7 @@
 // layouts and shader programs from the built-in resources (resources/shaders).
 
 #include "sim/model/scene.h"
+#include "ui/render/frame_camera.h"
 
 #include <QOpenGLFunctions_3_3_Core>
 
@@ -40,5 +41,8 @@ void vertexAttribute(QOpenGLFunctions_3_3_Core* gl, GLuint location, GLint compo
 // read, compiled or linked is logged, and the program comes back unlinked.
 std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* name,
                                                    const char* fragmentName = nullptr);
+
+// Binds `program` and gives it the frame's camera and light.
+void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
 
 }  // namespace carom::render

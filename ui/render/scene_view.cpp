@@ -1,21 +1,20 @@
 #include "ui/render/scene_view.h"
 
+#include "ui/render/ball_renderer.h"
 #include "ui/render/explosion_renderer.h"
-#include "ui/render/gl_util.h"
 #include "ui/render/line_renderer.h"
+#include "ui/render/picture_targets.h"
 #include "ui/render/render_target.h"
+#include "ui/render/statics_renderer.h"
 #include "ui/render/view_vertices.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
-#include <QOpenGLShaderProgram>
 #include <QSize>
 #include <QSurfaceFormat>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -23,53 +22,9 @@
 namespace carom::render {
 namespace {
 
-// ---- Vertex layouts -----------------------------------------------------------------------------
-
 // Velocity arrows of the watched balls: apart from the handles' orange, the sparks' yellow and
 // the trails' tints of the balls' colours.
 const QColor kVelocityColor(255, 255, 255);
-
-// Selected planes, cylinders and boxes take on the selection's colour.
-QColor shown(const QColor& color, bool selected) {
-  if (!selected) return color;
-  return QColor((color.red() + kSelectionColor.red()) / 2,
-                (color.green() + kSelectionColor.green()) / 2,
-                (color.blue() + kSelectionColor.blue()) / 2);
-}
-
-struct PlaneVertex {
-  Float3 position;
-  Float3 normal;
-  float grid[2];
-  PackedColor color;
-};
-
-struct CylinderVertex {
-  Float3 local;
-  Float3 normal;
-};
-
-struct CylinderInstance {
-  Float3 start;
-  Float3 end;
-  float radius;
-  PackedColor color;
-};
-
-struct BoxVertex {
-  Float3 local;
-  Float3 normal;
-};
-
-struct BoxInstance {
-  Float3 center;
-  Float3 halfAxes[3];
-  PackedColor color;
-};
-
-// ---- Meshes -------------------------------------------------------------------------------------
-
-constexpr int kCylinderSegments = 40;
 
 // ---- Explosions --------------------------------------------------------------------------------
 
@@ -84,11 +39,6 @@ constexpr int kExplosionFrameMilliseconds = 16;
 constexpr GLint kSamples = 4;  // multisampling, when antialiasing is on
 
 const Vec3 kLightDirection = Vec3(0.35, 1.0, 0.55).normalized();
-const QVector3D kBackground(0.16f, 0.17f, 0.20f);
-
-QVector3D toQVector(const Vec3& v) {
-  return QVector3D(static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()));
-}
 
 // Multisampling's samples, when antialiasing is on: as many as asked if the driver has them.
 GLint multisamples(QOpenGLFunctions_3_3_Core* gl) {
@@ -261,25 +211,16 @@ void SceneView::initializeGL() {
   // A widget moved to another window gets a new context; the old one's resources go with it.
   connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &SceneView::releaseGl,
           Qt::UniqueConnection);
-  ballProgram_ = buildProgram("ball");
-  std::array<GLfloat, 2> pointSizes{1.0f, 1.0f};
-  glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes.data());
-  largestPointSize_ = pointSizes[1];
-  planeProgram_ = buildProgram("plane");
-  cylinderProgram_ = buildProgram("cylinder");
-  boxProgram_ = buildProgram("box", "plane");
-  createBallBuffers();
-  createPlaneBuffers();
-  createCylinderBuffers();
-  createBoxBuffers();
   QOpenGLFunctions_3_3_Core* const gl = this;  // a protected base: make_unique cannot see it
+  // Each renderer starts with everything to upload.
+  ballRenderer_ = std::make_unique<BallRenderer>(gl, kPointSpriteBalls);
+  staticsRenderer_ = std::make_unique<StaticsRenderer>(gl);
   lineRenderer_ = std::make_unique<LineRenderer>(gl);
   explosionRenderer_ = std::make_unique<ExplosionRenderer>(gl);
   multisample_ = std::make_unique<RenderTarget>(gl, multisamples(gl));
-  for (auto& target : pictureTargets_) target = std::make_unique<RenderTarget>(gl, 0);
+  pictureTargets_ = std::make_unique<PictureTargets>(gl);
   glReady_ = true;
   staticDataDirty_ = true;
-  markBallAttributesDirty();
   positionsDirty_ = true;
 }
 
@@ -292,165 +233,16 @@ void SceneView::detectSoftwareRenderer() {
   if (antialiasing() != antialiasingBefore) emit antialiasingChanged(antialiasing());
 }
 
-// Balls: four vertices each, with a centre (updated every frame) and a radius and colour (set
-// once per scene) from two buffers, so that a frame uploads only the centres.
-void SceneView::createBallBuffers() {
-  ballCenterBytes_ = ballIndexBytes_ = 0;
-  std::array<GLuint, 3> buffers{};
-  glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  ballIndexBuffer_ = buffers[0];
-  ballPositionBuffer_ = buffers[1];
-  ballAttributeBuffer_ = buffers[2];
-  glGenVertexArrays(1, &ballVao_);
-  glBindVertexArray(ballVao_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ballIndexBuffer_);
-  glBindBuffer(GL_ARRAY_BUFFER, ballPositionBuffer_);
-  vertexAttribute(this, 1, 3, GL_FLOAT, sizeof(Float3), 0, false);
-  glBindBuffer(GL_ARRAY_BUFFER, ballAttributeBuffer_);
-  vertexAttribute(this, 2, 1, GL_FLOAT, sizeof(BallAttributes), offsetof(BallAttributes, radius),
-                  false);
-  vertexAttribute(this, 3, 4, GL_UNSIGNED_BYTE, sizeof(BallAttributes),
-                  offsetof(BallAttributes, color), false);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-void SceneView::createPlaneBuffers() {
-  glGenBuffers(1, &planeVertexBuffer_);
-  glGenVertexArrays(1, &planeVao_);
-  glBindVertexArray(planeVao_);
-  glBindBuffer(GL_ARRAY_BUFFER, planeVertexBuffer_);
-  vertexAttribute(this, 0, 3, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, position),
-                  false);
-  vertexAttribute(this, 1, 3, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, normal), false);
-  vertexAttribute(this, 2, 2, GL_FLOAT, sizeof(PlaneVertex), offsetof(PlaneVertex, grid), false);
-  vertexAttribute(this, 3, 4, GL_UNSIGNED_BYTE, sizeof(PlaneVertex), offsetof(PlaneVertex, color),
-                  false);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-// One mesh, drawn once per cylinder with the cylinder's ends, radius and colour per instance.
-void SceneView::createCylinderBuffers() {
-  std::array<GLuint, 2> buffers{};
-  glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  cylinderVertexBuffer_ = buffers[0];
-  cylinderInstanceBuffer_ = buffers[1];
-  glGenVertexArrays(1, &cylinderVao_);
-  createCylinderMesh();
-  glBindVertexArray(cylinderVao_);
-  glBindBuffer(GL_ARRAY_BUFFER, cylinderVertexBuffer_);
-  vertexAttribute(this, 0, 3, GL_FLOAT, sizeof(CylinderVertex), offsetof(CylinderVertex, local),
-                  false);
-  vertexAttribute(this, 1, 3, GL_FLOAT, sizeof(CylinderVertex), offsetof(CylinderVertex, normal),
-                  false);
-  glBindBuffer(GL_ARRAY_BUFFER, cylinderInstanceBuffer_);
-  const std::array<std::pair<GLint, std::size_t>, 3> floatFields = {
-      std::pair<GLint, std::size_t>{3, offsetof(CylinderInstance, start)},
-      {3, offsetof(CylinderInstance, end)},
-      {1, offsetof(CylinderInstance, radius)}};
-  for (GLuint location = 2; const auto& [components, offset] : floatFields) {
-    vertexAttribute(this, location, components, GL_FLOAT, sizeof(CylinderInstance), offset, true);
-    ++location;
-  }
-  vertexAttribute(this, 5, 4, GL_UNSIGNED_BYTE, sizeof(CylinderInstance),
-                  offsetof(CylinderInstance, color), true);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
-void SceneView::createCylinderMesh() {
-  // A unit cylinder with both ends closed: clipped at the horizon, its cut faces show (faded).
-  std::vector<CylinderVertex> vertices;
-  const auto ring = [](int segment) {
-    const double angle = 2.0 * std::numbers::pi * segment / kCylinderSegments;
-    return std::pair<float, float>(static_cast<float>(std::cos(angle)),
-                                   static_cast<float>(std::sin(angle)));
-  };
-  for (int segment = 0; segment < kCylinderSegments; ++segment) {
-    const auto [x0, y0] = ring(segment);
-    const auto [x1, y1] = ring(segment + 1);
-    const CylinderVertex bottom0{{x0, y0, 0.0f}, {x0, y0, 0.0f}};
-    const CylinderVertex bottom1{{x1, y1, 0.0f}, {x1, y1, 0.0f}};
-    const CylinderVertex top0{{x0, y0, 1.0f}, {x0, y0, 0.0f}};
-    const CylinderVertex top1{{x1, y1, 1.0f}, {x1, y1, 0.0f}};
-    vertices.insert(vertices.end(), {bottom0, bottom1, top1, bottom0, top1, top0});
-    const Float3 up{0.0f, 0.0f, 1.0f};
-    const Float3 down{0.0f, 0.0f, -1.0f};
-    vertices.insert(vertices.end(),
-                    {CylinderVertex{{0.0f, 0.0f, 1.0f}, up}, CylinderVertex{{x0, y0, 1.0f}, up},
-                     CylinderVertex{{x1, y1, 1.0f}, up}});
-    vertices.insert(vertices.end(),
-                    {CylinderVertex{{0.0f, 0.0f, 0.0f}, down}, CylinderVertex{{x1, y1, 0.0f}, down},
-                     CylinderVertex{{x0, y0, 0.0f}, down}});
-  }
-  cylinderVertexCount_ = static_cast<int>(vertices.size());
-  uploadBuffer(this, cylinderVertexBuffer_, vertices, GL_STATIC_DRAW);
-}
-
-// One cube, drawn once per box with its centre, half axes and colour per instance.
-void SceneView::createBoxBuffers() {
-  std::array<GLuint, 2> buffers{};
-  glGenBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  boxVertexBuffer_ = buffers[0];
-  boxInstanceBuffer_ = buffers[1];
-  glGenVertexArrays(1, &boxVao_);
-  // Each face from its outward normal n and two directions u, v with u x v = n, so that its
-  // corners run counter-clockwise seen from outside.
-  std::vector<BoxVertex> vertices;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const float side : {-1.0f, 1.0f}) {
-      Vec3 n = Vec3::Zero(), u = Vec3::Zero();
-      n[axis] = side;
-      u[(axis + 1) % 3] = 1.0;
-      const Vec3 v = n.cross(u);
-      const auto corner = [&](double a, double b) {
-        return BoxVertex{toFloat3(n + a * u + b * v), toFloat3(n)};
-      };
-      vertices.insert(vertices.end(), {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, -1),
-                                       corner(1, 1), corner(-1, 1)});
-    }
-  }
-  boxVertexCount_ = static_cast<int>(vertices.size());
-  uploadBuffer(this, boxVertexBuffer_, vertices, GL_STATIC_DRAW);
-  glBindVertexArray(boxVao_);
-  glBindBuffer(GL_ARRAY_BUFFER, boxVertexBuffer_);
-  vertexAttribute(this, 0, 3, GL_FLOAT, sizeof(BoxVertex), offsetof(BoxVertex, local), false);
-  vertexAttribute(this, 1, 3, GL_FLOAT, sizeof(BoxVertex), offsetof(BoxVertex, normal), false);
-  glBindBuffer(GL_ARRAY_BUFFER, boxInstanceBuffer_);
-  vertexAttribute(this, 2, 3, GL_FLOAT, sizeof(BoxInstance), offsetof(BoxInstance, center), true);
-  for (GLuint k = 0; k < 3; ++k)
-    vertexAttribute(this, 3 + k, 3, GL_FLOAT, sizeof(BoxInstance),
-                    offsetof(BoxInstance, halfAxes) + k * sizeof(Float3), true);
-  vertexAttribute(this, 6, 4, GL_UNSIGNED_BYTE, sizeof(BoxInstance), offsetof(BoxInstance, color),
-                  true);
-  glBindVertexArray(0);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-}
-
 void SceneView::releaseGl() {
   if (!glReady_) return;
   glReady_ = false;
   cancelPicture();
-  shownTarget_ = -1;
   multisample_.reset();
-  for (auto& target : pictureTargets_) target.reset();
-  ballProgram_.reset();
-  planeProgram_.reset();
-  cylinderProgram_.reset();
-  boxProgram_.reset();
+  pictureTargets_.reset();
+  ballRenderer_.reset();
+  staticsRenderer_.reset();
   lineRenderer_.reset();
   explosionRenderer_.reset();
-  const std::array<GLuint, 8> buffers = {
-      ballIndexBuffer_,      ballPositionBuffer_,     ballAttributeBuffer_, planeVertexBuffer_,
-      cylinderVertexBuffer_, cylinderInstanceBuffer_, boxVertexBuffer_,     boxInstanceBuffer_};
-  glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
-  const std::array<GLuint, 4> arrays = {ballVao_, planeVao_, cylinderVao_, boxVao_};
-  glDeleteVertexArrays(static_cast<GLsizei>(arrays.size()), arrays.data());
-  ballIndexBuffer_ = ballPositionBuffer_ = ballAttributeBuffer_ = 0;
-  planeVertexBuffer_ = cylinderVertexBuffer_ = cylinderInstanceBuffer_ = 0;
-  boxVertexBuffer_ = boxInstanceBuffer_ = 0;
-  ballVao_ = planeVao_ = cylinderVao_ = boxVao_ = 0;
 }
 
 void SceneView::setHighlighted(std::vector<int> balls, std::vector<int> planes,
@@ -496,60 +288,19 @@ void SceneView::setAntialiasing(bool on) {
 
 void SceneView::uploadStaticData() {
   staticDataDirty_ = false;
-  uploadBallAttributes(std::numeric_limits<std::size_t>::max());
-  std::vector<PlaneVertex> planeVertices;
-  std::vector<CylinderInstance> cylinders;
-  std::vector<BoxInstance> boxes;
-  if (scene_) {
-    const std::vector<bool> selectedPlanes = membership(highlightedPlanes_, scene_->planes.size());
-    const std::vector<bool> selectedCylinders =
-        membership(highlightedCylinders_, scene_->cylinders.size());
-    const double spacing = scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0;
-    for (std::size_t index = 0; index < scene_->planes.size(); ++index) {
-      const RenderPlane& plane = scene_->planes[index];
-      if (plane.polygon.size() < 3) continue;
-      const PackedColor color = pack(shown(plane.color, selectedPlanes[index]));
-      // Grid axes in the plane, the same construction for every point so cells line up.
-      int leastAxis = 0;
-      plane.normal.cwiseAbs().minCoeff(&leastAxis);
-      const Vec3 u = plane.normal.cross(Vec3::Unit(leastAxis)).normalized();
-      const Vec3 v = plane.normal.cross(u);
-      const auto vertex = [&](const Vec3& p) {
-        return PlaneVertex{
-            toFloat3(p),
-            toFloat3(plane.normal),
-            {static_cast<float>(p.dot(u) / spacing), static_cast<float>(p.dot(v) / spacing)},
-            color};
-      };
-      for (std::size_t i = 1; i + 1 < plane.polygon.size(); ++i) {
-        planeVertices.push_back(vertex(plane.polygon[0]));
-        planeVertices.push_back(vertex(plane.polygon[i]));
-        planeVertices.push_back(vertex(plane.polygon[i + 1]));
-      }
-    }
-    for (std::size_t index = 0; index < scene_->cylinders.size(); ++index) {
-      const RenderCylinder& cylinder = scene_->cylinders[index];
-      if ((cylinder.end - cylinder.start).norm() == 0.0) continue;  // misses the horizon
-      cylinders.push_back({toFloat3(cylinder.start), toFloat3(cylinder.end),
-                           static_cast<float>(cylinder.radius),
-                           pack(shown(cylinder.color, selectedCylinders[index]))});
-    }
-    const std::vector<bool> selectedBoxes = membership(highlightedBoxes_, scene_->boxes.size());
-    for (std::size_t index = 0; index < scene_->boxes.size(); ++index) {
-      const RenderBox& box = scene_->boxes[index];
-      boxes.push_back(
-          {toFloat3(box.center),
-           {toFloat3(box.halfAxes[0]), toFloat3(box.halfAxes[1]), toFloat3(box.halfAxes[2])},
-           pack(shown(box.color, selectedBoxes[index]))});
-    }
-    boxGridSpacing_ = static_cast<float>(scene_->gridSpacing > 0.0 ? scene_->gridSpacing : 1.0);
-  }
-  uploadBuffer(this, planeVertexBuffer_, planeVertices, GL_STATIC_DRAW);
-  uploadBuffer(this, cylinderInstanceBuffer_, cylinders, GL_STATIC_DRAW);
-  planeVertexCount_ = static_cast<int>(planeVertices.size());
-  cylinderInstanceCount_ = static_cast<int>(cylinders.size());
-  uploadBuffer(this, boxInstanceBuffer_, boxes, GL_STATIC_DRAW);
-  boxInstanceCount_ = static_cast<int>(boxes.size());
+  ballRenderer_->uploadAttributes(scene_.get(), highlightedBalls_,
+                                  std::numeric_limits<std::size_t>::max());
+  staticsRenderer_->upload(scene_.get(), highlightedPlanes_, highlightedCylinders_,
+                           highlightedBoxes_);
+}
+
+void SceneView::markBallAttributesDirty() {
+  if (ballRenderer_) ballRenderer_->markAttributesDirty();
+}
+
+void SceneView::uploadBallPositions() {
+  positionsDirty_ = false;
+  ballRenderer_->uploadPositions(scene_.get(), ballPositions_);
 }
 
 void SceneView::paintGL() {
@@ -583,7 +334,8 @@ void SceneView::drawAfterBalls(const FrameCamera& frame,
                                const std::vector<Trail>& trails,
                                const std::vector<Arrow>& velocityArrows,
                                const std::vector<Arrow>& handleArrows) {
-  drawStatics(frame);
+  // Cylinders, boxes and planes.
+  staticsRenderer_->draw(frame, scene_.get());
   if (scene_) lineRenderer_->drawAxes(frame.viewProjection, scene_->bounds);
   for (const Trail& trail : trails)
     lineRenderer_->drawPath(frame.viewProjection, trail.points, trail.color);
@@ -619,55 +371,30 @@ void SceneView::clearFrame() {
   glFrontFace(GL_CCW);
 }
 
-SceneView::FrameCamera SceneView::frameCamera(const Camera& camera) const {
+FrameCamera SceneView::frameCamera(const Camera& camera) const {
   return {
       camera.viewProjection(), camera.eye(),
       QVector3D(static_cast<float>(kLightDirection.x()), static_cast<float>(kLightDirection.y()),
                 static_cast<float>(kLightDirection.z()))};
 }
 
-void SceneView::useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame) {
-  program.bind();
-  program.setUniformValue("viewProjection", frame.viewProjection);
-  program.setUniformValue("eyePosition", frame.eye);
-  program.setUniformValue("lightDirection", frame.light);
+void SceneView::drawBalls(const FrameCamera& frame, double pixelHeight) {
+  drawBallRange(frame, pixelHeight, 0, prepareBalls(frame, pixelHeight));
 }
 
-void SceneView::setFadeBeyondBounds(QOpenGLShaderProgram& program) {
-  if (!scene_) return;
-  const Bounds& bounds = scene_->bounds;
-  program.setUniformValue("boundsMin", toQVector(bounds.min));
-  program.setUniformValue("boundsMax", toQVector(bounds.max));
-  program.setUniformValue("fadeLength", static_cast<float>(kFadeRadii * bounds.radius()));
-  program.setUniformValue("backgroundColor", kBackground);
+// Per device pixel, so that the soft edge is a pixel wide on any screen.
+double SceneView::pixelAngle(double pixelHeight) const {
+  const double viewHeightAtUnitDistance =
+      2.0 * std::tan(0.5 * camera_.verticalFov() * std::numbers::pi / 180.0);
+  return viewHeightAtUnitDistance / std::max(1.0, pixelHeight);
 }
 
-void SceneView::drawStatics(const FrameCamera& frame) {
-  // Also hides the walls seen from outside (their front faces point into the room), which is
-  // what lets the camera look in from beyond them.
-  glEnable(GL_CULL_FACE);
-  if (cylinderInstanceCount_ > 0) {
-    useProgram(*cylinderProgram_, frame);
-    setFadeBeyondBounds(*cylinderProgram_);
-    glBindVertexArray(cylinderVao_);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, cylinderVertexCount_, cylinderInstanceCount_);
-  }
-  if (boxInstanceCount_ > 0) {
-    useProgram(*boxProgram_, frame);
-    boxProgram_->setUniformValue("gridSpacing", boxGridSpacing_);
-    glBindVertexArray(boxVao_);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, boxVertexCount_, boxInstanceCount_);
-  }
-  if (planeVertexCount_ > 0) {
-    useProgram(*planeProgram_, frame);
-    setFadeBeyondBounds(*planeProgram_);
-    glBindVertexArray(planeVao_);
-    // Pushed back by a step of depth, so that lines lying in a plane (the axes) show on it.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 1.0f);
-    glDrawArrays(GL_TRIANGLES, 0, planeVertexCount_);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
+int SceneView::prepareBalls(const FrameCamera& frame, double pixelHeight) {
+  return ballRenderer_->prepare(scene_.get(), ballPositions_, frame, pixelAngle(pixelHeight));
+}
+
+void SceneView::drawBallRange(const FrameCamera& frame, double pixelHeight, int first, int count) {
+  ballRenderer_->drawRange(frame, pixelAngle(pixelHeight), first, count);
 }
 
 void SceneView::endFrame() {

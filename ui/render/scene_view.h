@@ -2,10 +2,13 @@
 // The 3D view of a running scene: OpenGL 3.3 core, the balls as ray-cast impostors nearest
 // first, and additive sparks where they collide. Huge scenes are drawn in pieces
 // (scene_view_pieces.cpp), so that the window stays responsive while a picture is drawn.
+// The view keeps what it shows and when it draws; the GL side of each kind of thing is its
+// renderer's (BallRenderer, StaticsRenderer, LineRenderer, ExplosionRenderer).
 
 #include "sim/dynamics/run_stats.h"
 #include "ui/render/camera.h"
 #include "ui/render/explosion_pool.h"
+#include "ui/render/frame_camera.h"
 #include "ui/render/render_scene.h"
 
 #include <Eigen/Geometry>
@@ -20,20 +23,20 @@
 #include <QTimer>
 #include <QVector3D>
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
-class QOpenGLShaderProgram;
-
 namespace carom::render {
 
+class BallRenderer;
 class ExplosionRenderer;
 class LineRenderer;
+class PictureTargets;
 class RenderTarget;
+class StaticsRenderer;
 
 class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   Q_OBJECT
@@ -172,12 +175,6 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void keyPressEvent(QKeyEvent* event) override;
 
  private:
-  // What every program is given in a frame.
-  struct FrameCamera {
-    QMatrix4x4 viewProjection;
-    QVector3D eye;
-    QVector3D light;  // towards the light, unit length
-  };
   // What a picture shows; the view draws a new one in pieces when this differs.
   struct PictureKey {
     std::uint64_t content = 0;  // contentVersion_
@@ -202,17 +199,10 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   };
 
   void detectSoftwareRenderer();
-  void createBallBuffers();
-  void createPlaneBuffers();
-  void createCylinderBuffers();
-  void createCylinderMesh();
-  void createBoxBuffers();
   void releaseGl();
   double clockSeconds() const;
+  // The balls' radii and colours and the fixed shapes, with the selection's highlights.
   void uploadStaticData();
-  // Uploads at most `mostBalls` balls' attributes when all must be uploaded, and returns
-  // whether they all are; else uploads the highlights that changed.
-  bool uploadBallAttributes(std::size_t mostBalls);
   void markBallAttributesDirty();
   void uploadBallPositions();
   void advanceExplosions();
@@ -228,33 +218,13 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   void drawAfterBalls(const FrameCamera& frame, const std::vector<ExplosionPool::Live>& explosions,
                       const std::vector<Trail>& trails, const std::vector<Arrow>& velocityArrows,
                       const std::vector<Arrow>& handleArrows);
-  void useProgram(QOpenGLShaderProgram& program, const FrameCamera& frame);
-  // The fading of infinite shapes beyond the scene's bounds (lighting.glsl), for a bound program.
-  void setFadeBeyondBounds(QOpenGLShaderProgram& program);
   // At the view's edge, pointing to each selected or followed ball whose centre is outside the
   // picture (scene_view_markers.cpp).
   void drawOffscreenMarkers(const FrameCamera& frame);
-  // Fills the element buffer with the balls nearest first: the squares' triangles, then the
-  // point sprites' vertices (in scenes of kPointSpriteBalls or more, the balls whose sprite fits
-  // the renderer's largest point).
-  void sortBallsFrontToBack(const QVector3D& eye, double pixelAngle);
-  // Replaces the bound buffer's contents, keeping its storage when the size is unchanged: the
-  // frame before has finished (endFrame), so nothing draws from it, and new storage would be
-  // fresh memory to fault in.
-  template <typename T>
-  void uploadReusingStorage(GLenum target, const std::vector<T>& data, GLsizeiptr& storageBytes) {
-    const auto bytes = static_cast<GLsizeiptr>(data.size() * sizeof(T));
-    if (bytes != storageBytes) {
-      glBufferData(target, bytes, data.empty() ? nullptr : data.data(), GL_STREAM_DRAW);
-      storageBytes = bytes;
-    } else if (bytes > 0) {
-      glBufferSubData(target, 0, bytes, data.data());
-    }
-  }
   void drawBalls(const FrameCamera& frame, double pixelHeight);
   // The angle of one device pixel at the centre of a picture `pixelHeight` pixels high.
   double pixelAngle(double pixelHeight) const;
-  // Sorts the balls for drawing (sortBallsFrontToBack); returns how many there are to draw.
+  // Sorts the balls for drawing (BallRenderer::prepare); returns how many there are to draw.
   int prepareBalls(const FrameCamera& frame, double pixelHeight);
   // Balls [first, first + count) in drawing order: the squares, then the sprites.
   void drawBallRange(const FrameCamera& frame, double pixelHeight, int first, int count);
@@ -274,8 +244,6 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   int pieceBalls() const;
   // Stops the picture being drawn; the next paint starts another.
   void cancelPicture();
-  // Cylinders, boxes and planes, after the balls.
-  void drawStatics(const FrameCamera& frame);
   // Leaves the GL state as Qt's compositing expects it, once the GPU is done.
   void endFrame();
   void followBall();
@@ -302,58 +270,22 @@ class SceneView : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
   QTimer explosionFrameTimer_;  // keeps frames coming while explosions fade
   std::uint64_t contentVersion_ = 0;
 
-  // Drawing in pieces: two framebuffers in turn, one drawn while the other is shown.
+  // Drawing in pieces, into pictureTargets_.
   QTimer pieceTimer_;
   PiecewisePicture piecewise_;
   std::optional<PictureKey> drawnKey_;  // of the picture shown or being drawn
-  int shownTarget_ = -1;                // into pictureTargets_, -1 before the first picture
   double ballsPerMillisecond_ = 0.0;    // measured in the last piece of balls
 
   // GL state, valid between initializeGL and releaseGl.
   bool glReady_ = false;
   bool staticDataDirty_ = true;
   bool positionsDirty_ = true;
-  bool ballAttributesDirty_ = true;     // else only highlights that changed are uploaded
-  std::size_t attributesUploaded_ = 0;  // balls, while all are being uploaded
-  std::vector<bool> uploadedBallHighlights_;
-  std::unique_ptr<QOpenGLShaderProgram> ballProgram_;
-  std::unique_ptr<QOpenGLShaderProgram> planeProgram_;
-  std::unique_ptr<QOpenGLShaderProgram> cylinderProgram_;
-  std::unique_ptr<QOpenGLShaderProgram> boxProgram_;
+  std::unique_ptr<BallRenderer> ballRenderer_;
+  std::unique_ptr<StaticsRenderer> staticsRenderer_;
   std::unique_ptr<LineRenderer> lineRenderer_;
   std::unique_ptr<ExplosionRenderer> explosionRenderer_;
   std::unique_ptr<RenderTarget> multisample_;
-  std::array<std::unique_ptr<RenderTarget>, 2> pictureTargets_;
-  GLuint ballVao_ = 0;
-  GLuint planeVao_ = 0;
-  GLuint cylinderVao_ = 0;
-  GLuint boxVao_ = 0;
-  GLuint ballIndexBuffer_ = 0;
-  GLuint ballPositionBuffer_ = 0;
-  GLuint ballAttributeBuffer_ = 0;
-  GLuint planeVertexBuffer_ = 0;
-  GLuint cylinderVertexBuffer_ = 0;
-  GLuint cylinderInstanceBuffer_ = 0;
-  GLuint boxVertexBuffer_ = 0;
-  GLuint boxInstanceBuffer_ = 0;
-  int planeVertexCount_ = 0;
-  int cylinderVertexCount_ = 0;
-  int cylinderInstanceCount_ = 0;
-  int boxVertexCount_ = 0;
-  int boxInstanceCount_ = 0;
-  float boxGridSpacing_ = 1.0f;
-  int uploadedBallCount_ = 0;
-  int squareBallCount_ = 0;  // in the element buffer, before the sprites
-  int spriteBallCount_ = 0;
-  float largestPointSize_ = 1.0f;
-  // What each frame builds for the balls, kept from frame to frame: a million balls make some
-  // 80 MB of them, and fresh memory costs a page fault every 4 KiB (a third of a second here).
-  std::vector<float> ballCenterScratch_;  // x, y, z of each vertex
-  std::vector<std::pair<float, GLuint>> ballOrderScratch_;
-  std::vector<std::pair<float, GLuint>> ballSortScratch_;
-  std::vector<GLuint> ballIndexScratch_;
-  GLsizeiptr ballCenterBytes_ = 0;  // the sizes of the GL buffers' storage
-  GLsizeiptr ballIndexBytes_ = 0;
+  std::unique_ptr<PictureTargets> pictureTargets_;
 };
 
 }  // namespace carom::render

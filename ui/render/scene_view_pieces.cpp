@@ -5,6 +5,8 @@
 // paintGL only copies the last whole picture onto the screen. Each picture keeps the positions,
 // camera and overlays its first piece found, so that its pieces fit together.
 
+#include "ui/render/ball_renderer.h"
+#include "ui/render/picture_targets.h"
 #include "ui/render/render_target.h"
 #include "ui/render/scene_view.h"
 
@@ -17,7 +19,7 @@ namespace carom::render {
 
 bool SceneView::drawsInPieces() const {
   return scene_ && static_cast<int>(scene_->ballRadii.size()) >= kPiecewiseBalls && glReady_ &&
-         !pictureTargets_[0]->failed() && !pictureTargets_[1]->failed();
+         !pictureTargets_->failed();
 }
 
 SceneView::PictureKey SceneView::currentPictureKey() const {
@@ -34,8 +36,8 @@ void SceneView::showLastPicture() {
     piecewise_.workMilliseconds = 0.0;
     pieceTimer_.start();
   }
-  if (shownTarget_ >= 0) {
-    pictureTargets_[shownTarget_]->blitTo(defaultFramebufferObject(), devicePixelSize());
+  if (RenderTarget* shown = pictureTargets_->shown()) {
+    shown->blitTo(defaultFramebufferObject(), devicePixelSize());
   } else {
     clearFrame();
     glDisable(GL_DEPTH_TEST);
@@ -78,13 +80,13 @@ void SceneView::drawNextPiece() {
     return;
   }
   piecewise_.drawing = false;
-  shownTarget_ = shownTarget_ == 0 ? 1 : 0;
+  pictureTargets_->flip();
   update();
   emit frameRendered(piecewise_.workMilliseconds);
 }
 
 bool SceneView::bindPieceTarget() {
-  RenderTarget& target = *pictureTargets_[shownTarget_ == 0 ? 1 : 0];
+  RenderTarget& target = pictureTargets_->hidden();
   if (!target.bind(piecewise_.key.size, defaultFramebufferObject())) {
     cancelPicture();  // and drawsInPieces() is false from now on
     return false;
@@ -109,7 +111,9 @@ bool SceneView::drawPiece() {
     picture.velocityArrows = velocityArrows_;
     picture.handleArrows = handleArrows_;
     // A new scene's radii and colours take pieces of their own.
-    if (ballAttributesDirty_ && !uploadBallAttributes(kAttributePieceBalls)) return false;
+    if (ballRenderer_->attributesDirty() &&
+        !ballRenderer_->uploadAttributes(scene_.get(), highlightedBalls_, kAttributePieceBalls))
+      return false;
     if (staticDataDirty_) uploadStaticData();
     if (positionsDirty_) uploadBallPositions();
     if (!bindPieceTarget()) return false;
@@ -122,7 +126,7 @@ bool SceneView::drawPiece() {
   if (!bindPieceTarget()) return false;
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  const int balls = squareBallCount_ + spriteBallCount_;
+  const int balls = ballRenderer_->preparedBalls();
   if (picture.nextBall < balls) {
     const int count = std::min(pieceBalls(), balls - picture.nextBall);
     drawBallRange(picture.frame, picture.pixelHeight, picture.nextBall, count);
@@ -131,8 +135,7 @@ bool SceneView::drawPiece() {
   }
   drawAfterBalls(picture.frame, picture.explosions, picture.trails, picture.velocityArrows,
                  picture.handleArrows);
-  if (picture.multisampled)
-    multisample_->blitTo(pictureTargets_[shownTarget_ == 0 ? 1 : 0]->framebuffer());
+  if (picture.multisampled) multisample_->blitTo(pictureTargets_->hidden().framebuffer());
   return true;
 }
 

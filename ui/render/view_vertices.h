@@ -1,8 +1,9 @@
 #pragma once
 // The vertex data the scene view's files share: packed colours, the balls' per-vertex
-// attributes, which items of a list are selected, and the selection's colour.
+// attributes, which items of a list are selected, the selection's colour and the background.
 
 #include <QColor>
+#include <QVector3D>
 
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +13,8 @@ namespace carom::render {
 
 // The editor's handles, the selection's tint and the markers of selected balls out of view.
 inline const QColor kSelectionColor(255, 140, 13);
+// The view's background, which infinite shapes fade into beyond the scene's bounds.
+inline const QVector3D kBackground(0.16f, 0.17f, 0.20f);
 
 struct PackedColor {
   std::uint8_t r, g, b, a;
