@@ -23,7 +23,7 @@
 #include "ui/editor/scene_recovery.h"
 #include "ui/render/render_scene.h"
 #include "ui/render/scene_view.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/simulation_sync.h"
 #include "ui/sound_thread.h"
 #include "ui/status_readout.h"
@@ -58,7 +58,7 @@ using render::SceneView;
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
-      simulation_(std::make_unique<SimulationController>()),
+      simulation_(std::make_unique<RunSession>()),
       document_(new editor::SceneDocument(this)) {
   setAcceptDrops(true);
   view_ = new SceneView;
@@ -72,16 +72,22 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(centre);
   connect(timeline_, &TimelineBar::frameRequested, this, [this](std::uint64_t frame) {
     playAction_->setChecked(false);
-    simulation_->showFrame(frame);
+    simulation_->controls().showFrame(frame);
   });
-  connect(timeline_, &TimelineBar::memoryBudgetChanged, simulation_.get(),
+  connect(timeline_, &TimelineBar::memoryBudgetChanged, &simulation_->controls(),
           &SimulationController::setRecordingBudget);
   sync_ = new SimulationSync(document_, simulation_.get(), this);
-  connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
-    view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
-    storyDock_->restart();
-    showSelection();
-  });
+  connect(simulation_.get(), &RunSession::restarted, this,
+          [this](std::uint64_t, std::shared_ptr<const Scene> start) {
+            view_->setScene(
+                std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
+            // Another scene or an edit: the plot, the story and the rates of the run before are
+            // not this one's.
+            energyPlot_->clear();
+            storyDock_->restart();
+            status_->restart();
+            showSelection();
+          });
   connect(sync_, &SimulationSync::message, this, &MainWindow::showMessage);
   energyPlot_ = new EnergyPlot;
   energyDock_ = new QDockWidget(this);
@@ -109,7 +115,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(tools_, &editor::EditorTools::refused, this, &MainWindow::showMessage);
   grab_ = new GrabControl(tools_, simulation_.get(), this);
   connect(grab_, &GrabControl::message, this, &MainWindow::showMessage);
-  watchAlert_ = new WatchAlert(document_, view_, simulation_.get(), this);
+  watchAlert_ = new WatchAlert(document_, view_, &simulation_->controls(), this);
   // The worker has paused; the control follows.
   connect(watchAlert_, &WatchAlert::stopped, this, [this] { playAction_->setChecked(false); });
   connect(watchAlert_, &WatchAlert::stopped, this, &MainWindow::watchStopped);
@@ -146,8 +152,8 @@ MainWindow::MainWindow(QWidget* parent)
   buildEditActions();
   buildToolActions();
   buildToolBar();
-  simulation_->setSpeed(speed_->value());
-  simulation_->setRecordingBudget(TimelineBar::memoryBudget());
+  simulation_->controls().setSpeed(speed_->value());
+  simulation_->controls().setRecordingBudget(TimelineBar::memoryBudget());
   buildMenus();
   connect(document_, &editor::SceneDocument::sceneChanged, this,
           [this](const editor::SceneChange& change) {
@@ -159,8 +165,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (followAction_->isChecked()) view_->setFollowedBall(followTarget());
     showSelection();
   });
-  connect(simulation_.get(), &SimulationController::snapshotPublished, this,
-          &MainWindow::showSnapshot);
+  connect(simulation_.get(), &RunSession::snapshotReady, this, &MainWindow::showSnapshot);
   connect(view_, &SceneView::frameRendered, status_, &StatusReadout::countFrame);
   retranslate();
   resize(1280, 800);
@@ -203,21 +208,21 @@ void MainWindow::buildActions() {
   playAction_->setShortcut(Qt::Key_Space);
   connect(playAction_, &QAction::toggled, this, [this](bool on) {
     playAction_->setText(on ? tr("&Pause") : tr("&Run"));
-    simulation_->setRunning(on);
+    simulation_->controls().setRunning(on);
   });
 
   stepAction_ = new QAction(this);
   stepAction_->setShortcut(Qt::Key_S);
   connect(stepAction_, &QAction::triggered, this, [this] {
     playAction_->setChecked(false);
-    simulation_->stepOnce();
+    simulation_->controls().stepOnce();
   });
 
   resetAction_ = new QAction(this);
   resetAction_->setShortcut(Qt::Key_R);
   connect(resetAction_, &QAction::triggered, this, [this] {
     playAction_->setChecked(false);
-    simulation_->reset();
+    simulation_->controls().reset();
   });
 
   fullScreenAction_ = new QAction(this);
@@ -289,7 +294,7 @@ void MainWindow::buildToolBar() {
   speed_->setValue(1.0);
   connect(speed_, &NumberBox::refused, this, &MainWindow::showMessage);
   connect(speed_, &QDoubleSpinBox::valueChanged, this,
-          [this](double value) { simulation_->setSpeed(value); });
+          [this](double value) { simulation_->controls().setSpeed(value); });
   simulationBar_->addWidget(speed_);
 
   addToolBarBreak();
@@ -330,9 +335,9 @@ void MainWindow::buildMenus() {
   accuracyAction_ = simulationMenu_->addAction(QString(), this, [this] { openAccuracyWindow(); });
   watchMenu_ = new WatchMenu(this);
   simulationMenu_->addMenu(watchMenu_);
-  connect(watchMenu_, &WatchMenu::settingsChanged, simulation_.get(),
+  connect(watchMenu_, &WatchMenu::settingsChanged, &simulation_->controls(),
           &SimulationController::setWatchSettings);
-  simulation_->setWatchSettings(watchMenu_->settings());
+  simulation_->controls().setWatchSettings(watchMenu_->settings());
   simulationMenu_->addSeparator();
   simulationMenu_->addActions({useStateAction_, applyToRunningAction_});
   simulationMenu_->addSeparator();
@@ -616,15 +621,7 @@ void MainWindow::changeTimeStep(double factor) {
   worldBar_->changeTimeStep(factor);
 }
 
-void MainWindow::showSnapshot() {
-  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->take();
-  if (!snapshot) return;
-  if (snapshot->startNumber != shownStart_) {
-    // Another scene or an edit: the plot and the rates of the run before are not this one's.
-    shownStart_ = snapshot->startNumber;
-    energyPlot_->clear();
-    status_->restart();
-  }
+void MainWindow::showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot) {
   view_->setBallPositions(snapshot->positions);
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
@@ -776,6 +773,7 @@ void MainWindow::buildEditActions() {
 }
 
 void MainWindow::useCurrentState() {
+  // Of the current start only: a snapshot of the run before an edit is not this scene's state.
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
   const Scene& scene = document_->scene();
   if (!snapshot || snapshot->positions.size() != scene.balls.size()) return;

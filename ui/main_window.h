@@ -43,7 +43,7 @@ class WorldToolBar;
 class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
-class SimulationController;
+class RunSession;
 class SimulationSync;
 }  // namespace carom::ui
 namespace carom::render {
@@ -82,7 +82,7 @@ class MainWindow : public QMainWindow {
   QString statusMessage() const;
   void showMessage(const QString& message);
 
-  SimulationController& simulation() { return *simulation_; }
+  RunSession& simulation() { return *simulation_; }
   // As the Run/Pause control does.
   void setRunning(bool running);
   QWidget* view() const;
@@ -129,14 +129,13 @@ class MainWindow : public QMainWindow {
   void buildToolBar();
   void buildMenus();
   void buildHelpMenu();
-  void showSnapshot();
+  void showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot);
   void changeTimeStep(double factor);
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
-  std::unique_ptr<SimulationController> simulation_;
+  std::unique_ptr<RunSession> simulation_;  // the live run: its starts, snapshots and controls
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
-  std::uint64_t shownStart_ = 0;        // the start of the run whose snapshots the window shows
   BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
   ImageExport* imageExport_ = nullptr;  // File > Export Image
   VideoExport* videoExport_ = nullptr;  // File > Export Video
