@@ -6,7 +6,7 @@
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 #include "ui/sound_thread.h"
 

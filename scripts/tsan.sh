@@ -3,7 +3,8 @@
 # any report fails the run. They are the physics worker's hand-over (the snapshot exchange and
 # the call queue under contention in test_handover; running, stepping, live settings, the busy
 # physics thread and the speed vs accuracy study's thread pool in test_main_window), editing
-# while the simulation runs (test_editor), huge scenes' restarts made on a thread of their own
+# while the simulation runs (test_editor), restarts while snapshots are in flight
+# (test_run_session), huge scenes' restarts made on a thread of their own
 # (test_simulation_sync) and the sound thread (test_sound); the rest of the
 # suite runs on one thread. Debian's Qt, Mesa and PulseAudio are not built with TSan: tests/tsan.supp lists the
 # false reports that follow from that, each with its reason, and none of Carom's own code.
@@ -13,7 +14,7 @@
 # outside the lock): each failed test_main_window with the race's two stacks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tests=(test_handover test_simulation_sync test_main_window test_editor test_sound)
+tests=(test_handover test_run_session test_simulation_sync test_main_window test_editor test_sound)
 # The video export's hand-over (the worker replaying the run into ui/run/video_frames.h's queue,
 # the GUI draining it, Cancel, and abandoning on Reset) is checked by test_video_export's cases
 # that start no child process. The MP4 cases start ffmpeg while the physics and sound threads

@@ -8,6 +8,8 @@
 #include "ui/editor/scene_document.h"
 #include "ui/main_window.h"
 #include "ui/render/scene_view.h"
+#include "ui/run/run_session.h"
+#include "ui/run/simulation_snapshot.h"
 
 #include <QAction>
 #include <QApplication>
@@ -64,6 +66,13 @@ class EditorFixture : public QObject {
     QTRY_VERIFY(framesRendered(*window_) > 0);
   }
   editor::SceneDocument& document() { return *window_->document(); }
+  // The newest snapshot of the run's current start. RunSession::latest() is null from a
+  // restart until the worker has answered it; this waits for the answer (up to ten seconds).
+  std::shared_ptr<const ui::SimulationSnapshot> currentSnapshot() {
+    if (!QTest::qWaitFor([this] { return window_->simulation().latest() != nullptr; }, 10000))
+      qFatal("No snapshot of the run's current start within ten seconds");
+    return window_->simulation().latest();
+  }
   render::SceneView& view() { return *qobject_cast<render::SceneView*>(window_->view()); }
   QPoint at(const Vec3& world) { return view().project(world).toPoint(); }
   void click(const Vec3& world, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {

@@ -6,7 +6,7 @@
 
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 
 #include <QLineEdit>

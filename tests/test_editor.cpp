@@ -4,7 +4,7 @@
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "ui/editor/editor_tools.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 
 #include <QAction>
 #include <QApplication>
@@ -633,13 +633,13 @@ carom::Scene fallingScene() {
 void TestEditor::anEditRestartsTheRun() {
   window_->openScene(fallingScene(), {}, "falling");
   window_->setRunning(true);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.5);
+  QTRY_VERIFY(currentSnapshot()->time > 0.5);
   carom::Scene edited = document().scene();
   edited.balls[1].mass = 2.0;
   QVERIFY(carom::testing::applyEdit(document(), edited, "heavier").isEmpty());
   // From the start of the edited scene, still running.
-  QTRY_VERIFY(window_->simulation().latest()->time < 0.4);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.1);
+  QTRY_VERIFY(currentSnapshot()->time < 0.4);
+  QTRY_VERIFY(currentSnapshot()->time > 0.1);
   window_->setRunning(false);
 }
 
@@ -649,45 +649,45 @@ void TestEditor::editsCanApplyToTheRunningState() {
   QVERIFY(applyToRunning);
   applyToRunning->setChecked(true);
   window_->setRunning(true);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  QTRY_VERIFY(currentSnapshot()->time > 0.3);
   window_->setRunning(false);
-  QTRY_VERIFY(!window_->simulation().latest()->running);
-  const std::vector<Vec3> running = window_->simulation().latest()->positions;
+  QTRY_VERIFY(!currentSnapshot()->running);
+  const std::vector<Vec3> running = currentSnapshot()->positions;
   QVERIFY(running[1].y() < 3.0);
   // Ball 0 is edited and starts over; ball 1 is left alone and stays where the run had it.
   carom::Scene edited = document().scene();
   edited.balls[0].color = "#00ff00";
   QVERIFY(carom::testing::applyEdit(document(), edited, "recolour").isEmpty());
-  QTRY_COMPARE(window_->simulation().latest()->time, 0.0);
-  QCOMPARE(window_->simulation().latest()->positions[0], Vec3(-2, 3, 0));
-  QCOMPARE(window_->simulation().latest()->positions[1], running[1]);
+  QTRY_COMPARE(currentSnapshot()->time, 0.0);
+  QCOMPARE(currentSnapshot()->positions[0], Vec3(-2, 3, 0));
+  QCOMPARE(currentSnapshot()->positions[1], running[1]);
   // Off: the next edit starts everything from the scene.
   applyToRunning->setChecked(false);
   edited.balls[0].color = "#0000ff";
   QVERIFY(carom::testing::applyEdit(document(), edited, "recolour").isEmpty());
-  QTRY_COMPARE(window_->simulation().latest()->positions[1], Vec3(2, 3, 0));
+  QTRY_COMPARE(currentSnapshot()->positions[1], Vec3(2, 3, 0));
 }
 
 void TestEditor::runningStateSurvivesAddingAndDeleting() {
   window_->openScene(fallingScene(), {}, "falling");
   window_->findChild<QAction*>("applyToRunningState")->setChecked(true);
   window_->setRunning(true);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  QTRY_VERIFY(currentSnapshot()->time > 0.3);
   window_->setRunning(false);
-  QTRY_VERIFY(!window_->simulation().latest()->running);
-  const std::vector<Vec3> running = window_->simulation().latest()->positions;
+  QTRY_VERIFY(!currentSnapshot()->running);
+  const std::vector<Vec3> running = currentSnapshot()->positions;
   // A ball added beside them: both keep falling from where they were.
   chooseTool("toolAddBall");
   click(Vec3(0, 0, 2));
   QCOMPARE(document().scene().balls.size(), std::size_t{3});
-  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
-  QCOMPARE(window_->simulation().latest()->positions[0], running[0]);
-  QCOMPARE(window_->simulation().latest()->positions[1], running[1]);
+  QTRY_COMPARE(currentSnapshot()->positions.size(), std::size_t{3});
+  QCOMPARE(currentSnapshot()->positions[0], running[0]);
+  QCOMPARE(currentSnapshot()->positions[1], running[1]);
   // The first one deleted: the second, now first, still keeps its running state.
   document().setSelection({{ObjectKind::Ball, 0}});
   QTest::keyClick(window_.get(), Qt::Key_Delete);
-  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{2});
-  QCOMPARE(window_->simulation().latest()->positions[0], running[1]);
+  QTRY_COMPARE(currentSnapshot()->positions.size(), std::size_t{2});
+  QCOMPARE(currentSnapshot()->positions[0], running[1]);
   // A ball placed where a running ball now is cannot join the running state: everything
   // restarts from the edited scene, and the status bar says why.
   carom::Scene edited = document().scene();
@@ -696,8 +696,8 @@ void TestEditor::runningStateSurvivesAddingAndDeleting() {
   inTheWay.name = "in the way";
   edited.balls.push_back(inTheWay);
   QVERIFY(carom::testing::applyEdit(document(), edited, "add").isEmpty());
-  QTRY_COMPARE(window_->simulation().latest()->positions.size(), std::size_t{3});
-  QCOMPARE(window_->simulation().latest()->positions[0], Vec3(2, 3, 0));
+  QTRY_COMPARE(currentSnapshot()->positions.size(), std::size_t{3});
+  QCOMPARE(currentSnapshot()->positions[0], Vec3(2, 3, 0));
   QVERIFY2(statusMessage(*window_).contains("does not fit the running state"),
            qPrintable(statusMessage(*window_)));
   // In words, naming the balls as the Outline does, not by the file's paths.
@@ -709,9 +709,9 @@ void TestEditor::runningStateSurvivesAddingAndDeleting() {
 void TestEditor::useCurrentStateAsInitial() {
   window_->openScene(fallingScene(), {}, "falling");
   window_->setRunning(true);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.3);
+  QTRY_VERIFY(currentSnapshot()->time > 0.3);
   window_->setRunning(false);
-  QTRY_VERIFY(!window_->simulation().latest()->running);
+  QTRY_VERIFY(!currentSnapshot()->running);
   const std::shared_ptr<const carom::ui::SimulationSnapshot> state = window_->simulation().latest();
   window_->findChild<QAction*>("useCurrentState")->trigger();
   QCOMPARE(document().undoStack()->count(), 1);

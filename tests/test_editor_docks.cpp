@@ -13,7 +13,7 @@
 #include "ui/editor/number_text.h"
 #include "ui/editor/outline_dock.h"
 #include "ui/editor/properties_dock.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 
 #include <QChartView>
@@ -329,9 +329,9 @@ void TestEditorDocks::viewKeysWorkWhereverTheFocusIs() {
     QTest::keyClick(focus, Qt::Key_Minus);
     QVERIFY(std::abs(timeStep->value() - step) < 1e-15);
     QTest::keyClick(focus, Qt::Key_S);
-    QTRY_VERIFY(window_->simulation().latest()->time > 0.0);
+    QTRY_VERIFY(currentSnapshot()->time > 0.0);
     QTest::keyClick(focus, Qt::Key_R);
-    QTRY_COMPARE(window_->simulation().latest()->time, 0.0);
+    QTRY_COMPARE(currentSnapshot()->time, 0.0);
     QVERIFY(focus->hasFocus());  // the keys did not take the focus away
   }
   // In a text field being edited, the keys are the field's.

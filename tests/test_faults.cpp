@@ -10,7 +10,7 @@
 #include "tests/small_filesystem.h"
 #include "ui/editor/properties_dock.h"
 #include "ui/editor/scene_recovery.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
@@ -223,15 +223,15 @@ void TestFaults::aTinyBallTypedFarOutRuns() {
   scene.balls.push_back(ball);
   window_->openScene(scene, {}, "tiny");
   window_->findChild<QAction*>("run")->trigger();
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.1);
+  QTRY_VERIFY(currentSnapshot()->time > 0.1);
   document().setSelection({{carom::editor::ObjectKind::Ball, 1}});
   for (const char* axis : {"position.x", "position.y", "position.z"}) type(axis, "300");
   QCOMPARE(document().scene().balls[1].position, Vec3(300, 300, 300));
   // The edited scene runs from its start, and on.
-  QTRY_VERIFY(window_->simulation().latest()->time < 0.1);
-  QTRY_VERIFY(window_->simulation().latest()->time > 0.5);
+  QTRY_VERIFY(currentSnapshot()->time < 0.1);
+  QTRY_VERIFY(currentSnapshot()->time > 0.5);
   // Falling from where it was typed.
-  const Vec3 typed = window_->simulation().latest()->positions[1];
+  const Vec3 typed = currentSnapshot()->positions[1];
   QVERIFY2(typed.x() == 300 && typed.z() == 300 && typed.y() < 300,
            qPrintable(QString("%1 %2 %3").arg(typed.x()).arg(typed.y()).arg(typed.z())));
   QVERIFY(window_->isWindowModified());

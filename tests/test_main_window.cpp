@@ -11,7 +11,7 @@
 #include "ui/main_window.h"
 #include "ui/render/render_scene.h"
 #include "ui/render/scene_view.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/sound_thread.h"
 
 #include <QAbstractAxis>
@@ -647,7 +647,7 @@ class TestMainWindow : public QObject {
     // The physics thread is kept busy for two seconds, as a very slow batch of steps would keep
     // it; meanwhile the window keeps handling input and repainting, and its controls respond. A
     // GUI that waited on the worker would do none of this until the two seconds were over.
-    carom::ui::SimulationControllerTestAccess::post(window_->simulation(),
+    carom::ui::SimulationControllerTestAccess::post(window_->simulation().controls(),
                                                     [] { QThread::sleep(2); });
     QTest::keyClick(window_.get(), Qt::Key_Space);
     QTest::qWait(100);  // the worker is now stalled

@@ -5,7 +5,7 @@
 
 #include "scene_edits.h"
 #include "ui/editor/scene_document.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 #include "ui/simulation_sync.h"
 
@@ -19,7 +19,7 @@ using carom::Ball;
 using carom::Scene;
 using carom::Vec3;
 using carom::editor::SceneDocument;
-using carom::ui::SimulationController;
+using carom::ui::RunSession;
 using carom::ui::SimulationSync;
 
 namespace {
@@ -43,10 +43,12 @@ Scene sparseCrowd(std::size_t count) {
 
 using Starts = std::shared_ptr<std::vector<std::shared_ptr<const Scene>>>;
 
-Starts recordStarts(SimulationSync& sync) {
+// The scenes `run` restarted from, as SimulationSync restarts it.
+Starts recordStarts(RunSession& run) {
   auto starts = std::make_shared<std::vector<std::shared_ptr<const Scene>>>();
-  QObject::connect(&sync, &SimulationSync::restarted,
-                   [starts](std::shared_ptr<const Scene> start) { starts->push_back(start); });
+  QObject::connect(
+      &run, &RunSession::restarted,
+      [starts](std::uint64_t, std::shared_ptr<const Scene> start) { starts->push_back(start); });
   return starts;
 }
 
@@ -64,38 +66,38 @@ class TestSimulationSync : public QObject {
 };
 
 void TestSimulationSync::smallScenesRestartAtOnce() {
-  SimulationController simulation;
+  RunSession run;
   SceneDocument document;
-  SimulationSync sync(&document, &simulation);
-  Starts starts = recordStarts(sync);
+  SimulationSync sync(&document, &run);
+  Starts starts = recordStarts(run);
   document.reset(sparseCrowd(10), {});
   QCOMPARE(starts->size(), std::size_t{1});
   QVERIFY(*starts->back() == document.scene());
 }
 
 void TestSimulationSync::hugeScenesRestartWhenTheirStartIsMade() {
-  SimulationController simulation;
+  RunSession run;
   SceneDocument document;
-  SimulationSync sync(&document, &simulation);
-  Starts starts = recordStarts(sync);
+  SimulationSync sync(&document, &run);
+  Starts starts = recordStarts(run);
   document.reset(sparseCrowd(SimulationSync::kBackgroundBalls), {});
   // Only the event loop delivers it: the open returned before the copy was made.
   QCOMPARE(starts->size(), std::size_t{0});
   QTRY_COMPARE_WITH_TIMEOUT(starts->size(), std::size_t{1}, 30000);
   QVERIFY(*starts->back() == document.scene());
   // The simulation stands at that start.
-  simulation.stepOnce();
-  QTRY_VERIFY_WITH_TIMEOUT(simulation.latest() && simulation.latest()->time > 0.0, 30000);
-  QCOMPARE(simulation.latest()->positions.size(), SimulationSync::kBackgroundBalls);
+  run.controls().stepOnce();
+  QTRY_VERIFY_WITH_TIMEOUT(run.latest() && run.latest()->time > 0.0, 30000);
+  QCOMPARE(run.latest()->positions.size(), SimulationSync::kBackgroundBalls);
 }
 
 // Edits in quick succession: each restart starts from the scene of its own edit, in order,
 // although the document changed again while the one before was being made.
 void TestSimulationSync::anEditWaitsForTheStartBeingMade() {
-  SimulationController simulation;
+  RunSession run;
   SceneDocument document;
-  SimulationSync sync(&document, &simulation);
-  Starts starts = recordStarts(sync);
+  SimulationSync sync(&document, &run);
+  Starts starts = recordStarts(run);
   document.reset(sparseCrowd(SimulationSync::kBackgroundBalls + 10), {});
   std::vector<Scene> expected{document.scene()};
   for (double mass : {2.0, 3.0, 4.0}) {
@@ -118,16 +120,16 @@ void TestSimulationSync::anEditWaitsForTheStartBeingMade() {
 // With edits applying to the running state, the balls the edit left alone start where the run
 // has them, as for small scenes.
 void TestSimulationSync::hugeEditsKeepTheRunningState() {
-  SimulationController simulation;
+  RunSession run;
   SceneDocument document;
-  SimulationSync sync(&document, &simulation);
+  SimulationSync sync(&document, &run);
   sync.setApplyToRunningState(true);
-  Starts starts = recordStarts(sync);
+  Starts starts = recordStarts(run);
   document.reset(sparseCrowd(SimulationSync::kBackgroundBalls), {});
   QTRY_COMPARE_WITH_TIMEOUT(starts->size(), std::size_t{1}, 30000);
-  simulation.stepOnce();
-  QTRY_VERIFY_WITH_TIMEOUT(simulation.latest() && simulation.latest()->time > 0.0, 30000);
-  const std::shared_ptr<const carom::ui::SimulationSnapshot> ran = simulation.latest();
+  run.controls().stepOnce();
+  QTRY_VERIFY_WITH_TIMEOUT(run.latest() && run.latest()->time > 0.0, 30000);
+  const std::shared_ptr<const carom::ui::SimulationSnapshot> ran = run.latest();
   Scene edited = document.scene();
   edited.balls.front().mass = 5.0;
   QCOMPARE(carom::testing::applyEdit(document, edited, "mass"), QString());
@@ -144,10 +146,10 @@ void TestSimulationSync::hugeEditsKeepTheRunningState() {
 
 // The window closing with a start being made: it is waited for, and nothing restarts after.
 void TestSimulationSync::closingWhileAStartIsMade() {
-  SimulationController simulation;
+  RunSession run;
   SceneDocument document;
-  auto sync = std::make_unique<SimulationSync>(&document, &simulation);
-  Starts starts = recordStarts(*sync);
+  auto sync = std::make_unique<SimulationSync>(&document, &run);
+  Starts starts = recordStarts(run);
   document.reset(sparseCrowd(SimulationSync::kBackgroundBalls), {});
   sync.reset();
   QTest::qWait(200);  // the notice the thread posted must find nobody

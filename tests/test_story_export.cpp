@@ -7,7 +7,7 @@
 #include "tests/editor_fixture.h"
 #include "ui/dialogs/image_export.h"
 #include "ui/docks/ball_story_dock.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 
 #include <QDir>
 #include <QFileDialog>

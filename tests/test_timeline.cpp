@@ -6,7 +6,7 @@
 #include "sim/simulation.h"
 #include "tests/dialog_answerer.h"
 #include "tests/editor_fixture.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 #include "ui/timeline_bar.h"
 
@@ -154,7 +154,7 @@ class TimelineTest : public EditorFixture {
     QTest::keyClick(window_.get(), Qt::Key_Space);
     auto running = waitFor([](const SimulationSnapshot& s) { return s.running; });
     QVERIFY(running);
-    const Vec3 now = window_->simulation().latest()->positions[1];
+    const Vec3 now = currentSnapshot()->positions[1];
     const Vec3 aside = now + Vec3(0, 2.0, 0);
     drag(
         at(now), at(aside),
@@ -164,7 +164,7 @@ class TimelineTest : public EditorFixture {
         },
         20);
     QVERIFY(waitFor([](const SimulationSnapshot& s) { return s.grabbed < 0; }));
-    runUntil(window_->simulation().latest()->time + 0.3);
+    runUntil(currentSnapshot()->time + 0.3);
     paused = pause();
     // Every frame of it, grabs included, comes back as it was.
     const std::uint64_t frame = paused->frameCount;
@@ -284,7 +284,7 @@ class TimelineTest : public EditorFixture {
     return reached ? snapshot : nullptr;
   }
   void runUntil(double time) {
-    if (!window_->simulation().latest()->running) QTest::keyClick(window_.get(), Qt::Key_Space);
+    if (!currentSnapshot()->running) QTest::keyClick(window_.get(), Qt::Key_Space);
     QVERIFY(waitFor([time](const SimulationSnapshot& s) { return s.running && s.time >= time; }));
   }
   std::shared_ptr<const SimulationSnapshot> pause() {

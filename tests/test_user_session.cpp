@@ -9,7 +9,7 @@
 #include "ui/editor/scene_recovery.h"
 #include "ui/language.h"
 #include "ui/render/render_scene.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 
 #include <QAction>
@@ -570,7 +570,7 @@ void TestUserSession::wholeSessionInEveryLanguage() {
       },
       20000));
   QTest::keyClick(window_.get(), Qt::Key_Space);
-  QVERIFY(QTest::qWaitFor([&] { return !window_->simulation().latest()->running; }, 10000));
+  QVERIFY(QTest::qWaitFor([&] { return !currentSnapshot()->running; }, 10000));
 
   // Grab the added ball and lift it: the run's state, not an edit.
   const auto paused = window_->simulation().latest();

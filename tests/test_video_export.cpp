@@ -5,7 +5,7 @@
 #include "tests/editor_fixture.h"
 #include "ui/dialogs/video_export.h"
 #include "ui/language.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/video_frames.h"
 
 #include <QComboBox>
@@ -96,7 +96,7 @@ class TestVideoExport : public carom::testing::EditorFixture {
   std::vector<carom::ui::VideoFrame> replayFrames(double from, double to, int fps) {
     const int count = carom::ui::videoFrameCount(from, to, fps);
     auto queue = std::make_shared<carom::ui::VideoFrameQueue>(count);
-    window_->simulation().exportVideo(queue, from, to, fps);
+    window_->simulation().controls().exportVideo(queue, from, to, fps);
     std::vector<carom::ui::VideoFrame> frames;
     // The caller counts the frames that came.
     (void)QTest::qWaitFor(
@@ -139,7 +139,7 @@ void TestVideoExport::framesAreTheRecordedOnesAtOrBefore() {
   QCOMPARE(carom::ui::videoFrameCount(0.0, 1.0, 24), 25);
   QCOMPARE(carom::ui::videoFrameCount(0.5, 0.5, 24), 1);
   auto queue = std::make_shared<carom::ui::VideoFrameQueue>(count);
-  window_->simulation().exportVideo(queue, from, to, fps);
+  window_->simulation().controls().exportVideo(queue, from, to, fps);
   std::vector<carom::ui::VideoFrame> frames;
   QTRY_VERIFY_WITH_TIMEOUT(
       [&] {
@@ -238,7 +238,7 @@ void TestVideoExport::explosionsAreTheRunsCollisions() {
   const QStringList files = frameFiles(with);
   QCOMPARE(files.size(), 25);
   QCOMPARE(frameFiles(without), files);
-  const double step = window_->simulation().latest()->world.timeStep;
+  const double step = currentSnapshot()->world.timeStep;
   int differing = 0;
   for (int k = 0; k < files.size(); ++k) {
     const double moment = k / 24.0;
@@ -310,9 +310,9 @@ void TestVideoExport::cancelStopsAndRemovesTheMp4() {
   QVERIFY(!QFile::exists(file));
   QVERIFY(!exporter.progressDialog());
   // The window goes on: the run runs again, and another export works.
-  const double stoppedAt = window_->simulation().latest()->latestTime;
+  const double stoppedAt = currentSnapshot()->latestTime;
   window_->setRunning(true);
-  QTRY_VERIFY(window_->simulation().latest()->latestTime > stoppedAt);
+  QTRY_VERIFY(currentSnapshot()->latestTime > stoppedAt);
   window_->setRunning(false);
   QSignalSpy again(&exporter, &VideoExport::finished);
   VideoSettings shorter = settings(VideoSettings::Format::Mp4, file);
@@ -340,7 +340,7 @@ void TestVideoExport::cancelLeavesThePngsWritten() {
 
 void TestVideoExport::badInputsAreRefused() {
   runPast(0.3);
-  const double latest = window_->simulation().latest()->latestTime;
+  const double latest = currentSnapshot()->latestTime;
   VideoSettings read;
   read.path = "kept";
   using Format = VideoSettings::Format;
@@ -425,7 +425,7 @@ void TestVideoExport::ffmpegFailingIsSaid() {
 void TestVideoExport::menuPausesAsksAndExports() {
   throwTheBall();
   window_->setRunning(true);
-  QTRY_VERIFY_WITH_TIMEOUT(window_->simulation().latest()->latestTime > 0.3, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(currentSnapshot()->latestTime > 0.3, 30000);
   QTemporaryDir folder;
   QString refusal;
   QString offeredFrom, offeredTo, offeredFps;
@@ -437,7 +437,7 @@ void TestVideoExport::menuPausesAsksAndExports() {
     offeredTo = field("videoTo")->text();
     offeredFps = field("videoFps")->text();
     offeredSize = QSize(field("videoWidth")->text().toInt(), field("videoHeight")->text().toInt());
-    recordedThen = window_->simulation().latest()->latestTime;
+    recordedThen = currentSnapshot()->latestTime;
     field("videoFps")->setText("500");
     dialog->accept();  // refused: stays open and says why
     refusal = dialog->error();
@@ -468,7 +468,7 @@ void TestVideoExport::menuPausesAsksAndExports() {
            qPrintable(offeredTo));
   QVERIFY2(refusal.startsWith("Frames per second: must be a whole number from 1 to 240"),
            qPrintable(refusal));
-  QVERIFY(!window_->simulation().latest()->running);  // paused by the export
+  QVERIFY(!currentSnapshot()->running);  // paused by the export
   const QStringList files = frameFiles(folder.path());
   QCOMPARE(files.size(), 4);  // 0, 0.1, 0.2, 0.3
   QCOMPARE(QImage(QDir(folder.path()).filePath(files.first())).size(), QSize(160, 120));

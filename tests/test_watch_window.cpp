@@ -5,7 +5,7 @@
 #include "tests/editor_fixture.h"
 #include "ui/dialogs/watch_tolerance_dialog.h"
 #include "ui/number_box.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 #include "ui/watch_menu.h"
 

@@ -2,7 +2,7 @@
 
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/number_text.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 
 #include <QInputDialog>
@@ -18,37 +18,37 @@ constexpr double kDefaultThrowLimit = 50.0;
 
 }  // namespace
 
-GrabControl::GrabControl(editor::EditorTools* tools, SimulationController* simulation,
-                         QObject* parent)
-    : QObject(parent), tools_(tools), simulation_(simulation) {
+GrabControl::GrabControl(editor::EditorTools* tools, RunSession* run, QObject* parent)
+    : QObject(parent), tools_(tools), run_(run) {
   bool ok = false;
   const double stored = QSettings().value(kThrowLimitKey, kDefaultThrowLimit).toDouble(&ok);
   throwLimit_ =
       ok && stored >= kMinThrowLimit && stored <= kMaxThrowLimit ? stored : kDefaultThrowLimit;
-  simulation_->setThrowLimit(throwLimit_);
+  run_->controls().setThrowLimit(throwLimit_);
   connect(tools_, &editor::EditorTools::grabStarted, this, [this](int ball) {
     lastStopTime_.reset();
     heldFrom_.reset();
-    const std::shared_ptr<const SimulationSnapshot> shown = simulation_->latest();
+    const std::shared_ptr<const SimulationSnapshot> shown = run_->latest();
     if (shown && !shown->running && ball < int(shown->positions.size()))
       heldFrom_ = Held{shown->positions[ball], shown->velocities[ball]};
-    simulation_->grab(ball);
+    run_->controls().grab(ball);
   });
   connect(tools_, &editor::EditorTools::grabCancelled, this, &GrabControl::cancelGrab);
-  connect(tools_, &editor::EditorTools::grabMoved, simulation_, &SimulationController::moveGrab);
-  connect(tools_, &editor::EditorTools::grabReleased, simulation_,
+  connect(tools_, &editor::EditorTools::grabMoved, &run_->controls(),
+          &SimulationController::moveGrab);
+  connect(tools_, &editor::EditorTools::grabReleased, &run_->controls(),
           &SimulationController::releaseGrab);
 }
 
 void GrabControl::cancelGrab() {
-  const std::shared_ptr<const SimulationSnapshot> shown = simulation_->latest();
+  const std::shared_ptr<const SimulationSnapshot> shown = run_->latest();
   if (heldFrom_ && shown && !shown->running) {
     // Paused, nothing else moved: the ball goes back and is let go as it was.
-    simulation_->moveGrab(heldFrom_->position);
-    simulation_->releaseGrab(heldFrom_->velocity);
+    run_->controls().moveGrab(heldFrom_->position);
+    run_->controls().releaseGrab(heldFrom_->velocity);
   } else {
     // Running, the run went on under the grab; the ball is let go where it is, without a throw.
-    simulation_->releaseGrab(Vec3::Zero());
+    run_->controls().releaseGrab(Vec3::Zero());
   }
   heldFrom_.reset();
 }
@@ -57,7 +57,7 @@ void GrabControl::setThrowLimit(double speed) {
   if (!(speed >= kMinThrowLimit && speed <= kMaxThrowLimit)) return;
   throwLimit_ = speed;
   QSettings().setValue(kThrowLimitKey, speed);
-  simulation_->setThrowLimit(speed);
+  run_->controls().setThrowLimit(speed);
 }
 
 void GrabControl::askThrowLimit(QWidget* parent) {

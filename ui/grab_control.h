@@ -17,14 +17,13 @@ class EditorTools;
 }
 namespace carom::ui {
 
-class SimulationController;
+class RunSession;
 struct SimulationSnapshot;
 
 class GrabControl : public QObject {
   Q_OBJECT
  public:
-  GrabControl(editor::EditorTools* tools, SimulationController* simulation,
-              QObject* parent = nullptr);
+  GrabControl(editor::EditorTools* tools, RunSession* run, QObject* parent = nullptr);
 
   // Simulated m/s; a throw faster than this is cut to it.
   double throwLimit() const { return throwLimit_; }
@@ -47,7 +46,7 @@ class GrabControl : public QObject {
   void cancelGrab();
 
   editor::EditorTools* tools_;
-  SimulationController* simulation_;
+  RunSession* run_;
   double throwLimit_;
   std::optional<double> lastStopTime_;  // the stop last said, so it is said once
   bool throwCapped_ = false;

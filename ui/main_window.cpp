@@ -20,7 +20,7 @@
 #include "ui/help_menu.h"
 #include "ui/render/render_scene.h"
 #include "ui/render/scene_view.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run_controls.h"
 #include "ui/scene_files.h"
 #include "ui/simulation_menu.h"
@@ -49,7 +49,7 @@ using render::SceneView;
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
-      simulation_(std::make_unique<SimulationController>()),
+      simulation_(std::make_unique<RunSession>()),
       document_(new editor::SceneDocument(this)) {
   setAcceptDrops(true);
   view_ = new SceneView;
@@ -63,16 +63,22 @@ MainWindow::MainWindow(QWidget* parent)
   setCentralWidget(centre);
   connect(timeline_, &TimelineBar::frameRequested, this, [this](std::uint64_t frame) {
     runControls_->setRunning(false);
-    simulation_->showFrame(frame);
+    simulation_->controls().showFrame(frame);
   });
-  connect(timeline_, &TimelineBar::memoryBudgetChanged, simulation_.get(),
+  connect(timeline_, &TimelineBar::memoryBudgetChanged, &simulation_->controls(),
           &SimulationController::setRecordingBudget);
   sync_ = new SimulationSync(document_, simulation_.get(), this);
-  connect(sync_, &SimulationSync::restarted, this, [this](std::shared_ptr<const Scene> start) {
-    view_->setScene(std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
-    storyDock_->restart();
-    showSelection();
-  });
+  connect(simulation_.get(), &RunSession::restarted, this,
+          [this](std::uint64_t, std::shared_ptr<const Scene> start) {
+            view_->setScene(
+                std::make_shared<const render::RenderScene>(render::makeRenderScene(*start)));
+            // Another scene or an edit: the plot, the story and the rates of the run before are
+            // not this one's.
+            energyPlot_->clear();
+            storyDock_->restart();
+            status_->restart();
+            showSelection();
+          });
   connect(sync_, &SimulationSync::message, this, &MainWindow::showMessage);
   energyPlot_ = new EnergyPlot;
   energyPlot_->setObjectName("energyPlot");
@@ -105,7 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(tools_, &editor::EditorTools::refused, this, &MainWindow::showMessage);
   grab_ = new GrabControl(tools_, simulation_.get(), this);
   connect(grab_, &GrabControl::message, this, &MainWindow::showMessage);
-  watchAlert_ = new WatchAlert(document_, view_, simulation_.get(), this);
+  watchAlert_ = new WatchAlert(document_, view_, &simulation_->controls(), this);
   watchAlert_->setObjectName("watchAlert");
   // The worker has paused; the control follows.
   connect(watchAlert_, &WatchAlert::stopped, this, [this] { runControls_->setRunning(false); });
@@ -149,7 +155,7 @@ MainWindow::MainWindow(QWidget* parent)
   outlineDock_->raise();
   historyDock->hide();
   buildBars(imageExport, videoExport, editActions, historyDock);
-  simulation_->setRecordingBudget(TimelineBar::memoryBudget());
+  simulation_->controls().setRecordingBudget(TimelineBar::memoryBudget());
   connect(document_, &editor::SceneDocument::sceneChanged, this,
           [this](const editor::SceneChange& change) {
             if (change.world) worldBar_->showWorld();
@@ -160,8 +166,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (followAction_->isChecked()) view_->setFollowedBall(followTarget());
     showSelection();
   });
-  connect(simulation_.get(), &SimulationController::snapshotPublished, this,
-          &MainWindow::showSnapshot);
+  connect(simulation_.get(), &RunSession::snapshotReady, this, &MainWindow::showSnapshot);
   connect(view_, &SceneView::frameRendered, status_, &StatusReadout::countFrame);
   retranslate();
   resize(1280, 800);
@@ -191,7 +196,7 @@ void MainWindow::buildBars(ImageExport* imageExport, VideoExport* videoExport,
   addToolBar(toolsBar);
   // Two rows, so that every control stays visible at 1280 pixels in the longer languages: the
   // tools and the run controls, then the world's settings.
-  runControls_ = new RunControls(simulation_.get(), this);
+  runControls_ = new RunControls(&simulation_->controls(), this);
   connect(runControls_, &RunControls::message, this, &MainWindow::showMessage);
   addToolBar(runControls_);
   addToolBarBreak();
@@ -204,8 +209,8 @@ void MainWindow::buildBars(ImageExport* imageExport, VideoExport* videoExport,
   bar->addMenu(new FileMenu(files_, imageExport, videoExport, this, bar));
   bar->addMenu(new EditMenu(document_->undoStack(), editActions, this, bar));
   toolsBar->addMenuTo(bar);
-  auto* simulationMenu =
-      new SimulationMenu(runControls_, simulation_.get(), sync_, grab_, timeline_, this, bar);
+  auto* simulationMenu = new SimulationMenu(runControls_, &simulation_->controls(), sync_, grab_,
+                                            timeline_, this, bar);
   connect(simulationMenu, &SimulationMenu::accuracyWindowRequested, this,
           [this] { openAccuracyWindow(); });
   connect(simulationMenu, &SimulationMenu::useCurrentStateRequested, this,
@@ -287,15 +292,7 @@ void MainWindow::applySettings(carom::Method method, carom::Integrator integrato
   });
 }
 
-void MainWindow::showSnapshot() {
-  const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->take();
-  if (!snapshot) return;
-  if (snapshot->startNumber != shownStart_) {
-    // Another scene or an edit: the plot and the rates of the run before are not this one's.
-    shownStart_ = snapshot->startNumber;
-    energyPlot_->clear();
-    status_->restart();
-  }
+void MainWindow::showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot) {
   view_->setBallPositions(snapshot->positions);
   view_->addExplosions(snapshot->collisions);
   energyPlot_->add(*snapshot);
@@ -355,6 +352,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 void MainWindow::useCurrentState() {
+  // Of the current start only: a snapshot of the run before an edit is not this scene's state.
   const std::shared_ptr<const SimulationSnapshot> snapshot = simulation_->latest();
   const Scene& scene = document_->scene();
   if (!snapshot || snapshot->positions.size() != scene.balls.size()) return;

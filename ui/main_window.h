@@ -37,7 +37,7 @@ class WorldToolBar;
 class SoundThread;
 struct SimulationSnapshot;
 class EnergyPlot;
-class SimulationController;
+class RunSession;
 class SimulationSync;
 }  // namespace carom::ui
 namespace carom::render {
@@ -72,7 +72,7 @@ class MainWindow : public QMainWindow {
   editor::PropertiesDock* propertiesDock() const { return propertiesDock_; }
   void showMessage(const QString& message);
 
-  SimulationController& simulation() { return *simulation_; }
+  RunSession& simulation() { return *simulation_; }
   // As the Run/Pause control does.
   void setRunning(bool running);
   QWidget* view() const;
@@ -101,13 +101,12 @@ class MainWindow : public QMainWindow {
   void updateTitle();
   int followTarget() const;
   void useCurrentState();
-  void showSnapshot();
+  void showSnapshot(std::shared_ptr<const SimulationSnapshot> snapshot);
   void applySettings(carom::Method method, carom::Integrator integrator, double timeStep);
 
-  std::unique_ptr<SimulationController> simulation_;
+  std::unique_ptr<RunSession> simulation_;  // the live run: its starts, snapshots and controls
   render::SceneView* view_ = nullptr;
   EnergyPlot* energyPlot_ = nullptr;
-  std::uint64_t shownStart_ = 0;        // the start of the run whose snapshots the window shows
   BallStoryDock* storyDock_ = nullptr;  // the selected balls' plot, trails and arrows
   SoundThread* sound_ = nullptr;
   editor::SceneDocument* document_ = nullptr;

@@ -5,7 +5,7 @@
 #include "ui/editor/scene_document.h"
 #include "ui/editor/validation_text.h"
 #include "ui/run/call_queue.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/simulation_snapshot.h"
 
 #include <chrono>
@@ -14,9 +14,8 @@
 
 namespace carom::ui {
 
-SimulationSync::SimulationSync(editor::SceneDocument* document, SimulationController* simulation,
-                               QObject* parent)
-    : QObject(parent), document_(document), simulation_(simulation), calls_(new CallQueue(this)) {
+SimulationSync::SimulationSync(editor::SceneDocument* document, RunSession* run, QObject* parent)
+    : QObject(parent), document_(document), run_(run), calls_(new CallQueue(this)) {
   connect(document_, &editor::SceneDocument::sceneChanged, this, &SimulationSync::documentChanged);
   // The thread making a start reads the document: it must not change under it.
   connect(document_, &editor::SceneDocument::aboutToChange, this, &SimulationSync::finishStart,
@@ -31,17 +30,14 @@ void SimulationSync::documentChanged(const editor::SceneChange& change) {
   if (!change.objectsChanged()) {
     // World settings change live, from the running state on; the simulation decides what that
     // rebuilds.
-    if (change.world) simulation_->setWorld(document_->scene().world);
+    if (change.world) run_->controls().setWorld(document_->scene().world);
     return;
   }
   finishStart();
   const bool keepRunningState = applyToRunningState_ && start_ && !change.replaced;
   std::shared_ptr<const Scene> runningFrom = keepRunningState ? start_ : nullptr;
-  // The run's state is of use only if it is of the last start: the worker may not have answered
-  // that restart yet.
-  std::shared_ptr<const SimulationSnapshot> snapshot =
-      keepRunningState ? simulation_->latest() : nullptr;
-  if (snapshot && snapshot->startNumber != startNumber_) snapshot.reset();
+  // Of the last start only (RunSession): the worker may not have answered that restart yet.
+  std::shared_ptr<const SimulationSnapshot> snapshot = keepRunningState ? run_->latest() : nullptr;
   const Scene& edited = document_->scene();
   if (edited.balls.size() < kBackgroundBalls) {
     restart(makeStart(edited, change, runningFrom, snapshot));
@@ -77,8 +73,7 @@ void SimulationSync::restart(Start start) {
         tr("The edit does not fit the running state (%1): restarted from the edited scene.")
             .arg(editor::validationText(*start.unfitRunningState, *start.scene)));
   start_ = std::move(start.scene);
-  startNumber_ = simulation_->loadScene(start_);
-  emit restarted(start_);
+  run_->start(start_);
 }
 
 // The edited scene, with every ball the edit left alone where the running simulation has it

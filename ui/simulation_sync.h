@@ -11,7 +11,6 @@
 #include <QString>
 
 #include <cstddef>
-#include <cstdint>
 #include <future>
 #include <memory>
 #include <optional>
@@ -23,26 +22,24 @@ struct SceneChange;
 namespace carom::ui {
 
 class CallQueue;
-class SimulationController;
+class RunSession;
 struct SimulationSnapshot;
 
 class SimulationSync : public QObject {
   Q_OBJECT
  public:
   // From this many balls on, the scene a restart starts from is made on a thread of its own, and
-  // `restarted` follows when it is made: copying a million balls took the GUI thread 0.9-1.5 s
+  // the restart follows when it is made: copying a million balls took the GUI thread 0.9-1.5 s
   // at every edit. The document waits for it before it changes again.
   static constexpr std::size_t kBackgroundBalls = 50'000;
 
-  SimulationSync(editor::SceneDocument* document, SimulationController* simulation,
-                 QObject* parent = nullptr);
+  // Restarts `run` (its restarted() says so) with each change of the document's objects.
+  SimulationSync(editor::SceneDocument* document, RunSession* run, QObject* parent = nullptr);
   ~SimulationSync() override;
 
   void setApplyToRunningState(bool on) { applyToRunningState_ = on; }
 
  signals:
-  // The simulation restarted from `start` (the view draws its objects).
-  void restarted(std::shared_ptr<const carom::Scene> start);
   void message(const QString& text);
 
  private:
@@ -64,10 +61,9 @@ class SimulationSync : public QObject {
   void restart(Start start);
 
   editor::SceneDocument* document_;
-  SimulationController* simulation_;
+  RunSession* run_;
   bool applyToRunningState_ = false;
   std::shared_ptr<const Scene> start_;  // the scene the simulation last started from
-  std::uint64_t startNumber_ = 0;       // the controller's number for start_
   std::future<Start> pendingStart_;     // being made from the document, on its own thread
   CallQueue* calls_;                    // a child: the thread's notice that its start is made
 };

@@ -39,6 +39,8 @@ void StatusReadout::countFrame() {
 }
 
 void StatusReadout::restart() {
+  // The snapshot held is of the run before: the line keeps its text until the new run's first.
+  latest_.reset();
   rateClock_.restart();
   lastCollisionCount_ = 0;
   lastCollisionTime_ = 0.0;

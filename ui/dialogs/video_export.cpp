@@ -2,7 +2,7 @@
 
 #include "ui/dialogs/image_export.h"
 #include "ui/editor/number_text.h"
-#include "ui/run/simulation_controller.h"
+#include "ui/run/run_session.h"
 #include "ui/run/video_frames.h"
 
 #include <QComboBox>
@@ -172,11 +172,11 @@ void VideoExportDialog::accept() {
   QDialog::accept();
 }
 
-VideoExport::VideoExport(render::SceneView* view, SimulationController* simulation,
-                         QWidget* dialogParent, QObject* parent)
+VideoExport::VideoExport(render::SceneView* view, RunSession* run, QWidget* dialogParent,
+                         QObject* parent)
     : QObject(parent),
       view_(view),
-      simulation_(simulation),
+      run_(run),
       dialogParent_(dialogParent),
       timer_(new QTimer(this)) {
   timer_->setInterval(kPumpIntervalMilliseconds);
@@ -226,7 +226,7 @@ QString VideoExport::check(const VideoSettings& settings, double latestTime, boo
 bool VideoExport::exportVideo() {
   if (busy()) return false;
   emit pauseRequested();
-  const std::shared_ptr<const SimulationSnapshot> latest = simulation_->latest();
+  const std::shared_ptr<const SimulationSnapshot> latest = run_->latest();
   const double latestTime = latest ? latest->latestTime : 0.0;
   const bool ffmpegFound = !ffmpeg().isEmpty();
   QSettings stored;
@@ -280,7 +280,7 @@ QString VideoExport::start(const VideoSettings& settings) {
 QString VideoExport::begin(const VideoSettings& settings, bool interactive) {
   if (busy()) return tr("A video is being exported already.");
   emit pauseRequested();
-  const std::shared_ptr<const SimulationSnapshot> latest = simulation_->latest();
+  const std::shared_ptr<const SimulationSnapshot> latest = run_->latest();
   if (!latest) return tr("There is no run to export yet.");
   const QString ffmpegPath = ffmpeg();
   const QString error = check(settings, latest->latestTime, !ffmpegPath.isEmpty());
@@ -346,7 +346,7 @@ QString VideoExport::begin(const VideoSettings& settings, bool interactive) {
   }
 
   queue_ = std::make_shared<VideoFrameQueue>(total_);
-  simulation_->exportVideo(queue_, settings.from, settings.to, settings.fps);
+  run_->controls().exportVideo(queue_, settings.from, settings.to, settings.fps);
   state_ = State::Writing;
   interactive_ = interactive;
   progress_ = new QProgressDialog(tr("Exporting %n video frame(s)…", nullptr, total_), tr("Cancel"),

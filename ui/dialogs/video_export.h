@@ -26,7 +26,7 @@ class QTimer;
 
 namespace carom::ui {
 
-class SimulationController;
+class RunSession;
 class VideoFrameQueue;
 struct VideoFrame;
 
@@ -80,7 +80,7 @@ class VideoExport : public QObject {
   Q_OBJECT
  public:
   // Dialogs open over `dialogParent`.
-  VideoExport(render::SceneView* view, SimulationController* simulation, QWidget* dialogParent,
+  VideoExport(render::SceneView* view, RunSession* run, QWidget* dialogParent,
               QObject* parent = nullptr);
   ~VideoExport() override;
 
@@ -132,7 +132,7 @@ class VideoExport : public QObject {
   QString ffmpegError();
 
   render::SceneView* view_;
-  SimulationController* simulation_;
+  RunSession* run_;
   QWidget* dialogParent_;
   State state_ = State::Idle;
   bool pumping_ = false;

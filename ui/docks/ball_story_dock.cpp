@@ -151,11 +151,7 @@ void BallStoryDock::watchSelection() {
 }
 
 void BallStoryDock::add(std::shared_ptr<const SimulationSnapshot> snapshot) {
-  if (!snapshot || (staleStartsUpTo_ && snapshot->startNumber <= *staleStartsUpTo_)) return;
-  if (startNumber_ != snapshot->startNumber) {
-    story_.clear();
-    startNumber_ = snapshot->startNumber;
-  }
+  if (!snapshot) return;
   if (story_.lastTime() != snapshot->time) pinnedTime_.reset();
   gravity_ = snapshot->world.gravity;
   story_.record(snapshot->time, snapshot->positions, snapshot->velocities);
@@ -187,7 +183,6 @@ void BallStoryDock::truncateAfter(double time) {
 }
 
 void BallStoryDock::restart() {
-  if (startNumber_) staleStartsUpTo_ = startNumber_;
   story_.clear();
   pinnedTime_.reset();
   // Its positions belong to the start before: balls selected now wait for the new start's.

@@ -16,7 +16,6 @@
 #include <QPointF>
 #include <QTimer>
 
-#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,8 +53,9 @@ class BallStoryDock : public QDockWidget {
                 QWidget* parent = nullptr);
   ~BallStoryDock() override;
 
-  // Records the watched balls' states; a snapshot of another start (a new or edited scene)
-  // starts the story over, one of an earlier time (Reset) truncates it there.
+  // Records the watched balls' states from a snapshot of the current start (RunSession: the
+  // window calls restart() when a new one begins); one of an earlier time (Reset) truncates the
+  // story there.
   void add(std::shared_ptr<const SimulationSnapshot> snapshot);
   // The timeline: shows the story at `time` (the plot's cursor, the trails up to it, the arrows
   // at the state then). Kept until a snapshot of another time arrives, or showLatest().
@@ -94,10 +94,6 @@ class BallStoryDock : public QDockWidget {
   editor::SceneDocument* document_;
   render::SceneView* view_;
   BallStory story_;
-  std::optional<std::uint64_t> startNumber_;
-  // Starts are numbered up: after a restart, a snapshot of this start or an older one still on
-  // its way to the window is of the run before, and is not recorded.
-  std::optional<std::uint64_t> staleStartsUpTo_;
   std::optional<double> pinnedTime_;
   std::shared_ptr<const SimulationSnapshot> latest_;
   Vec3 gravity_ = Vec3::Zero();

@@ -39,10 +39,9 @@ void SimulationController::post(std::function<void()> call) {
   calls_->post(std::move(call));
 }
 
-std::uint64_t SimulationController::loadScene(std::shared_ptr<const carom::Scene> scene) {
-  const std::uint64_t number = ++loads_;
+void SimulationController::loadScene(std::shared_ptr<const carom::Scene> scene,
+                                     std::uint64_t number) {
   post([worker = worker_, scene = std::move(scene), number] { worker->loadScene(*scene, number); });
-  return number;
 }
 void SimulationController::setRunning(bool running) {
   post([worker = worker_, running] { worker->setRunning(running); });

@@ -1,6 +1,7 @@
 #pragma once
 // The GUI's handle on the simulation: owns the worker thread and forwards every request to the
-// worker as a queued call (CallQueue), so nothing here ever waits on the physics.
+// worker as a queued call (CallQueue), so nothing here ever waits on the physics. Starting a run
+// and reading its snapshots are its owner's (RunSession), which numbers the starts.
 
 #include "sim/measure/run_watch.h"
 #include "sim/model/scene.h"
@@ -27,8 +28,6 @@ class SimulationController : public QObject {
   explicit SimulationController(QObject* parent = nullptr);
   ~SimulationController() override;
 
-  // Stands at the start of `scene` (valid), paused; snapshots of it carry the number returned.
-  std::uint64_t loadScene(std::shared_ptr<const carom::Scene> scene);
   void setRunning(bool running);
   void stepOnce();
   void reset();
@@ -47,15 +46,19 @@ class SimulationController : public QObject {
   // The run watch's checks (valid), from the next step on.
   void setWatchSettings(const carom::WatchSettings& settings);
 
+ signals:
+  // A new snapshot is in the exchange, for RunSession to take.
+  void snapshotPublished();
+
+ private:
+  friend class RunSession;
+  // Stands at the start of `scene` (valid), paused; snapshots of it carry `number`.
+  void loadScene(std::shared_ptr<const carom::Scene> scene, std::uint64_t number);
   // The most recent snapshot, or null before the first; never waits on the physics.
   std::shared_ptr<const SimulationSnapshot> latest() const { return exchange_.latest(); }
   // The same, marking it shown: the worker announces the next one.
   std::shared_ptr<const SimulationSnapshot> take() { return exchange_.take(); }
 
- signals:
-  void snapshotPublished();
-
- private:
   // Tests hold the physics thread busy through post(), as a very long batch of steps would.
   friend class SimulationControllerTestAccess;
   void post(std::function<void()> call);
@@ -63,8 +66,7 @@ class SimulationController : public QObject {
   SnapshotExchange exchange_;
   static constexpr std::uint64_t kNoFrame = ~std::uint64_t(0);
   std::atomic<std::uint64_t> pendingFrame_{kNoFrame};
-  QThread* thread_;  // a child named "physics"
-  std::uint64_t loads_ = 0;
+  QThread* thread_;           // a child named "physics"
   SimulationWorker* worker_;  // on thread_, deleted when it finishes
   CallQueue* calls_;          // the worker's child: runs the posted calls on thread_
 };

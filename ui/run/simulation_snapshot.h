@@ -16,7 +16,7 @@
 namespace carom::ui {
 
 struct SimulationSnapshot {
-  std::uint64_t startNumber = 0;  // which start the run began from (SimulationController)
+  std::uint64_t startNumber = 0;  // which start the run began from (RunSession)
   double time = 0.0;
   std::vector<Vec3> positions;
   std::vector<Vec3> velocities;  // same order
