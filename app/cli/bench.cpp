@@ -1,6 +1,6 @@
 #include "app/cli/bench.h"
 
-#include "app/cli/cli.h"
+#include "app/cli/exit_code.h"
 #include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 

@@ -1,6 +1,6 @@
 #include "app/cli/file_bench.h"
 
-#include "app/cli/cli.h"
+#include "app/cli/exit_code.h"
 #include "sim/io/scene_file.h"
 #include "sim/model/scene_builders.h"
 #include "sim/simulation.h"

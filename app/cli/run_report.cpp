@@ -2,7 +2,7 @@
 
 #include "app/cli/method_report.h"
 
-#include "app/cli/cli.h"
+#include "app/cli/exit_code.h"
 #include "sim/io/atomic_file.h"
 #include "sim/measure/measures.h"
 #include "sim/measure/run_watch.h"

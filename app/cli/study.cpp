@@ -1,6 +1,6 @@
 #include "app/cli/study.h"
 
-#include "app/cli/cli.h"
+#include "app/cli/exit_code.h"
 #include "sim/measure/accuracy_study.h"
 #include "ui/run/accuracy_study_runner.h"
 
