@@ -66,7 +66,11 @@ class TestMethodChoice : public QObject {
     QVERIFY(choice.pick().energyErrorPerSecond <= loose.energyPerSecond);
     QVERIFY(choice.pick().penetrationFraction <= loose.penetrationFraction);
     QVERIFY(choice.pick().penetrationFraction > 0.0);  // it does overlap, within the tolerance
-    QVERIFY(choice.candidates.front().costPerSecond > 2.0 * choice.pick().costPerSecond);
+    // Costs are measured: under the sanitizers (scripts/sanitize.sh sets CAROM_SANITIZER_RUN)
+    // they are the instrumented code's, which slows the methods unevenly, so the margin is
+    // checked in the plain suite only.
+    if (!qEnvironmentVariableIsSet("CAROM_SANITIZER_RUN"))
+      QVERIFY(choice.candidates.front().costPerSecond > 2.0 * choice.pick().costPerSecond);
     // The budget is checked between slices, so a slice may overrun it, never by the whole pilot.
     QVERIFY(choice.pilotSeconds <=
             2.0 * carom::kPilotShare * choice.expectedRunSeconds() + carom::kPilotFloorSeconds);
