@@ -10,6 +10,13 @@
 
 namespace carom::testing {
 
+// Under the sanitizers (scripts/sanitize.sh sets CAROM_SANITIZER_RUN) a few cases leave out what
+// instrumentation makes slow or meaningless: runs of thousands of simulated seconds, margins
+// between measured costs. The plain suite runs them whole.
+inline bool sanitizerRun() {
+  return qEnvironmentVariableIsSet("CAROM_SANITIZER_RUN");
+}
+
 // An empty elastic world under 9.81 m/s^2 downwards.
 inline Scene elasticSceneWithGravity() {
   Scene s;

@@ -6,6 +6,7 @@
 #include "sim/io/scene_file.h"
 #include "sim/measure/method_choice.h"
 #include "sim/model/scene_builders.h"
+#include "tests/scene_helpers.h"
 
 #include <QtTest>
 
@@ -66,10 +67,9 @@ class TestMethodChoice : public QObject {
     QVERIFY(choice.pick().energyErrorPerSecond <= loose.energyPerSecond);
     QVERIFY(choice.pick().penetrationFraction <= loose.penetrationFraction);
     QVERIFY(choice.pick().penetrationFraction > 0.0);  // it does overlap, within the tolerance
-    // Costs are measured: under the sanitizers (scripts/sanitize.sh sets CAROM_SANITIZER_RUN)
-    // they are the instrumented code's, which slows the methods unevenly, so the margin is
-    // checked in the plain suite only.
-    if (!qEnvironmentVariableIsSet("CAROM_SANITIZER_RUN"))
+    // Costs are measured: under the sanitizers they are the instrumented code's, which slows
+    // the methods unevenly.
+    if (!carom::testing::sanitizerRun())
       QVERIFY(choice.candidates.front().costPerSecond > 2.0 * choice.pick().costPerSecond);
     // The budget is checked between slices, so a slice may overrun it, never by the whole pilot.
     QVERIFY(choice.pilotSeconds <=

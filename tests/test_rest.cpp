@@ -33,11 +33,11 @@ Scene floorScene(double restitution) {
   return s;
 }
 
-// Runs of thousands of simulated seconds repeat the same few paths millions of times. Under the
-// sanitizers (scripts/sanitize.sh sets CAROM_SANITIZER_RUN) they took 300 of test_rest's 455 s
-// and check nothing the shorter cases do not run through; the plain suite runs them.
+// Runs of thousands of simulated seconds repeat the same few paths millions of times: under the
+// sanitizers they took 300 of test_rest's 455 s and check nothing the shorter cases do not run
+// through.
 bool skipLongRun() {
-  return qEnvironmentVariableIsSet("CAROM_SANITIZER_RUN");
+  return carom::testing::sanitizerRun();
 }
 
 }  // namespace
