@@ -61,4 +61,46 @@ std::vector<std::string_view> integratorNames() {
   return namesOf(kIntegrators);
 }
 
+ContactFriction objectFriction(const World& world, const ObjectInfo& object) {
+  return {object.friction.value_or(world.friction),
+          object.rollingResistance.value_or(world.rollingResistance),
+          object.spinningFriction.value_or(world.spinningFriction)};
+}
+
+ContactFriction contactFriction(const World& world, const ObjectInfo& a, const ObjectInfo& b) {
+  return larger(objectFriction(world, a), objectFriction(world, b));
+}
+
+namespace {
+
+bool ownFriction(const ObjectInfo& object) {
+  for (const std::optional<double>& value :
+       {object.friction, object.rollingResistance, object.spinningFriction})
+    if (value && *value != 0.0) return true;
+  return false;
+}
+
+template <typename Objects>
+bool anyOwnFriction(const Objects& objects) {
+  for (const auto& object : objects)
+    if (ownFriction(object)) return true;
+  return false;
+}
+
+}  // namespace
+
+bool hasFrictionCoefficients(const Scene& scene) {
+  const World& w = scene.world;
+  return w.friction != 0.0 || w.rollingResistance != 0.0 || w.spinningFriction != 0.0 ||
+         anyOwnFriction(scene.planes) || anyOwnFriction(scene.cylinders) ||
+         anyOwnFriction(scene.boxes) || anyOwnFriction(scene.balls);
+}
+
+bool usesFriction(const Scene& scene) {
+  if (hasFrictionCoefficients(scene) || scene.world.tangentialRestitution != 0.0) return true;
+  for (const Ball& ball : scene.balls)
+    if (!ball.angularVelocity.isZero(0.0)) return true;
+  return false;
+}
+
 }  // namespace carom

@@ -29,6 +29,11 @@ std::vector<std::string_view> integratorNames();
 // a load/save round trip without the physics knowing JSON.
 struct ObjectInfo {
   std::optional<double> restitution;  // none: the world's value
+  // Coulomb friction μ, rolling resistance μ_r and spinning friction μ_sp (docs/physics.md,
+  // "Friction and spin"); none: the world's value.
+  std::optional<double> friction;
+  std::optional<double> rollingResistance;
+  std::optional<double> spinningFriction;
   std::string name;
   std::string color;  // "#rrggbb", or empty for the default
   std::string extra;
@@ -38,6 +43,7 @@ struct ObjectInfo {
 struct Ball : ObjectInfo {
   Vec3 position = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
+  Vec3 angularVelocity = Vec3::Zero();  // rad/s; a uniform solid sphere, moment 2/5·m·r²
   double radius = 1.0;
   double mass = 1.0;
   friend bool operator==(const Ball&, const Ball&) = default;
@@ -89,6 +95,12 @@ struct World {
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);
   double timeStep = 1.0 / 60.0;
   double restitution = 1.0;
+  double friction = 0.0;
+  double rollingResistance = 0.0;
+  double spinningFriction = 0.0;
+  // Walton's β: an impact turns the contact point's tangential velocity into at most -β times
+  // itself (0: it at most stops the slip; 1: a perfectly rough, elastic reversal).
+  double tangentialRestitution = 0.0;
   Method method = Method::Exact;
   Integrator integrator = Integrator::SymplecticEuler;
   // Method "auto": the window and carom-cli choose method, integrator and step for this
@@ -115,5 +127,28 @@ inline double contactRestitution(const World& world, const ObjectInfo& a, const 
   const double eb = b.restitution.value_or(world.restitution);
   return ea < eb ? ea : eb;
 }
+
+// A contact's friction coefficients: the larger of the two objects' values (MuJoCo's rule), each
+// defaulting to the world's.
+struct ContactFriction {
+  double sliding = 0.0;
+  double rolling = 0.0;
+  double spinning = 0.0;
+  friend bool operator==(const ContactFriction&, const ContactFriction&) = default;
+};
+ContactFriction contactFriction(const World& world, const ObjectInfo& a, const ObjectInfo& b);
+// An object's own coefficients, each defaulting to the world's.
+ContactFriction objectFriction(const World& world, const ObjectInfo& object);
+inline ContactFriction larger(const ContactFriction& a, const ContactFriction& b) {
+  return {a.sliding > b.sliding ? a.sliding : b.sliding,
+          a.rolling > b.rolling ? a.rolling : b.rolling,
+          a.spinning > b.spinning ? a.spinning : b.spinning};
+}
+
+// Whether the scene asks for friction or spin: any non-zero friction coefficient, β or angular
+// velocity (scene format version 3). A scene that does not runs today's frictionless physics.
+bool usesFriction(const Scene& scene);
+// Whether any contact of the scene can have friction: a coefficient above zero somewhere.
+bool hasFrictionCoefficients(const Scene& scene);
 
 }  // namespace carom
