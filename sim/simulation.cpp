@@ -16,7 +16,7 @@ Simulation::Simulation(const Scene& scene)
   reservePrefaulted(state, scene.balls.size());
   double mass = 0.0, twiceKinetic = 0.0;
   for (const Ball& ball : scene.balls) {
-    state.push_back({ball.position, ball.velocity, false});
+    state.push_back({ball.position, ball.velocity, false, ball.angularVelocity});
     mass += ball.mass;
     twiceKinetic += ball.mass * ball.velocity.squaredNorm();
   }
@@ -81,9 +81,14 @@ void Simulation::setWorld(const World& world) {
   // Resting balls rested against the old gravity: let them all settle again.
   if (world.gravity != world_.gravity)
     for (BallState& ball : current) ball.resting = false;
-  if (world.restitution != world_.restitution) {
+  const bool frictionChanged = world.friction != world_.friction ||
+                               world.rollingResistance != world_.rollingResistance ||
+                               world.spinningFriction != world_.spinningFriction ||
+                               world.tangentialRestitution != world_.tangentialRestitution;
+  if (world.restitution != world_.restitution || frictionChanged) {
     auto bodies = std::make_shared<Bodies>(*bodies_);
     bodies->setWorldRestitution(world.restitution);
+    bodies->setWorldFriction(world);
     bodies_ = std::move(bodies);
   }
   world_ = world;
@@ -106,8 +111,20 @@ std::vector<Vec3> Simulation::velocities() const {
   return out;
 }
 
+std::vector<Vec3> Simulation::angularVelocities() const {
+  std::vector<Vec3> out;
+  for (const BallState& s : state()) out.push_back(s.angularVelocity);
+  return out;
+}
+
 double Simulation::kineticEnergy() const {
-  return carom::kineticEnergy(*bodies_, velocities());
+  const std::vector<BallState> now = state();
+  double translation = 0.0, rotation = 0.0;
+  for (int i = 0; i < ballCount(); ++i) {
+    translation += ballKineticEnergy(bodies_->mass[i], now[i].velocity);
+    rotation += ballRotationalEnergy(bodies_->mass[i], bodies_->radius[i], now[i].angularVelocity);
+  }
+  return translation + rotation;
 }
 
 double Simulation::potentialEnergy() const {

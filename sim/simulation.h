@@ -53,7 +53,9 @@ class Simulation {
   std::vector<BallState> state() const;
   std::vector<Vec3> positions() const;
   std::vector<Vec3> velocities() const;
+  std::vector<Vec3> angularVelocities() const;
 
+  // Of translation and rotation.
   double kineticEnergy() const;
   double potentialEnergy() const;  // relative to the origin: the sum of -m g . p
   double totalEnergy() const { return kineticEnergy() + potentialEnergy(); }

@@ -547,16 +547,16 @@ class TestCli : public QObject {
     QList<QByteArray> lines = text.split('\n');
     lines.removeLast();  // after the final newline
     QVERIFY(!lines.isEmpty());
-    QCOMPARE(lines.takeFirst(), QByteArray("time,ball,x,y,z,vx,vy,vz"));
+    QCOMPARE(lines.takeFirst(), QByteArray("time,ball,x,y,z,vx,vy,vz,wx,wy,wz"));
     QVERIFY(!lines.isEmpty());
     QCOMPARE(lines.size() % ballCount, 0);
     if (samples > 0) QCOMPARE(lines.size(), samples * ballCount);
 
-    // rows[i] = {time, ball, x, y, z, vx, vy, vz}
+    // rows[i] = {time, ball, x, y, z, vx, vy, vz, wx, wy, wz}
     QList<QList<double>> rows;
     for (const QByteArray& line : lines) {
       const QList<QByteArray> fields = line.split(',');
-      QVERIFY2(fields.size() == 8, line.constData());
+      QVERIFY2(fields.size() == 11, line.constData());
       QList<double> row;
       for (const QByteArray& field : fields) {
         bool ok = false;

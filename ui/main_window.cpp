@@ -363,6 +363,7 @@ void MainWindow::useCurrentState() {
     values.balls.push_back(scene.balls[i]);
     values.balls.back().position = snapshot->positions[i];
     values.balls.back().velocity = snapshot->velocities[i];
+    values.balls.back().angularVelocity = snapshot->angularVelocities[i];
   }
   const QString error = document_->editObjects(balls, values, tr("Use Current State as Initial"));
   if (!error.isEmpty()) showMessage(error);

@@ -85,17 +85,19 @@ SimulationSync::Start SimulationSync::makeStart(
     const std::shared_ptr<const SimulationSnapshot>& snapshot) {
   if (!runningFrom) return {std::make_shared<const Scene>(edited), {}};
   // The run's state in the order of the scene before this change.
-  std::vector<Vec3> positions, velocities;
+  std::vector<Vec3> positions, velocities, angularVelocities;
   if (snapshot) {
     positions = snapshot->positions;
     velocities = snapshot->velocities;
+    angularVelocities = snapshot->angularVelocities;
   } else {
     for (const Ball& ball : runningFrom->balls) {
       positions.push_back(ball.position);
       velocities.push_back(ball.velocity);
+      angularVelocities.push_back(ball.angularVelocity);
     }
   }
-  Scene start = editor::withRunningBalls(edited, change, positions, velocities);
+  Scene start = editor::withRunningBalls(edited, change, positions, velocities, angularVelocities);
   if (const std::vector<ValidationError> errors = validateScene(start, 1); !errors.empty())
     return {std::make_shared<const Scene>(edited), errors.front()};
   return {std::make_shared<const Scene>(std::move(start)), {}};

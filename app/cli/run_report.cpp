@@ -176,8 +176,9 @@ bool writeTrajectoryRows(io::AtomicFile& file, double time, const std::vector<Ba
   for (int i = 0; i < static_cast<int>(state.size()); ++i) {
     const Vec3& p = state[i].position;
     const Vec3& v = state[i].velocity;
+    const Vec3& w = state[i].angularVelocity;
     rows += QByteArray::number(time, 'g', 17) + ',' + QByteArray::number(i);
-    for (double x : {p.x(), p.y(), p.z(), v.x(), v.y(), v.z()})
+    for (double x : {p.x(), p.y(), p.z(), v.x(), v.y(), v.z(), w.x(), w.y(), w.z()})
       rows += ',' + QByteArray::number(x, 'g', 17);
     rows += '\n';
   }
@@ -216,6 +217,7 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
   for (const BallState& s : sim.state())
     balls.append(QJsonObject{{"position", vectorJson(s.position)},
                              {"velocity", vectorJson(s.velocity)},
+                             {"angularVelocity", vectorJson(s.angularVelocity)},
                              {"resting", s.resting}});
   QJsonArray model;
   for (const std::string& note : sim.modelNotes()) model.append(QString::fromStdString(note));
@@ -334,8 +336,9 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
   QElapsedTimer measuring;
   measuring.start();
   result.initialEnergy = sim.totalEnergy();
-  if (trajectory.isOpen() && (!trajectory.write(QByteArray("time,ball,x,y,z,vx,vy,vz\n")) ||
-                              !writeTrajectoryRows(trajectory, 0.0, sim.state())))
+  if (trajectory.isOpen() &&
+      (!trajectory.write(QByteArray("time,ball,x,y,z,vx,vy,vz,wx,wy,wz\n")) ||
+       !writeTrajectoryRows(trajectory, 0.0, sim.state())))
     return trajectoryFailed(trajectory, err);
   result.measureSeconds += measuring.nsecsElapsed() * 1e-9;
 

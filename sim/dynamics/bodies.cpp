@@ -31,6 +31,31 @@ Bodies makeBodies(const Scene& scene) {
     bodies.maxRadius = std::max(bodies.maxRadius, ball.radius);
   }
   bodies.setWorldRestitution(scene.world.restitution);
+  // The objects' own friction, kept only when one of them has any.
+  bool anyOwn = false;
+  const auto scan = [&](const auto& objects) {
+    for (const ObjectInfo& object : objects)
+      for (const std::optional<double>& value :
+           {object.friction, object.rollingResistance, object.spinningFriction}) {
+        anyOwn = anyOwn || value.has_value();
+        bodies.ownRough = bodies.ownRough || value.value_or(0.0) > 0.0;
+      }
+  };
+  const auto keep = [&](const auto& objects, std::vector<Bodies::OwnFriction>& values) {
+    for (const ObjectInfo& object : objects)
+      values.push_back({object.friction, object.rollingResistance, object.spinningFriction});
+  };
+  scan(scene.planes);
+  scan(scene.cylinders);
+  scan(scene.boxes);
+  scan(scene.balls);
+  if (anyOwn) {
+    keep(scene.planes, bodies.planeOwnFriction);
+    keep(scene.cylinders, bodies.cylinderOwnFriction);
+    keep(scene.boxes, bodies.boxOwnFriction);
+    keep(scene.balls, bodies.ownFriction);
+  }
+  bodies.setWorldFriction(scene.world);
   return bodies;
 }
 
@@ -46,6 +71,27 @@ void Bodies::setWorldRestitution(double worldRestitution) {
   resolve(cylinderOwnRestitution, cylinderRestitution);
   resolve(boxOwnRestitution, boxRestitution);
   resolve(ownRestitution, restitution);
+}
+
+void Bodies::setWorldFriction(const World& world) {
+  tangentialRestitution = world.tangentialRestitution;
+  rough = ownRough || world.friction != 0.0 || world.rollingResistance != 0.0 ||
+          world.spinningFriction != 0.0;
+  const auto resolve = [&](const std::vector<OwnFriction>& own, std::size_t count,
+                           std::vector<ContactFriction>& resolved) {
+    resolved.clear();
+    if (!rough) return;
+    for (std::size_t k = 0; k < count; ++k) {
+      const OwnFriction o = own.empty() ? OwnFriction{} : own[k];
+      resolved.push_back({o.sliding.value_or(world.friction),
+                          o.rolling.value_or(world.rollingResistance),
+                          o.spinning.value_or(world.spinningFriction)});
+    }
+  };
+  resolve(planeOwnFriction, planes.size(), planeFriction);
+  resolve(cylinderOwnFriction, cylinders.size(), cylinderFriction);
+  resolve(boxOwnFriction, boxes.size(), boxFriction);
+  resolve(ownFriction, radius.size(), friction);
 }
 
 }  // namespace carom

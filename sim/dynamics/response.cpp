@@ -1,5 +1,7 @@
 #include "sim/dynamics/response.h"
 
+#include <Eigen/Geometry>  // cross products
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,6 +45,46 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
   }
   v = tangential + separation * n;
   return addedEnergy;
+}
+
+namespace {
+
+// The change in the contact point's tangential velocity u that Walton's law asks for, -(1+β)·u,
+// cut to the Coulomb limit: for solid spheres a tangential impulse J changes u by 7/2·J·w (w the
+// inverse mass, summed over a pair), and |J| ≤ μ·(normal impulse) = μ·normalChange/w.
+Vec3 slipChange(const Vec3& u, const Vec3& n, double normalChange, const ImpactFriction& law) {
+  const Vec3 tangential = u - u.dot(n) * n;
+  Vec3 change = -(1.0 + law.tangentialRestitution) * tangential;
+  const double limit = 3.5 * law.friction * std::max(normalChange, 0.0);
+  const double size = change.norm();
+  if (size > limit) change *= limit / size;  // sliding: the limit binds
+  return change;
+}
+
+}  // namespace
+
+void applyImpactFriction(Vec3& va, Vec3& wa, Vec3& vb, Vec3& wb, double ra, double rb,
+                         double inverseMassA, double inverseMassB, const Vec3& n,
+                         double normalChange, const ImpactFriction& law) {
+  const double totalInverse = inverseMassA + inverseMassB;
+  if (totalInverse <= 0.0) return;
+  const Vec3 u = va - vb + (ra * wa + rb * wb).cross(n);
+  const Vec3 change = slipChange(u, n, normalChange, law) / 3.5;
+  // As in resolveBallBall, shared by weights rather than impulses.
+  const Vec3 dva = change * (inverseMassA / totalInverse);
+  const Vec3 dvb = -change * (inverseMassB / totalInverse);
+  va += dva;
+  vb += dvb;
+  wa += (2.5 / ra) * n.cross(dva);
+  wb -= (2.5 / rb) * n.cross(dvb);
+}
+
+void applyImpactFriction(Vec3& v, Vec3& w, double r, const Vec3& n, double normalChange,
+                         const ImpactFriction& law) {
+  const Vec3 u = v - r * w.cross(n);
+  const Vec3 dv = slipChange(u, n, normalChange, law) / 3.5;
+  v += dv;
+  w -= (2.5 / r) * n.cross(dv);
 }
 
 double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy) {

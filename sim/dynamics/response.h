@@ -76,6 +76,24 @@ bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& r
   return false;
 }
 
+// Walton's impact law (docs/physics.md, "Friction and spin"), applied after the normal impulse
+// of an impact between uniform solid spheres (moment of inertia 2/5·m·r²): a tangential impulse
+// that would turn the contact point's tangential velocity u into -β·u, limited by μ times the
+// normal impulse (the contact slides when the limit binds). `normalChange` is the change in
+// relative normal speed that the normal impulse made (its impulse times the pair's inverse mass).
+struct ImpactFriction {
+  double friction = 0.0;               // μ
+  double tangentialRestitution = 0.0;  // β, in [0, 1]
+};
+// Two balls touching along unit normal `n` (from a to b), with angular velocities wa and wb and
+// radii ra and rb. Inverse masses may be zero for an immovable ball.
+void applyImpactFriction(Vec3& va, Vec3& wa, Vec3& vb, Vec3& wb, double ra, double rb,
+                         double inverseMassA, double inverseMassB, const Vec3& n,
+                         double normalChange, const ImpactFriction& law);
+// A ball of radius r against an immovable surface with unit normal `n` pointing to the ball.
+void applyImpactFriction(Vec3& v, Vec3& w, double r, const Vec3& n, double normalChange,
+                         const ImpactFriction& law);
+
 // Sets velocity `v` of a ball at `position` so that its energy per unit mass,
 // |v|²/2 - gravity . position, is `energy`: the errors of a stepped method (integrator kicks, a
 // straight chord below the parabola, an overlap pushed out) are along gravity, so the velocity

@@ -42,6 +42,9 @@ class EnergyBooks {
   void noteRestitution(double restitution) {
     inelasticEvent_ = inelasticEvent_ || restitution < 1.0;
   }
+  // An impact with friction moves energy between translation and rotation (and may lose some),
+  // which these books of translation cannot follow: the event is recorded as it leaves the ball.
+  void noteFriction() { inelasticEvent_ = true; }
   // The books after ball i's event, which left it moving as `m`. An elastic event keeps what
   // physics keeps: the ball's energy, changed only by `exchanged` (its share of a ball pair's
   // exchange). What the rest policy's guards gave or took in it (a slide's capture, a rest, a

@@ -21,7 +21,7 @@ void EventEngine::collideWithStatic(int i, StaticRef ref, int face, RunStats& st
   notePenetration(-gap, stats);
   const double approach = -m.velocity.dot(n);
   books_.noteRestitution(restitution);
-  collideWithSurface(i, n, restitution, stats, face);
+  collideWithSurface(i, n, restitution, stats, face, impactFrictionWith(i, ref));
   if (!particles_[i].resting) {
     leaveTouchingStatics(i, stats);
     updateSlide(i, stats);
@@ -60,7 +60,8 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
   if (b.resting && approach < tolerance::kSettleSpeedFactor * restSpeed_[i]) {
     answered = restsOnContact(i, -n, restitution, stats);
     if (!answered && b.resting) {
-      bounceOffSurface(i, -n, restitution, stats);
+      bounceOffSurface(i, -n, restitution, stats, -1,
+                       bodies_.rough ? bodies_.impactFriction(i, j) : ImpactFriction{});
       if (!a.resting) updateSlide(i, stats);
       answered = true;
     }
@@ -81,6 +82,16 @@ void EventEngine::collideBalls(int i, int j, RunStats& stats, std::vector<Collis
     exchangedJ = 0.5 * (exchangedB.squaredNorm() - mb.velocity.squaredNorm());
     resolveBallBall(ma.velocity, mb.velocity, bodies_.inverseMass[i], bodies_.inverseMass[j], n,
                     restitution, minimum, lossless);
+    if (bodies_.rough) {
+      const ImpactFriction law = bodies_.impactFriction(i, j);
+      if (law.friction > 0.0) {
+        const double separation = (mb.velocity - ma.velocity).dot(n);
+        applyImpactFriction(ma.velocity, spin_[i], mb.velocity, spin_[j], bodies_.radius[i],
+                            bodies_.radius[j], bodies_.inverseMass[i], bodies_.inverseMass[j], n,
+                            approach + separation, law);
+        books_.noteFriction();
+      }
+    }
     changed(i);
     changed(j);
     updateSlide(i, stats);
@@ -118,14 +129,15 @@ EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
 }
 
 void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                                     int plane) {
+                                     int plane, const ImpactFriction& law) {
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
   // wall and a resting ball would otherwise rattle between them.
-  if (!restsOnContact(i, n, restitution, stats)) bounceOffSurface(i, n, restitution, stats, plane);
+  if (!restsOnContact(i, n, restitution, stats))
+    bounceOffSurface(i, n, restitution, stats, plane, law);
 }
 
 void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                                   int plane) {
+                                   int plane, const ImpactFriction& law) {
   Particle& p = particles_[i];
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
@@ -150,6 +162,11 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
     const double minimum = pressed ? pressedMinimum : collapseSpeed_;
     if (restitution * std::max(approach, 0.0) < minimum) ++stats.minimumBounces;
     resolveAgainstSurface(m.velocity, n, restitution, minimum);
+    if (law.friction > 0.0) {
+      applyImpactFriction(m.velocity, spin_[i], bodies_.radius[i], n, m.velocity.dot(n) + approach,
+                          law);
+      books_.noteFriction();
+    }
     changed(i);
   }
   // A cycle of contacts that lets time advance by round-off only must not hang the run. The
@@ -184,6 +201,15 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
   }
   const PlaneShape& plane = bodies_.planes[ref.index];
   return {plane.normal, plane.gap(position, r), restitutionWith(i, ref)};
+}
+
+ImpactFriction EventEngine::impactFrictionWith(int i, StaticRef ref) const {
+  if (!bodies_.rough) return {};
+  const std::vector<ContactFriction>& shapes = ref.kind == StaticKind::Box ? bodies_.boxFriction
+                                               : ref.kind == StaticKind::Cylinder
+                                                   ? bodies_.cylinderFriction
+                                                   : bodies_.planeFriction;
+  return bodies_.impactFriction(i, shapes[ref.index]);
 }
 
 double EventEngine::restitutionWith(int i, StaticRef ref) const {

@@ -35,7 +35,9 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   resizePrefaulted(predictions_, n);
   resizePrefaulted(restSpeed_, n);
   resizePrefaulted(slideSpeed_, n);
+  resizePrefaulted(spin_, n);
   for (int i = 0; i < n; ++i) {
+    spin_[i] = state[i].angularVelocity;
     Particle& p = particles_[i];
     p.resting = state[i].resting;
     tracks_[i] = {{state[i].position, p.resting ? Vec3::Zero() : state[i].velocity, now},
@@ -269,7 +271,7 @@ BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
   const Motion& m = tracks_[ball].motion;
   const Vec3& a = accelerationOf(ball);
-  return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting};
+  return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting, spin_[ball]};
 }
 
 std::vector<BallState> EventEngine::state() const {
@@ -298,8 +300,8 @@ void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
 std::size_t EventEngine::memoryBytes() const {
   return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
          carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
-         books_.memoryBytes() + carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) +
-         slides_.memoryBytes() + carom::memoryBytes(creaseLine_) +
+         carom::memoryBytes(spin_) + books_.memoryBytes() + carom::memoryBytes(restSpeed_) +
+         carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() + carom::memoryBytes(creaseLine_) +
          carom::memoryBytes(creaseAcceleration_) + cells_.memoryBytes() + queue_.memoryBytes();
 }
 

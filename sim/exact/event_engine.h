@@ -196,10 +196,14 @@ class EventEngine {
   // n pointing to the ball.
   // `plane` is the plane's index when the surface is one: a slow enough contact with a plane
   // that gravity presses the ball against turns into sliding along it.
-  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
-                          int plane = -1);
+  // `law` is the impact's friction (none: frictionless).
+  void collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1,
+                          const ImpactFriction& law = {});
   // The same contact when it does not end in rest.
-  void bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1);
+  void bounceOffSurface(int i, const Vec3& n, double restitution, RunStats& stats, int plane = -1,
+                        const ImpactFriction& law = {});
+  // The friction of ball i's impacts with static shape `ref`.
+  ImpactFriction impactFrictionWith(int i, StaticRef ref) const;
   void leaveTouchingStatics(int i, RunStats& stats);
   void notePenetration(double overlap, RunStats& stats) const;
 
@@ -267,6 +271,8 @@ class EventEngine {
   Vec3 zero_ = Vec3::Zero();
   std::vector<Track> tracks_;
   std::vector<Particle> particles_;
+  // Each ball's angular velocity: free flight keeps it, and only impacts with friction change it.
+  std::vector<Vec3> spin_;
   struct Prediction {
     Contact contact;
     CellLevels::Crossing crossing;

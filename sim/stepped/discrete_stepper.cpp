@@ -67,6 +67,7 @@ class DiscreteStepper final : public Stepper {
     for (const BallState& s : state) {
       positions_.push_back(s.position);
       velocities_.push_back(s.velocity);
+      spins_.push_back(s.angularVelocity);
     }
     if (!settings_.gravity.isZero()) {
       energy_.resize(positions_.size());
@@ -86,7 +87,8 @@ class DiscreteStepper final : public Stepper {
   std::vector<BallState> state() const override {
     std::vector<BallState> state(positions_.size());
     for (std::size_t i = 0; i < state.size(); ++i)
-      state[i] = {positions_[i], velocities_[i] + pendingKick_ * settings_.gravity, false};
+      state[i] = {positions_[i], velocities_[i] + pendingKick_ * settings_.gravity, false,
+                  spins_[i]};
     if (held_ >= 0) state[held_].velocity = velocities_[held_];
     return state;
   }
@@ -96,9 +98,9 @@ class DiscreteStepper final : public Stepper {
   std::size_t memoryBytes() const override {
     return sizeof(*this) + carom::memoryBytes(overlaps_) + carom::memoryBytes(energy_) +
            carom::memoryBytes(energyExcess_) + carom::memoryBytes(positions_) +
-           carom::memoryBytes(velocities_) + carom::memoryBytes(pushes_) +
-           carom::memoryBytes(touched_) + carom::memoryBytes(pushedTwice_) +
-           carom::memoryBytes(lookedAt_) + bins_.memoryBytes();
+           carom::memoryBytes(velocities_) + carom::memoryBytes(spins_) +
+           carom::memoryBytes(pushes_) + carom::memoryBytes(touched_) +
+           carom::memoryBytes(pushedTwice_) + carom::memoryBytes(lookedAt_) + bins_.memoryBytes();
   }
   // The held ball's velocity is kept without the kick owed to the others.
   void hold(int ball, const Vec3& velocity, RunStats&) override {
@@ -191,6 +193,11 @@ class DiscreteStepper final : public Stepper {
   }
 
   double inverseMassOf(int i) const { return i == held_ ? 0.0 : bodies_.inverseMass[i]; }
+  const ContactFriction& shapeFriction(ContactKind kind, int k) const {
+    return kind == ContactKind::BallBox        ? bodies_.boxFriction[k]
+           : kind == ContactKind::BallCylinder ? bodies_.cylinderFriction[k]
+                                               : bodies_.planeFriction[k];
+  }
 
   void resolveStatics(int i, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     const double r = bodies_.radius[i];
@@ -262,7 +269,15 @@ class DiscreteStepper final : public Stepper {
     toStepEnd(i);
     restoreEnergy(i);
     const double approach = -velocities_[i].dot(n);
-    if (approach > 0.0) resolveAgainstSurface(velocities_[i], n, restitution, 0.0);
+    if (approach > 0.0) {
+      resolveAgainstSurface(velocities_[i], n, restitution, 0.0);
+      if (bodies_.rough) {
+        const ImpactFriction law = bodies_.impactFriction(i, shapeFriction(kind, other));
+        if (law.friction > 0.0)
+          applyImpactFriction(velocities_[i], spins_[i], bodies_.radius[i], n,
+                              velocities_[i].dot(n) + approach, law);
+      }
+    }
     recordEnergy(i);
     fromStepEnd(i);
     if (approach <= 0.0) return;
@@ -291,9 +306,18 @@ class DiscreteStepper final : public Stepper {
     restoreEnergy(i);
     restoreEnergy(j);
     const double approach = (velocities_[i] - velocities_[j]).dot(n);
-    if (approach > 0.0)
+    if (approach > 0.0) {
       resolveBallBall(velocities_[i], velocities_[j], inverseMassOf(i), inverseMassOf(j), n,
                       std::min(bodies_.restitution[i], bodies_.restitution[j]), 0.0);
+      if (bodies_.rough) {
+        const ImpactFriction law = bodies_.impactFriction(i, j);
+        if (law.friction > 0.0)
+          applyImpactFriction(velocities_[i], spins_[i], velocities_[j], spins_[j],
+                              bodies_.radius[i], bodies_.radius[j], inverseMassOf(i),
+                              inverseMassOf(j), n,
+                              approach + (velocities_[j] - velocities_[i]).dot(n), law);
+      }
+    }
     payExcess(i, j);
     payExcess(j, i);
     recordEnergy(i);
@@ -370,6 +394,7 @@ class DiscreteStepper final : public Stepper {
   double pendingKick_ = 0.0;
   std::vector<Vec3> positions_;
   std::vector<Vec3> velocities_;
+  std::vector<Vec3> spins_;  // angular velocities: only impacts with friction change them
   // The overlap passes of a step (see step()).
   std::vector<std::uint8_t> pushes_;  // pushes each ball took in the current pass
   std::vector<int> touched_;          // the balls with pushes_ above zero

@@ -20,7 +20,8 @@ bool contains(const std::vector<int>& sorted, int index) {
 }  // namespace
 
 Scene withRunningBalls(const Scene& edited, const SceneChange& change,
-                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities) {
+                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                       const std::vector<Vec3>& angularVelocities) {
   Scene start = edited;
   if (change.replaced) return start;
   const std::vector<int> removed = ballIndices(change.removed);
@@ -37,6 +38,8 @@ Scene withRunningBalls(const Scene& edited, const SceneChange& change,
       continue;
     start.balls[after].position = positions[running];
     start.balls[after].velocity = velocities[running];
+    if (running < angularVelocities.size())
+      start.balls[after].angularVelocity = angularVelocities[running];
   }
   return start;
 }

@@ -10,9 +10,11 @@
 namespace carom::editor {
 
 // `edited` (the scene after `change`), with each ball the change left alone at the run's
-// `positions` and `velocities`, given in the order of the scene before the change. The balls
-// the change edited or inserted keep the edit's values; a replaced scene is returned as it is.
+// `positions`, `velocities` and (when given) `angularVelocities`, in the order of the scene
+// before the change. The balls the change edited or inserted keep the edit's values; a replaced
+// scene is returned as it is.
 Scene withRunningBalls(const Scene& edited, const SceneChange& change,
-                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities);
+                       const std::vector<Vec3>& positions, const std::vector<Vec3>& velocities,
+                       const std::vector<Vec3>& angularVelocities = {});
 
 }  // namespace carom::editor

@@ -20,6 +20,7 @@ struct SimulationSnapshot {
   double time = 0.0;
   std::vector<Vec3> positions;
   std::vector<Vec3> velocities;  // same order
+  std::vector<Vec3> angularVelocities;
   // Since the previous snapshot. A snapshot replaced before the GUI took it takes its collisions
   // with it: when the GUI falls behind, explosions and sounds are dropped, never delayed.
   std::vector<CollisionRecord> collisions;

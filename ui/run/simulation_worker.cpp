@@ -334,6 +334,7 @@ void SimulationWorker::publish() {
   for (const BallState& ball : sim.state()) {
     snapshot->positions.push_back(ball.position);
     snapshot->velocities.push_back(ball.velocity);
+    snapshot->angularVelocities.push_back(ball.angularVelocity);
   }
   snapshot->frameCount = recording_->frameCount();
   snapshot->frame = shown_ ? shownFrame_ : snapshot->frameCount;
@@ -348,7 +349,8 @@ void SimulationWorker::publish() {
   if (fresh.size() > kMaxPendingCollisions)
     fresh.erase(fresh.begin(), fresh.end() - kMaxPendingCollisions);
   snapshot->collisions = std::move(fresh);
-  snapshot->kineticEnergy = kineticEnergy(sim.bodies(), snapshot->velocities);
+  snapshot->kineticEnergy = kineticEnergy(sim.bodies(), snapshot->velocities) +
+                            rotationalEnergy(sim.bodies(), snapshot->angularVelocities);
   snapshot->potentialEnergy =
       potentialEnergy(sim.bodies(), sim.world().gravity, snapshot->positions);
   snapshot->initialEnergy = initialEnergy_;

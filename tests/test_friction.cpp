@@ -1,0 +1,293 @@
+// Friction and spin (docs/physics.md, "Friction and spin"): Walton's impact law against its
+// closed forms in every method, rotation in the energy, perfectly rough elastic balls keeping
+// their energy, and scenes without friction running exactly as they did before it existed.
+
+#include "sim/dynamics/energy.h"
+#include "sim/dynamics/response.h"
+#include "sim/io/scene_file.h"
+#include "sim/simulation.h"
+#include "sim/validation/validation.h"
+#include "tests/scene_helpers.h"
+
+#include <Eigen/Geometry>
+#include <QDir>
+#include <QTest>
+
+#include <cmath>
+#include <random>
+
+using namespace carom;
+using carom::testing::addMethodRows;
+using carom::testing::makeBall;
+using carom::testing::makePlane;
+
+namespace {
+
+constexpr double kRadius = 0.1;
+
+// A ball of radius 0.1 coming at the floor y = 0 with velocity `v` and spin `w`, no gravity.
+Scene floorImpact(Method method, const Vec3& v, const Vec3& w, double friction, double beta,
+                  double restitution = 1.0) {
+  Scene s;
+  s.world.gravity = Vec3::Zero();
+  s.world.method = method;
+  s.world.timeStep = 1e-3;
+  s.world.restitution = restitution;
+  s.world.friction = friction;
+  s.world.tangentialRestitution = beta;
+  s.planes.push_back(makePlane({0, 0, 0}, {0, 1, 0}));
+  Ball ball = makeBall(Vec3(0, kRadius + 0.05, 0), v, kRadius);
+  ball.angularVelocity = w;
+  s.balls.push_back(ball);
+  return s;
+}
+
+// The tangential velocity of a ball's contact point with the floor (normal +y).
+Vec3 floorSlip(const BallState& b) {
+  const Vec3 u = b.velocity - kRadius * b.angularVelocity.cross(Vec3::UnitY());
+  return {u.x(), 0.0, u.z()};
+}
+
+double totalKinetic(const Simulation& sim) {
+  return sim.kineticEnergy();
+}
+
+// Angular momentum of all balls about the origin: spin plus orbital.
+Vec3 angularMomentum(const Simulation& sim) {
+  Vec3 sum = Vec3::Zero();
+  const std::vector<BallState> state = sim.state();
+  for (int i = 0; i < sim.ballCount(); ++i) {
+    const double m = sim.bodies().mass[i], r = sim.bodies().radius[i];
+    sum +=
+        0.4 * m * r * r * state[i].angularVelocity + m * state[i].position.cross(state[i].velocity);
+  }
+  return sum;
+}
+
+bool sameBits(const std::vector<BallState>& a, const std::vector<BallState>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].position != b[i].position || a[i].velocity != b[i].velocity ||
+        a[i].resting != b[i].resting)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+class TestFriction : public QObject {
+  Q_OBJECT
+ private slots:
+  // A ball sliding into the floor at a grazing angle with little friction: the limit binds, and
+  // the tangential impulse is μ times the normal one (the normal speed 1 m/s reversed: 2 m/s).
+  void impactThatSlides_data() { addMethodRows({Method::Exact, Method::Swept, Method::Discrete}); }
+  void impactThatSlides() {
+    QFETCH(int, method);
+    Simulation sim(floorImpact(Method(method), {2, -1, 0}, Vec3::Zero(), 0.1, 0.0));
+    sim.advance(0.1);
+    const BallState b = sim.state()[0];
+    QVERIFY(b.velocity.y() > 0.0);
+    // Δv_x = -μ·Δv_n = -0.2; Δω = -(5/2r)·n × Δv.
+    QVERIFY2(std::abs(b.velocity.x() - 1.8) < 1e-9, qPrintable(QString::number(b.velocity.x())));
+    QVERIFY(std::abs(b.velocity.y() - 1.0) < 1e-9);
+    QVERIFY(std::abs(b.angularVelocity.z() - (-2.5 / kRadius) * 0.2) < 1e-9);
+    QVERIFY(std::abs(b.angularVelocity.x()) + std::abs(b.angularVelocity.y()) < 1e-12);
+    // Still slipping forwards: the slip kept its direction.
+    QVERIFY(floorSlip(b).x() > 0.0);
+  }
+
+  // Enough friction: the impact stops the slip (β = 0), leaving the ball rolling at 5/7 of its
+  // tangential speed; with β = 1 it reverses the slip and keeps the energy.
+  void impactThatSticks_data() { addMethodRows({Method::Exact, Method::Swept, Method::Discrete}); }
+  void impactThatSticks() {
+    QFETCH(int, method);
+    {
+      Simulation sim(floorImpact(Method(method), {2, -1, 0}, Vec3::Zero(), 1.0, 0.0));
+      sim.advance(0.1);
+      const BallState b = sim.state()[0];
+      QVERIFY(std::abs(b.velocity.x() - 2.0 * 5.0 / 7.0) < 1e-9);
+      QVERIFY(floorSlip(b).norm() < 1e-9);
+    }
+    {
+      Simulation sim(floorImpact(Method(method), {2, -1, 0}, {0, 0, 30}, 5.0, 1.0));
+      const Vec3 slipBefore = floorSlip(sim.state()[0]);
+      const double before = totalKinetic(sim);
+      sim.advance(0.1);
+      const BallState b = sim.state()[0];
+      const Vec3 slipAfter = floorSlip(b);
+      QVERIFY((slipAfter + slipBefore).norm() < 1e-9);
+      QVERIFY(std::abs(totalKinetic(sim) - before) < 1e-12 * before);
+    }
+  }
+
+  // Back spin strong enough that the impact throws the ball back: the friction impulse
+  // reverses its tangential velocity.
+  void backSpinImpactThrowsBack() {
+    // Slip = v - r ω × n: with ω_z = +60 rad/s the contact point moves at 2 + 6 = 8 m/s.
+    Simulation sim(floorImpact(Method::Exact, {2, -1, 0}, {0, 0, 60}, 10.0, 0.0));
+    sim.advance(0.1);
+    const BallState b = sim.state()[0];
+    QVERIFY(std::abs(b.velocity.x() - (2.0 - 2.0 / 7.0 * 8.0)) < 1e-9);
+    QVERIFY(b.velocity.x() < 0.0);
+  }
+
+  // Two balls of different sizes and masses, spinning, meet head on: Walton's law in the pair's
+  // frame, in each method, sliding (μ small) and sticking (μ large). Linear momentum and the
+  // angular momentum about the origin are kept; sticking turns the slip into -β times itself;
+  // sliding takes exactly μ times the normal impulse.
+  void spinningPair_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("friction");
+    QTest::addColumn<double>("beta");
+    for (const Method m : {Method::Exact, Method::Swept, Method::Discrete}) {
+      const QByteArray name(methodName(m).data());
+      QTest::newRow(name + " sliding") << int(m) << 0.05 << 0.0;
+      QTest::newRow(name + " sticking") << int(m) << 5.0 << 0.0;
+      QTest::newRow(name + " rough elastic") << int(m) << 5.0 << 1.0;
+    }
+  }
+  void spinningPair() {
+    QFETCH(int, method);
+    QFETCH(double, friction);
+    QFETCH(double, beta);
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    s.world.method = Method(method);
+    s.world.timeStep = 1e-3;
+    s.world.friction = friction;
+    s.world.tangentialRestitution = beta;
+    Ball a = makeBall({0, 0, 0}, {1, 0, 0}, 0.1, 1.0);
+    a.angularVelocity = {0, 5, 20};
+    Ball b = makeBall({0.5, 0, 0}, {-1, 0, 0}, 0.2, 3.0);
+    b.angularVelocity = {3, 0, -4};
+    s.balls = {a, b};
+    Simulation sim(s);
+    const Vec3 momentum = sim.momentum();
+    const Vec3 angular = angularMomentum(sim);
+    const double energy = sim.kineticEnergy();
+    const auto slip = [](const std::vector<BallState>& st) {
+      const Vec3 n(1, 0, 0);
+      const Vec3 u = st[0].velocity - st[1].velocity +
+                     (0.1 * st[0].angularVelocity + 0.2 * st[1].angularVelocity).cross(n);
+      return Vec3(u - u.dot(n) * n);
+    };
+    const Vec3 slipBefore = slip(sim.state());
+    sim.advance(0.5);
+    QCOMPARE(sim.stats().collisions.ballBall, std::uint64_t(1));
+    const std::vector<BallState> after = sim.state();
+    QVERIFY((sim.momentum() - momentum).norm() < 1e-12);
+    QVERIFY2((angularMomentum(sim) - angular).norm() < 1e-9,
+             qPrintable(QString::number((angularMomentum(sim) - angular).norm())));
+    const Vec3 slipAfter = slip(after);
+    // The normal impulse: elastic, reduced mass 3/4, approach 2 m/s.
+    const double normalImpulse = 2.0 * 2.0 * 0.75;
+    const double tangentialImpulse = (after[0].velocity - Vec3(after[0].velocity.x(), 0, 0)).norm();
+    if (friction < 1.0) {
+      QVERIFY(std::abs(tangentialImpulse - friction * normalImpulse) < 1e-9);
+      QVERIFY(slipAfter.dot(slipBefore) > 0.0);  // still slipping the same way
+      QVERIFY(sim.kineticEnergy() < energy);
+    } else {
+      QVERIFY((slipAfter + beta * slipBefore).norm() < 1e-9);
+      if (beta == 1.0) QVERIFY(std::abs(sim.kineticEnergy() - energy) < 1e-12 * energy);
+    }
+  }
+
+  // Rotation is kinetic energy: 1/2·(2/5·m·r²)·|ω|².
+  void rotationCountsInTheEnergy() {
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    Ball ball = makeBall({0, 0, 0}, {3, 0, 0}, 0.5, 2.0);
+    ball.angularVelocity = {0, 4, 0};
+    s.balls.push_back(ball);
+    Simulation sim(s);
+    QCOMPARE(sim.kineticEnergy(), 0.5 * 2.0 * 9.0 + 0.5 * (0.4 * 2.0 * 0.25) * 16.0);
+    QCOMPARE(ballRotationalEnergy(2.0, 0.5, {0, 4, 0}), 0.5 * (0.4 * 2.0 * 0.25) * 16.0);
+  }
+
+  // The spin survives a change of method in mid-run, and free flight keeps it.
+  void spinSurvivesMethodChanges() {
+    Scene s;
+    s.world.gravity = Vec3(0, -9.81, 0);
+    Ball ball = makeBall({0, 1, 0}, {1, 0, 0}, 0.1);
+    ball.angularVelocity = {1, -2, 3};
+    s.balls.push_back(ball);
+    Simulation sim(s);
+    for (const Method m : {Method::Swept, Method::Discrete, Method::Exact}) {
+      sim.advance(0.05);
+      World w = sim.world();
+      w.method = m;
+      sim.setWorld(w);
+      QCOMPARE(sim.state()[0].angularVelocity, Vec3(1, -2, 3));
+    }
+  }
+
+  // Perfectly rough, elastic balls (β = 1, μ large, e = 1) keep their energy, translation and
+  // rotation together, over 10⁵ impacts with each other and the walls of a box.
+  void perfectlyRoughGasKeepsItsEnergy() {
+    Scene s;
+    s.world.gravity = Vec3::Zero();
+    s.world.method = Method::Exact;
+    s.world.friction = 1e6;
+    s.world.tangentialRestitution = 1.0;
+    for (int axis = 0; axis < 3; ++axis)
+      for (const double side : {-1.0, 1.0}) {
+        Vec3 normal = Vec3::Zero();
+        normal[axis] = -side;
+        s.planes.push_back(makePlane(side * Vec3::Unit(axis), normal));
+      }
+    std::mt19937_64 random(36);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        for (int k = 0; k < 4; ++k) {
+          Ball ball = makeBall(Vec3(-0.75 + 0.5 * i, -0.75 + 0.5 * j, -0.75 + 0.5 * k),
+                               Vec3(unit(random), unit(random), unit(random)), 0.1 + 0.05 * (i % 2),
+                               1.0 + k);
+          ball.angularVelocity = 10.0 * Vec3(unit(random), unit(random), unit(random));
+          s.balls.push_back(ball);
+        }
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    const double energy = sim.kineticEnergy();
+    while (sim.stats().collisions.total() < 100000) sim.advance(1.0);
+    QVERIFY2(std::abs(sim.kineticEnergy() - energy) < 1e-9 * energy,
+             qPrintable(QString::number((sim.kineticEnergy() - energy) / energy)));
+    // Rotation took part: it holds a share it did not start with.
+    double rotation = rotationalEnergy(sim.bodies(), sim.angularVelocities());
+    QVERIFY(rotation > 0.05 * energy);
+  }
+
+  // Without friction, spin and β change nothing: every bundled scene runs bit for bit as the
+  // same scene without them (what a version 2 file gives), in every method.
+  void zeroFrictionIsTheFrictionlessPhysics_data() {
+    addMethodRows({Method::Exact, Method::Swept, Method::Discrete});
+  }
+  void zeroFrictionIsTheFrictionlessPhysics() {
+    QFETCH(int, method);
+    const QDir scenes(qEnvironmentVariable("CAROM_SOURCE_DIR") + "/resources/scenes");
+    const QStringList files = scenes.entryList({"*.json"});
+    QVERIFY(!files.isEmpty());
+    for (const QString& file : files) {
+      const io::SceneLoadResult loaded = io::loadSceneFile(scenes.filePath(file));
+      QVERIFY2(loaded.scene, qPrintable(file));
+      Scene plain = *loaded.scene;
+      plain.world.method = Method(method);
+      plain.world.autoMethod.reset();
+      Scene spun = plain;
+      spun.world.tangentialRestitution = 0.7;
+      for (Ball& ball : spun.balls) ball.angularVelocity = {5, -3, 1};
+      for (Plane& plane : spun.planes) plane.friction = 0.0;
+      QVERIFY(usesFriction(spun));
+      QVERIFY(!usesFriction(plain));
+      Simulation a(plain), b(spun);
+      a.advance(3.0);
+      b.advance(3.0);
+      QVERIFY2(sameBits(a.state(), b.state()), qPrintable(file));
+      QCOMPARE(a.stats().collisions.total(), b.stats().collisions.total());
+      QVERIFY(a.stats().collisions.total() > 0);
+    }
+  }
+};
+
+QTEST_GUILESS_MAIN(TestFriction)
+#include "test_friction.moc"
