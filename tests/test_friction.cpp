@@ -73,6 +73,39 @@ bool sameBits(const std::vector<BallState>& a, const std::vector<BallState>& b) 
   return true;
 }
 
+constexpr double kG = 9.81;
+
+// A ball of radius 0.1 touching the floor y = 0 under gravity, moving at `v` and spinning at `w`.
+Scene onFloor(Method method, const Vec3& v, const Vec3& w, const ContactFriction& floor) {
+  Scene s;
+  s.world.gravity = Vec3(0, -kG, 0);
+  s.world.method = method;
+  s.world.timeStep = 1e-3;
+  s.world.restitution = 0.5;
+  Plane plane = makePlane({0, 0, 0}, {0, 1, 0});
+  plane.friction = floor.sliding;
+  plane.rollingResistance = floor.rolling;
+  plane.spinningFriction = floor.spinning;
+  s.planes.push_back(plane);
+  Ball ball = makeBall(Vec3(0, kRadius, 0), v, kRadius);
+  ball.angularVelocity = w;
+  s.balls.push_back(ball);
+  return s;
+}
+
+// Within 1e-9 under `exact`, 2 % of `scale` under the stepped methods at 1 ms steps.
+bool agrees(Method method, double got, double expected, double scale) {
+  const double tolerance = method == Method::Exact ? 1e-9 : 0.02 * scale;
+  return std::abs(got - expected) <= tolerance;
+}
+
+QString disagreement(const char* what, double got, double expected) {
+  return QString("%1: got %2, expected %3")
+      .arg(what)
+      .arg(got, 0, 'g', 17)
+      .arg(expected, 0, 'g', 17);
+}
+
 }  // namespace
 
 class TestFriction : public QObject {
@@ -255,6 +288,162 @@ class TestFriction : public QObject {
     // Rotation took part: it holds a share it did not start with.
     double rotation = rotationalEnergy(sim.bodies(), sim.angularVelocities());
     QVERIFY(rotation > 0.05 * energy);
+  }
+
+  // A ball sliding on a level floor: the slip stops after 2|u₀|/(7μg), and it rolls on at 5/7 of
+  // its speed with 5/7 of its kinetic energy, rotation included.
+  void slideToRollOnALevelFloor_data() {
+    addMethodRows({Method::Exact, Method::Swept, Method::Discrete});
+  }
+  void slideToRollOnALevelFloor() {
+    QFETCH(int, method);
+    const double mu = 0.2, v0 = 2.0;
+    Simulation sim(onFloor(Method(method), {v0, 0, 0}, Vec3::Zero(), {mu, 0, 0}));
+    const double energy = sim.kineticEnergy();
+    const double slideEnd = 2.0 * v0 / (7.0 * mu * kG);
+    sim.advance(1.0);
+    const BallState b = sim.state()[0];
+    const double x =
+        v0 * slideEnd - 0.5 * mu * kG * slideEnd * slideEnd + 5.0 / 7.0 * v0 * (1.0 - slideEnd);
+    QVERIFY2(agrees(Method(method), b.velocity.x(), 5.0 / 7.0 * v0, v0),
+             qPrintable(disagreement("v", b.velocity.x(), 5.0 / 7.0 * v0)));
+    QVERIFY2(agrees(Method(method), b.position.x(), x, x),
+             qPrintable(disagreement("x", b.position.x(), x)));
+    QVERIFY2(agrees(Method(method), b.angularVelocity.z(), -5.0 / 7.0 * v0 / kRadius, v0 / kRadius),
+             qPrintable(disagreement("w", b.angularVelocity.z(), -5.0 / 7.0 * v0 / kRadius)));
+    QVERIFY2(agrees(Method(method), sim.kineticEnergy(), 5.0 / 7.0 * energy, energy),
+             qPrintable(disagreement("E", sim.kineticEnergy(), 5.0 / 7.0 * energy)));
+    QVERIFY(std::abs(b.position.y() - kRadius) < 1e-6);
+  }
+
+  // Back spin: the friction slows the ball, and strong back spin brings it back. The slip
+  // u₀ = v₀ + r·ω₀ stops after u₀/(7/2·μg), leaving v₀ - u₀·2/7.
+  void backSpin_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("spin");
+    for (const Method m : {Method::Exact, Method::Swept, Method::Discrete}) {
+      const QByteArray name(methodName(m).data());
+      QTest::newRow(name + " slows") << int(m) << 20.0;
+      QTest::newRow(name + " comes back") << int(m) << 80.0;
+    }
+  }
+  void backSpin() {
+    QFETCH(int, method);
+    QFETCH(double, spin);
+    const double mu = 0.2, v0 = 2.0;
+    Simulation sim(onFloor(Method(method), {v0, 0, 0}, {0, 0, spin}, {mu, 0, 0}));
+    const double slip = v0 + kRadius * spin;
+    const double slideEnd = slip / (3.5 * mu * kG);
+    const double vEnd = v0 - 2.0 / 7.0 * slip;
+    sim.advance(slideEnd + 1.0);
+    const BallState b = sim.state()[0];
+    const double x = v0 * slideEnd - 0.5 * mu * kG * slideEnd * slideEnd + vEnd;
+    QVERIFY2(agrees(Method(method), b.velocity.x(), vEnd, v0),
+             qPrintable(disagreement("v", b.velocity.x(), vEnd)));
+    QVERIFY2(agrees(Method(method), b.position.x(), x, std::abs(x) + 1.0),
+             qPrintable(disagreement("x", b.position.x(), x)));
+    QCOMPARE(b.velocity.x() < 0.0, kRadius * spin > 2.5 * v0);
+  }
+
+  // Spin about the vertical on the spot: spinning friction stops it after 2r|ω|/(5μ_sp·g).
+  void spinDecaysInPlace_data() { addMethodRows({Method::Exact, Method::Swept, Method::Discrete}); }
+  void spinDecaysInPlace() {
+    QFETCH(int, method);
+    const double muSp = 0.1, w0 = 5.0;
+    Simulation sim(onFloor(Method(method), Vec3::Zero(), {0, w0, 0}, {0.3, 0, muSp}));
+    const double rate = 2.5 * muSp * kG / kRadius;
+    sim.advance(0.1);
+    QVERIFY2(agrees(Method(method), sim.state()[0].angularVelocity.y(), w0 - rate * 0.1, w0),
+             qPrintable(disagreement("w", sim.state()[0].angularVelocity.y(), w0 - rate * 0.1)));
+    sim.advance(1.0);
+    QVERIFY(std::abs(sim.state()[0].angularVelocity.y()) <=
+            (Method(method) == Method::Exact ? 0.0 : 0.02 * w0));
+    QVERIFY(sim.state()[0].velocity.norm() < 1e-6);
+  }
+
+  // Rolling resistance stops a rolling ball after |v|/(μ_r·g), |v|²/(2μ_r·g) further on.
+  void rollingResistanceStopsABall_data() {
+    addMethodRows({Method::Exact, Method::Swept, Method::Discrete});
+  }
+  void rollingResistanceStopsABall() {
+    QFETCH(int, method);
+    const double muR = 0.05, v0 = 1.0;
+    Simulation sim(onFloor(Method(method), {v0, 0, 0}, {0, 0, -v0 / kRadius}, {0.5, muR, 0}));
+    const double stop = v0 / (muR * kG), distance = v0 * v0 / (2.0 * muR * kG);
+    sim.advance(0.5 * stop);
+    QVERIFY2(agrees(Method(method), sim.state()[0].velocity.x(), 0.5 * v0, v0),
+             qPrintable(disagreement("v", sim.state()[0].velocity.x(), 0.5 * v0)));
+    sim.advance(stop);
+    const BallState b = sim.state()[0];
+    QVERIFY2(agrees(Method(method), b.position.x(), distance, distance),
+             qPrintable(disagreement("x", b.position.x(), distance)));
+    QVERIFY(b.velocity.norm() < (Method(method) == Method::Exact ? 1e-12 : 0.02 * v0));
+    QVERIFY(b.angularVelocity.norm() <
+            (Method(method) == Method::Exact ? 1e-12 : 0.02 * v0 / kRadius));
+  }
+
+  // Down an incline: rolling at 5/7 of gravity's pull along it when μ ≥ 2/7·tan θ, its energy
+  // kept; sliding at g(sin θ - μ cos θ) on a steeper one.
+  void incline_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("degrees");
+    QTest::addColumn<double>("friction");
+    for (const Method m : {Method::Exact, Method::Swept, Method::Discrete}) {
+      const QByteArray name(methodName(m).data());
+      QTest::newRow(name + " rolls") << int(m) << 20.0 << 0.5;
+      QTest::newRow(name + " slides") << int(m) << 40.0 << 0.1;
+    }
+  }
+  void incline() {
+    QFETCH(int, method);
+    QFETCH(double, degrees);
+    QFETCH(double, friction);
+    const double theta = degrees * M_PI / 180.0;
+    const Vec3 normal(-std::sin(theta), std::cos(theta), 0);  // falls towards +x
+    Scene s;
+    s.world.gravity = Vec3(0, -kG, 0);
+    s.world.method = Method(method);
+    s.world.timeStep = 1e-3;
+    s.world.restitution = 0.5;
+    s.world.friction = friction;
+    s.planes.push_back(makePlane({0, 0, 0}, normal));
+    s.balls.push_back(makeBall(kRadius * normal, Vec3::Zero(), kRadius));
+    Simulation sim(s);
+    const double energy = sim.totalEnergy();
+    const double rolls = 2.0 / 7.0 * std::tan(theta) <= friction;
+    const double a = rolls ? 5.0 / 7.0 * kG * std::sin(theta)
+                           : kG * (std::sin(theta) - friction * std::cos(theta));
+    sim.advance(1.0);
+    const BallState b = sim.state()[0];
+    const Vec3 down(-std::cos(theta), -std::sin(theta), 0);
+    const double travelled = (b.position - kRadius * normal).dot(down);
+    QVERIFY2(agrees(Method(method), travelled, 0.5 * a, 0.5 * a),
+             qPrintable(disagreement("s", travelled, 0.5 * a)));
+    QVERIFY2(agrees(Method(method), b.velocity.dot(down), a, a),
+             qPrintable(disagreement("v", b.velocity.dot(down), a)));
+    if (rolls && Method(method) == Method::Exact)
+      QVERIFY2(std::abs(sim.totalEnergy() - energy) <= 1e-9 * std::abs(sim.kineticEnergy()),
+               qPrintable(disagreement("E", sim.totalEnergy(), energy)));
+  }
+
+  // The follow shot: a rolling ball hits a resting one head on (no friction between the balls,
+  // elastic): it stops with its spin, which the cloth turns into rolling at 2/7 of its speed,
+  // while the struck ball slides off at its speed and ends rolling at 5/7 of it.
+  void followShot_data() { addMethodRows({Method::Exact, Method::Swept, Method::Discrete}); }
+  void followShot() {
+    QFETCH(int, method);
+    const double v0 = 1.0;
+    Scene s = onFloor(Method(method), {v0, 0, 0}, {0, 0, -v0 / kRadius}, {0.2, 0, 0});
+    s.world.restitution = 1.0;
+    s.balls.push_back(makeBall(Vec3(0.5, kRadius, 0), Vec3::Zero(), kRadius));
+    Simulation sim(s);
+    sim.advance(3.0);
+    const std::vector<BallState> b = sim.state();
+    QCOMPARE(sim.stats().collisions.ballBall, std::uint64_t(1));
+    QVERIFY2(agrees(Method(method), b[0].velocity.x(), 2.0 / 7.0 * v0, v0),
+             qPrintable(disagreement("cue", b[0].velocity.x(), 2.0 / 7.0 * v0)));
+    QVERIFY2(agrees(Method(method), b[1].velocity.x(), 5.0 / 7.0 * v0, v0),
+             qPrintable(disagreement("object", b[1].velocity.x(), 5.0 / 7.0 * v0)));
   }
 
   // Without friction, spin and β change nothing: every bundled scene runs bit for bit as the

@@ -242,6 +242,7 @@ QJsonObject reportJson(const Simulation& sim, const RunResult& result) {
       {"steps", double(stats.steps)},
       {"restings", double(stats.restings)},
       {"wakes", double(stats.wakes)},
+      {"facePhases", double(stats.facePhases)},
       {"minimumBounces", double(stats.minimumBounces)},
       {"restingAtEnd", result.resting},
       {"divergence", divergenceJson(result)},
@@ -285,6 +286,7 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
       << stats.staleEvents << "), steps: " << stats.steps << "\n";
   out << "rest policy: " << stats.restings << " rests, " << stats.wakes << " wakes, "
       << stats.minimumBounces << " minimum bounces\n";
+  if (stats.facePhases > 0) out << "friction: " << stats.facePhases << " face phases ended\n";
   for (const std::string& note : sim.modelNotes())
     out << "model: " << QString::fromStdString(note) << "\n";
 }

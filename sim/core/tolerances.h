@@ -99,4 +99,15 @@ inline constexpr long kMaxSimultaneousReflections = 10'000'000;
 inline constexpr double kCrushEscapeFactor = 2.0;
 inline constexpr double kCrushRoomFraction = 1.0;
 
+// A ball on a face rolls when its slip (the contact point's velocity) is below this fraction of
+// its speeds |v| + r·|ω| along the face: the round-off of v - r·ω×n. A phase that ends in
+// rolling sets the slip to zero exactly, so this acts only on states an impact or a method
+// change handed over (test_friction).
+inline constexpr double kRollingSlipFraction = 1e-12;
+// A slide whose slip runs across the fall line of a tilted face, or a roll with resistance
+// across it, turns as it goes and has no polynomial path: for now each of its phases keeps its
+// direction for as long as that turns by at most this angle (radians), and is taken again from
+// there; the closed form in tan(φ/2) (docs/physics.md) replaces it.
+inline constexpr double kFaceTurnAngle = 1e-3;
+
 }  // namespace carom::tolerance

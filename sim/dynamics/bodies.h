@@ -2,7 +2,6 @@
 // What stays fixed during a run: the static shapes and each ball's size, mass, restitution and
 // friction, resolved once against the world so the steppers need not look at the scene again.
 
-#include "sim/dynamics/response.h"
 #include "sim/geometry/shapes.h"
 
 #include <algorithm>
@@ -58,6 +57,10 @@ struct Bodies {
   }
   ImpactFriction impactFriction(int i, const ContactFriction& shape) const {
     return {std::max(friction[i].sliding, shape.sliding), tangentialRestitution};
+  }
+  // Every coefficient of such a contact.
+  ContactFriction contactFriction(int i, const ContactFriction& shape) const {
+    return larger(friction[i], shape);
   }
 };
 

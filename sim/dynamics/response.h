@@ -81,10 +81,7 @@ bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& r
 // that would turn the contact point's tangential velocity u into -β·u, limited by μ times the
 // normal impulse (the contact slides when the limit binds). `normalChange` is the change in
 // relative normal speed that the normal impulse made (its impulse times the pair's inverse mass).
-struct ImpactFriction {
-  double friction = 0.0;               // μ
-  double tangentialRestitution = 0.0;  // β, in [0, 1]
-};
+//
 // Two balls touching along unit normal `n` (from a to b), with angular velocities wa and wb and
 // radii ra and rb. Inverse masses may be zero for an immovable ball.
 void applyImpactFriction(Vec3& va, Vec3& wa, Vec3& vb, Vec3& wb, double ra, double rb,

@@ -131,8 +131,10 @@ EventEngine::PairFloor EventEngine::pairFloor(int i, int j, const Vec3& n,
 void EventEngine::collideWithSurface(int i, const Vec3& n, double restitution, RunStats& stats,
                                      int plane, const ImpactFriction& law) {
   // Any slow contact may end in rest, also a sideways one: a ball on a floor trapped between a
-  // wall and a resting ball would otherwise rattle between them.
-  if (!restsOnContact(i, n, restitution, stats))
+  // wall and a resting ball would otherwise rattle between them. With friction, a ball on a face
+  // that presses it rests when its phases say it is still (refreshFace), not by its speed.
+  const bool facePhases = bodies_.rough && plane >= 0 && gravity_.dot(n) < 0.0;
+  if (facePhases || !restsOnContact(i, n, restitution, stats))
     bounceOffSurface(i, n, restitution, stats, plane, law);
 }
 
@@ -151,8 +153,9 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   if (capture != kNoCapture) {
     startSliding(i, plane);
     if (capture != kAlone) startCrease(i, capture);
-    // A ball that lands without bouncing (restitution 0) and little sideways speed rests.
-    if (restsOnContact(i, n, restitution, stats)) return;
+    // A ball that lands without bouncing (restitution 0) and little sideways speed rests; with
+    // friction its phases decide.
+    if (!bodies_.rough && restsOnContact(i, n, restitution, stats)) return;
   } else {
     // A plane needs no minimum: a ball bouncing on it slower than a bounce of touching height
     // slides instead (above), and so bounces in finitely many events.
@@ -203,13 +206,17 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
   return {plane.normal, plane.gap(position, r), restitutionWith(i, ref)};
 }
 
-ImpactFriction EventEngine::impactFrictionWith(int i, StaticRef ref) const {
-  if (!bodies_.rough) return {};
+const ContactFriction& EventEngine::shapeFriction(StaticRef ref) const {
   const std::vector<ContactFriction>& shapes = ref.kind == StaticKind::Box ? bodies_.boxFriction
                                                : ref.kind == StaticKind::Cylinder
                                                    ? bodies_.cylinderFriction
                                                    : bodies_.planeFriction;
-  return bodies_.impactFriction(i, shapes[ref.index]);
+  return shapes[ref.index];
+}
+
+ImpactFriction EventEngine::impactFrictionWith(int i, StaticRef ref) const {
+  if (!bodies_.rough) return {};
+  return bodies_.impactFriction(i, shapeFriction(ref));
 }
 
 double EventEngine::restitutionWith(int i, StaticRef ref) const {

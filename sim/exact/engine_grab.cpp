@@ -34,6 +34,7 @@ void EventEngine::hold(int i, const Vec3& velocity, RunStats& stats) {
     p.wedged = false;
     p.held = true;
     held_.take(i);
+    refreshFace(i, stats);
   }
   tracks_[i].motion.velocity = velocity;
   changed(i);
@@ -56,6 +57,7 @@ void EventEngine::place(const Vec3& position) {
   if (held_.ball() < 0) return;
   const int i = held_.ball();
   tracks_[i].motion.position = position;
+  if (roughFaces_) spin_[i] = spinAt(i, now_);
   tracks_[i].motion.since = now_;
   cells_.place(i, position);
   changed(i);

@@ -17,6 +17,7 @@ void EventEngine::putToRest(int i, RunStats& stats, const Vec3& settle) {
   tracks_[i].motion.position += settle;
   tracks_[i].motion.velocity.setZero();
   p.resting = true;
+  if (roughFaces_) restOnFace(i);
   changed(i);
   ++stats.restings;
   predictions_[i].contact = {};
@@ -60,6 +61,7 @@ void EventEngine::wake(int i, RunStats& stats) {
     pending.pop_back();
     Particle& p = particles_[k];
     ++stats.wakes;
+    if (roughFaces_) spin_[k] = spinAt(k, now_);
     tracks_[k].motion.since = now_;  // starts to fall from here
     p.collisionsInBurst = 0;
     p.wedged = false;

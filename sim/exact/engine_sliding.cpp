@@ -110,6 +110,79 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   dropPlanesLeft(i);
   keepOnPlane(i);
   changed(i);
+  refreshFace(i, stats);
+}
+
+void EventEngine::refreshFace(int i, RunStats& stats) {
+  if (!roughFaces_) return;
+  FaceContact& face = faces_[i];
+  const Particle& p = particles_[i];
+  // A crease with friction is not modelled yet: the ball slides along it without (issue notes).
+  if (p.slidePlane < 0 || p.creasePlane >= 0 || p.resting || p.held) {
+    face = {};
+    return;
+  }
+  const SlideSurfaces::Surface& surface = slides_.surface(p.slidePlane);
+  const Vec3& n = surface.plane.normal;
+  const double r = bodies_.radius[i];
+  const FaceFrame frame = FaceFrame::of(n, gravity_);
+  const ContactFriction friction = bodies_.contactFriction(i, shapeFriction(surface.owner));
+  Motion& m = tracks_[i].motion;
+  face.motion = faceMotion(m.velocity, spin_[i], r, frame, friction);
+  face.normal = n;
+  face.normalDecay = spinDecayRate(frame, friction, r);
+  face.end = now_ + face.motion.duration;
+  // Rolling is exactly that: the slip's round-off goes.
+  if (face.motion.phase == FacePhase::Rolling)
+    spin_[i] = spin_[i].dot(n) * n + rollingSpin(m.velocity, n, r);
+  changed(i);
+  if (face.motion.phase == FacePhase::Still) putToRest(i, stats);
+}
+
+void EventEngine::restOnFace(int i) {
+  // Resting takes the rolling with the motion. On a face the spin about its normal stays, and
+  // spinning friction takes it down; off any, friction holds the ball and its spin goes.
+  FaceContact& face = faces_[i];
+  const Particle& p = particles_[i];
+  face = {};
+  face.motion.phase = FacePhase::Still;
+  if (p.slidePlane < 0 || p.creasePlane >= 0) {
+    spin_[i].setZero();
+    return;
+  }
+  const SlideSurfaces::Surface& surface = slides_.surface(p.slidePlane);
+  const double r = bodies_.radius[i];
+  face.normal = surface.plane.normal;
+  face.normalDecay = spinDecayRate(FaceFrame::of(face.normal, gravity_),
+                                   bodies_.contactFriction(i, shapeFriction(surface.owner)), r);
+  spin_[i] = spin_[i].dot(face.normal) * face.normal;
+}
+
+void EventEngine::findPhaseEnd(int i) {
+  const Particle& p = particles_[i];
+  if (p.slidePlane < 0 || p.creasePlane >= 0 || p.resting) return;
+  Contact& best = predictions_[i].contact;
+  const double end = faces_[i].end;
+  if (end < best.time && end <= horizon_) best = {end, EventKind::PhaseEnd, i, 0};
+}
+
+void EventEngine::endPhase(int i, RunStats& stats) {
+  moveTo(i, now_);
+  const FaceContact& face = faces_[i];
+  if (!face.motion.turning) {
+    Motion& m = tracks_[i].motion;
+    const Vec3& n = face.normal;
+    // What the closed form says happens now: the slip is zero, or the roll stopped.
+    if (face.motion.phase == FacePhase::Sliding)
+      spin_[i] = spin_[i].dot(n) * n + rollingSpin(m.velocity, n, bodies_.radius[i]);
+    else if (face.motion.phase == FacePhase::Rolling) {
+      m.velocity.setZero();
+      spin_[i] = spin_[i].dot(n) * n;
+    }
+  }
+  ++stats.facePhases;
+  refreshFace(i, stats);
+  if (!particles_[i].resting) predict(i);
 }
 
 void EventEngine::keepOnPlane(int i) {
@@ -150,6 +223,7 @@ void EventEngine::endSlide(int i, RunStats& stats, std::vector<CollisionRecord>*
   moveTo(i, now_);
   particles_[i].slidePlane = particles_[i].creasePlane = -1;
   changed(i);
+  refreshFace(i, stats);
   if (slides_.bendsIntoEnd(surface, tracks_[i].motion, accelerationOf(i))) {
     collideWithStatic(i, slides_.surface(surface).owner, -1, stats, log);
     return;

@@ -26,6 +26,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
       straightPaths_(pathAcceleration.isZero()),
       collapseSpeed_(collapseSpeed),
       now_(now),
+      roughFaces_(bodies.rough && !straightPaths_),
       slides_(bodies, gravity, pathAcceleration),
       // Straight sweeps under gravity are the only paths that are not the true ones.
       books_(straightPaths_, gravity, bodies.ballCount()) {
@@ -50,6 +51,7 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   }
   creaseLine_.resize(n);
   creaseAcceleration_.resize(n);
+  if (roughFaces_) faces_.resize(n);
   for (int i = 0; i < n; ++i) books_.record(i, tracks_[i].motion);
   cells_.build(bodies_, positions());
   predictAll();
@@ -130,6 +132,7 @@ void EventEngine::findStaticContact(int i, const BallPath& path, double until) {
   }
   if (p.slidePlane >= 0 && slides_.surface(p.slidePlane).owner.kind != StaticKind::Plane)
     findSlideEnd(i, path);
+  if (roughFaces_) findPhaseEnd(i);
 }
 
 template <typename ForEachBall>
@@ -233,6 +236,9 @@ void EventEngine::process(int i, RunStats& stats, std::vector<CollisionRecord>* 
     case EventKind::SlideEnd:
       endSlide(i, stats, log);
       return;
+    case EventKind::PhaseEnd:
+      endPhase(i, stats);
+      return;
     case EventKind::Plane:
     case EventKind::Cylinder:
     case EventKind::Box: {
@@ -271,7 +277,7 @@ BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
   const Motion& m = tracks_[ball].motion;
   const Vec3& a = accelerationOf(ball);
-  return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting, spin_[ball]};
+  return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting, spinAt(ball, now_)};
 }
 
 std::vector<BallState> EventEngine::state() const {
@@ -283,26 +289,49 @@ std::vector<BallState> EventEngine::state() const {
 void EventEngine::setVelocities(const std::vector<Vec3>& velocities) {
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
     Particle& p = particles_[i];
-    if (p.resting || p.held) continue;
+    if (p.held) continue;
+    if (p.resting) {
+      spinInPlace(i, velocities[i]);
+      continue;
+    }
     moveTo(i, now_);
     Motion& m = tracks_[i].motion;
     m.velocity = velocities[i];
     if (p.slidePlane >= 0) {
       // A kick of gravity into the plane is held by the plane; a kick away from it lets go.
       dropPlanesLeft(i);
+      const int face = p.creasePlane < 0 ? p.slidePlane : -1;
+      const Vec3 n = face >= 0 ? slides_.surface(face).plane.normal : Vec3::Zero();
+      const double held = -m.velocity.dot(n);
       keepOnPlane(i);
+      // What the face held of the kick is its push for the step, and friction's measure.
+      if (bodies_.rough && face >= 0)
+        applySteppedFriction(m.velocity, spin_[i], bodies_.radius[i], n, held,
+                             bodies_.contactFriction(i, shapeFriction(slides_.surface(face).owner)),
+                             bodies_.tangentialRestitution);
     }
     changed(i);
   }
   predictAll();
 }
 
+void EventEngine::spinInPlace(int i, const Vec3& kick) {
+  const Particle& p = particles_[i];
+  if (!bodies_.rough || p.slidePlane < 0 || p.creasePlane >= 0) return;
+  const SlideSurfaces::Surface& face = slides_.surface(p.slidePlane);
+  Vec3 still = Vec3::Zero();
+  applySteppedFriction(
+      still, spin_[i], bodies_.radius[i], face.plane.normal, -kick.dot(face.plane.normal),
+      bodies_.contactFriction(i, shapeFriction(face.owner)), bodies_.tangentialRestitution);
+}
+
 std::size_t EventEngine::memoryBytes() const {
   return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
          carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
-         carom::memoryBytes(spin_) + books_.memoryBytes() + carom::memoryBytes(restSpeed_) +
-         carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() + carom::memoryBytes(creaseLine_) +
-         carom::memoryBytes(creaseAcceleration_) + cells_.memoryBytes() + queue_.memoryBytes();
+         carom::memoryBytes(spin_) + carom::memoryBytes(faces_) + books_.memoryBytes() +
+         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() +
+         carom::memoryBytes(creaseLine_) + carom::memoryBytes(creaseAcceleration_) +
+         cells_.memoryBytes() + queue_.memoryBytes();
 }
 
 }  // namespace carom

@@ -14,6 +14,7 @@
 // O(neighbours + log N), not O(N).
 
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/face_friction.h"
 #include "sim/dynamics/grab.h"
 #include "sim/dynamics/run_stats.h"
 #include "sim/exact/cell_levels.h"
@@ -61,7 +62,8 @@ class EventEngine {
   void setHorizon(double time) { horizon_ = time; }
 
   // Replaces every ball's velocity at now() (for the integrator kicks of `swept`) and predicts
-  // all events again. The held ball keeps its own.
+  // all events again. The held ball keeps its own; a resting one stays, its velocity only the
+  // kick that its support holds (which spinning friction measures, spinInPlace).
   void setVelocities(const std::vector<Vec3>& velocities);
 
   // The held ball (grab.h, Stepper::hold).
@@ -79,7 +81,8 @@ class EventEngine {
   friend class RestCheck;
 
   // SlideEnd: a ball sliding on a box's face or a capped cylinder's cap reaches its edge or rim.
-  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box, SlideEnd };
+  // PhaseEnd: a ball on a face with friction ends its phase (face_friction.h).
+  enum class EventKind : std::uint8_t { None, Ball, Plane, Cylinder, Box, SlideEnd, PhaseEnd };
   // What a neighbour search reads of every ball, in one cache line.
   struct alignas(64) Track {
     Motion motion;
@@ -117,7 +120,16 @@ class EventEngine {
     const Particle& p = particles_[i];
     if (p.resting || p.held) return zero_;
     if (p.slidePlane < 0) return pathAcceleration_;
-    return p.creasePlane < 0 ? slides_.acceleration(p.slidePlane) : creaseAcceleration_[i];
+    if (p.creasePlane >= 0) return creaseAcceleration_[i];
+    return roughFaces_ ? faces_[i].motion.acceleration : slides_.acceleration(p.slidePlane);
+  }
+  // Ball i's angular velocity at time t (no earlier than its path's start).
+  Vec3 spinAt(int i, double t) const {
+    if (!roughFaces_) return spin_[i];
+    const FaceContact& f = faces_[i];
+    return SpinPath{spin_[i], f.motion.angularAcceleration, f.normal, f.normalDecay,
+                    tracks_[i].motion.since}
+        .at(t);
   }
   // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
   // (a pair that gravity presses together), the same under `exact` and `swept`.
@@ -129,6 +141,7 @@ class EventEngine {
     return gravity_.dot(creaseLine_[i]) * creaseLine_[i];
   }
   void moveTo(int i, double t) {
+    if (roughFaces_) spin_[i] = spinAt(i, t);
     tracks_[i].motion.moveTo(t, accelerationOf(i));
     if (particles_[i].slidePlane >= 0) keepOnPlane(i);
   }
@@ -234,6 +247,19 @@ class EventEngine {
   void updateSlide(int i, RunStats& stats);
   // Puts a sliding ball back on its plane exactly, undoing round-off drift off it.
   void keepOnPlane(int i);
+  // Friction on faces (engine_sliding.cpp), when roughFaces_: the phase of ball i from its state
+  // now (its path starting now), after anything changed it; a ball that is still rests.
+  void refreshFace(int i, RunStats& stats);
+  // The phase's end: a slide's slip or a roll's speed reached zero, exactly, or a turning
+  // phase's direction is taken again.
+  void endPhase(int i, RunStats& stats);
+  void findPhaseEnd(int i);
+  // `swept`: a resting ball on a face, kicked by `kick` that the face holds, spins down.
+  void spinInPlace(int i, const Vec3& kick);
+  // Ball i, at rest now, keeps only its spin about the face it rests on, if any.
+  void restOnFace(int i);
+  // The friction coefficients of static shape `ref`.
+  const ContactFriction& shapeFriction(StaticRef ref) const;
 
   // Resting (engine_resting.cpp).
   // Stops ball i where it is, or moved by `settle` onto the supports that carry it (RestCheck)
@@ -271,8 +297,19 @@ class EventEngine {
   Vec3 zero_ = Vec3::Zero();
   std::vector<Track> tracks_;
   std::vector<Particle> particles_;
-  // Each ball's angular velocity: free flight keeps it, and only impacts with friction change it.
+  // Each ball's angular velocity at its path's start: free flight keeps it, impacts with friction
+  // change it, and so do faces with friction (faces_).
   std::vector<Vec3> spin_;
+  // Friction's phases on faces: only for true paths (`exact`) in a scene with friction; `swept`
+  // takes friction at its kicks instead (setVelocities).
+  bool roughFaces_;
+  struct FaceContact {
+    FaceMotion motion;
+    Vec3 normal = Vec3::Zero();                            // of the face, or zero off any
+    double normalDecay = 0.0;                              // of the spin about it (spinDecayRate)
+    double end = std::numeric_limits<double>::infinity();  // the phase's, absolute
+  };
+  std::vector<FaceContact> faces_;  // per ball, when roughFaces_
   struct Prediction {
     Contact contact;
     CellLevels::Crossing crossing;

@@ -145,6 +145,13 @@ inline ContactFriction larger(const ContactFriction& a, const ContactFriction& b
           a.spinning > b.spinning ? a.spinning : b.spinning};
 }
 
+// What Walton's law of an impact needs (sim/dynamics/response.h): the contact's μ and the
+// world's β.
+struct ImpactFriction {
+  double friction = 0.0;
+  double tangentialRestitution = 0.0;
+};
+
 // Whether the scene asks for friction or spin: any non-zero friction coefficient, β or angular
 // velocity (scene format version 3). A scene that does not runs today's frictionless physics.
 bool usesFriction(const Scene& scene);

@@ -4,6 +4,7 @@
 // penetration and escape figures show what it got wrong.
 
 #include "sim/core/tolerances.h"
+#include "sim/dynamics/face_friction.h"
 #include "sim/dynamics/response.h"
 #include "sim/dynamics/stepper.h"
 #include "sim/stepped/broad_phase.h"
@@ -18,6 +19,10 @@
 
 namespace carom {
 namespace {
+
+// A push out of a static shape above this many times the step's support against gravity is an
+// impact's, and friction takes its measure from it (pushOut).
+constexpr double kImpactPushFactor = 2.0;
 
 struct StaticOverlap {
   Vec3 normal;  // out of the shape, towards the ball
@@ -135,6 +140,7 @@ class DiscreteStepper final : public Stepper {
     const KickSplit split = kickSplit(settings_.integrator);
     const Vec3 before = (pendingKick_ + split.before * h) * settings_.gravity;
     pendingKick_ = split.after * h;
+    stepSeconds_ = h;
     const int n = static_cast<int>(positions_.size());
     for (int i = 0; i < n; ++i) {
       if (i != held_) velocities_[i] += before;
@@ -269,14 +275,24 @@ class DiscreteStepper final : public Stepper {
     toStepEnd(i);
     restoreEnergy(i);
     const double approach = -velocities_[i].dot(n);
+    double push = 0.0;  // the impact's, per unit mass
     if (approach > 0.0) {
       resolveAgainstSurface(velocities_[i], n, restitution, 0.0);
-      if (bodies_.rough) {
-        const ImpactFriction law = bodies_.impactFriction(i, shapeFriction(kind, other));
-        if (law.friction > 0.0)
-          applyImpactFriction(velocities_[i], spins_[i], bodies_.radius[i], n,
-                              velocities_[i].dot(n) + approach, law);
-      }
+      push = velocities_[i].dot(n) + approach;
+    }
+    // Friction's measure: the normal impulse. A ball lying on the shape (on a floor it meets it
+    // with no approach left once its energy is restored, on an incline the restore shifts its
+    // approach) is held against gravity's push into it, the step's support; a push of more than
+    // kImpactPushFactor times that is an impact's.
+    if (bodies_.rough) {
+      // A second pass's push of round-off (notePush) is the same support again.
+      const double support = overlap > tolerance::kTouchFraction * bodies_.radius[i]
+                                 ? std::max(-settings_.gravity.dot(n), 0.0) * stepSeconds_
+                                 : 0.0;
+      applySteppedFriction(velocities_[i], spins_[i], bodies_.radius[i], n,
+                           push > kImpactPushFactor * support ? push : support,
+                           bodies_.contactFriction(i, shapeFriction(kind, other)),
+                           bodies_.tangentialRestitution);
     }
     recordEnergy(i);
     fromStepEnd(i);
@@ -392,6 +408,7 @@ class DiscreteStepper final : public Stepper {
   std::vector<double> energyExcess_;     // not yet taken back (restoreSpecificEnergy)
   StepClock clock_;
   double pendingKick_ = 0.0;
+  double stepSeconds_ = 0.0;  // of the step being taken
   std::vector<Vec3> positions_;
   std::vector<Vec3> velocities_;
   std::vector<Vec3> spins_;  // angular velocities: only impacts with friction change them
