@@ -200,8 +200,8 @@ class SceneFileTest : public QObject {
         "version: must be at least 1 (got 0)");
     row("version negative", R"({"format": "carom-scene", "version": -3})",
         "version: must be at least 1 (got -3)");
-    row("version newer", R"({"format": "carom-scene", "version": 3, "balls": 5})",
-        "version: version 3 was written by a newer Carom; this one reads version 2");
+    row("version newer", R"({"format": "carom-scene", "version": 4, "balls": 5})",
+        "version: version 4 was written by a newer Carom; this one reads version 3");
     // Boxes (version 2).
     row("box without half extents", documentVersion2(R"("boxes": [{"center": [0,0,0]}])"),
         "boxes[0].halfExtents: is required but missing");
