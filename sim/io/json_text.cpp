@@ -16,7 +16,7 @@ QStringList keyList(std::span<const std::string_view> keys) {
 }
 
 const KnownKeys& knownKeys(int version) {
-  static const auto of = [](int v) {
+  const auto of = [](int v) {
     const format::VersionKeys keys = format::versionKeys(v);
     return KnownKeys{keyList(keys.top),      keyList(keys.world), keyList(keys.plane),
                      keyList(keys.cylinder), keyList(keys.box),   keyList(keys.ball)};
