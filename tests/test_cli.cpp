@@ -930,7 +930,7 @@ class TestCli : public QObject {
                                      << QStringList{"object", "array"};
     QTest::newRow("no format") << QByteArray(R"({"version": 1})")
                                << QStringList{"format", "missing"};
-    QTest::newRow("newer version") << sceneText("", 3) << QStringList{"version 3", "newer"};
+    QTest::newRow("newer version") << sceneText("", 4) << QStringList{"version 4", "newer"};
     QTest::newRow("wrong type") << sceneText(
                                        R"("balls": [{"position": [0, 0, 0], "radius": "big"}])")
                                 << QStringList{"balls[0].radius", "number", "string"};

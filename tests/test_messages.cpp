@@ -273,6 +273,16 @@ void TestMessages::everyProblemHasItsWords() {
              s.boxes[0].rotation = carom::Rotation{Vec3::UnitY(), 1e13};
            }),
            QString("Rotation of Box 0 must lie within ±1e+12° (got 1e+13°)"));
+  QCOMPARE(words([](Scene& s) { s.balls[0].angularVelocity.x() = 1e13; }),
+           QString("Angular velocity of first must lie within ±1e+12 rad/s (got 1e+13 rad/s)"));
+  QCOMPARE(words([](Scene& s) { s.boxes[0].friction = -1; }),
+           QString("Friction of Box 0 must be between 0 and 1,000,000 (got -1)"));
+  QCOMPARE(words([](Scene& s) { s.planes[1].rollingResistance = std::nan(""); }),
+           QString("Rolling resistance of Plane 1 must be a finite number"));
+  QCOMPARE(words([](Scene& s) { s.world.spinningFriction = 2e6; }),
+           QString("Spinning friction must be between 0 and 1,000,000 (got 2,000,000)"));
+  QCOMPARE(words([](Scene& s) { s.world.tangentialRestitution = 1.5; }),
+           QString("Tangential restitution must be between 0 and 1 (got 1.5)"));
   QCOMPARE(words([](Scene& s) { s.balls[0].position.x() = 1.2; }),
            QString("first would overlap Box 0 by 0.2 m"));
   // A name too long for the file is named by the name it has, elided as the Outline elides it.

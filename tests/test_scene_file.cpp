@@ -37,6 +37,9 @@ using carom::Scene;
 using carom::Vec3;
 using carom::io::SceneLoadResult;
 
+using SceneEdit = std::function<void(Scene&)>;
+Q_DECLARE_METATYPE(SceneEdit)
+
 namespace {
 
 const QString kSource = "test.json";
@@ -51,6 +54,11 @@ QByteArray document(const QByteArray& body) {
 // The same in version 2, which adds boxes.
 QByteArray documentVersion2(const QByteArray& body) {
   return R"({"format": "carom-scene", "version": 2, )" + body + "}";
+}
+
+// The same in version 3, which adds friction and spin.
+QByteArray documentVersion3(const QByteArray& body) {
+  return R"({"format": "carom-scene", "version": 3, )" + body + "}";
 }
 
 carom::io::SceneLoadResult parse(const QByteArray& json) {
@@ -116,7 +124,9 @@ bool same(const std::optional<double>& a, const std::optional<double>& b) {
   return a.has_value() == b.has_value() && (!a || same(*a, *b));
 }
 bool same(const carom::ObjectInfo& a, const carom::ObjectInfo& b) {
-  return same(a.restitution, b.restitution) && a.name == b.name && a.color == b.color &&
+  return same(a.restitution, b.restitution) && same(a.friction, b.friction) &&
+         same(a.rollingResistance, b.rollingResistance) &&
+         same(a.spinningFriction, b.spinningFriction) && a.name == b.name && a.color == b.color &&
          a.extra == b.extra;
 }
 
@@ -125,7 +135,10 @@ QString difference(const Scene& a, const Scene& b) {
   const auto& wa = a.world;
   const auto& wb = b.world;
   if (!same(wa.gravity, wb.gravity) || !same(wa.timeStep, wb.timeStep) ||
-      !same(wa.restitution, wb.restitution) || wa.method != wb.method ||
+      !same(wa.restitution, wb.restitution) || !same(wa.friction, wb.friction) ||
+      !same(wa.rollingResistance, wb.rollingResistance) ||
+      !same(wa.spinningFriction, wb.spinningFriction) ||
+      !same(wa.tangentialRestitution, wb.tangentialRestitution) || wa.method != wb.method ||
       wa.integrator != wb.integrator || wa.extra != wb.extra)
     return "world";
   if (a.extra != b.extra) return "extra";
@@ -156,7 +169,8 @@ QString difference(const Scene& a, const Scene& b) {
   for (std::size_t i = 0; i < a.balls.size(); ++i) {
     const auto &ba = a.balls[i], &bb = b.balls[i];
     if (!same(ba.position, bb.position) || !same(ba.velocity, bb.velocity) ||
-        !same(ba.radius, bb.radius) || !same(ba.mass, bb.mass) || !same(ba, bb))
+        !same(ba.angularVelocity, bb.angularVelocity) || !same(ba.radius, bb.radius) ||
+        !same(ba.mass, bb.mass) || !same(ba, bb))
       return QString("balls[%1]").arg(i);
   }
   return QString();
@@ -200,8 +214,8 @@ class SceneFileTest : public QObject {
         "version: must be at least 1 (got 0)");
     row("version negative", R"({"format": "carom-scene", "version": -3})",
         "version: must be at least 1 (got -3)");
-    row("version newer", R"({"format": "carom-scene", "version": 3, "balls": 5})",
-        "version: version 3 was written by a newer Carom; this one reads version 2");
+    row("version newer", R"({"format": "carom-scene", "version": 4, "balls": 5})",
+        "version: version 4 was written by a newer Carom; this one reads version 3");
     // Boxes (version 2).
     row("box without half extents", documentVersion2(R"("boxes": [{"center": [0,0,0]}])"),
         "boxes[0].halfExtents: is required but missing");
@@ -381,6 +395,44 @@ class SceneFileTest : public QObject {
         document(R"("planes": [{"point": [0,0,0], "normal": [0,1,0]}],)"
                  R"( "balls": [{"position": [0,-0.25,0], "radius": 0.5}])"),
         "balls[0].position: overlaps planes[0] (is 0.25 behind its surface)");
+    // Friction and spin (version 3).
+    row("angular velocity of two numbers",
+        documentVersion3(R"("balls": [{"position": [0,0,0], "radius": 1,)"
+                         R"( "angularVelocity": [1, 2]}])"),
+        "balls[0].angularVelocity: expected an array of 3 numbers, got an array of 2 values");
+    row("angular velocity a string",
+        documentVersion3(R"("balls": [{"position": [0,0,0], "radius": 1,)"
+                         R"( "angularVelocity": "fast"}])"),
+        "balls[0].angularVelocity: expected an array of 3 numbers, got a string");
+    row("angular velocity absurd",
+        documentVersion3(R"("balls": [{"position": [0,0,0], "radius": 1,)"
+                         R"( "angularVelocity": [0, 1e13, 0]}])"),
+        "balls[0].angularVelocity: must be at most 1e12 in magnitude (got 1e13)");
+    row("ball friction negative",
+        documentVersion3(R"("balls": [{"position": [0,0,0], "radius": 1, "friction": -0.5}])"),
+        "balls[0].friction: must be between 0 and 1e6 (got -0.5)");
+    row("plane rolling resistance absurd",
+        documentVersion3(R"("planes": [{"point": [0,0,0], "normal": [0,1,0],)"
+                         R"( "rollingResistance": 1e300}])"),
+        "planes[0].rollingResistance: must be between 0 and 1e6 (got 1e300)");
+    row("cylinder spinning friction null",
+        documentVersion3(R"("cylinders": [{"point": [0,0,0], "axis": [0,1,0], "radius": 1,)"
+                         R"( "spinningFriction": null}])"),
+        "cylinders[0].spinningFriction: expected a number, got null");
+    row("box friction a string",
+        documentVersion3(R"("boxes": [{"center": [0,0,0], "halfExtents": [1,1,1],)"
+                         R"( "friction": "rough"}])"),
+        "boxes[0].friction: expected a number, got a string");
+    row("world friction negative", documentVersion3(R"("world": {"friction": -1})"),
+        "world.friction: must be between 0 and 1e6 (got -1)");
+    row("world spinning friction absurd", documentVersion3(R"("world": {"spinningFriction": 1e7})"),
+        "world.spinningFriction: must be between 0 and 1e6 (got 1e7)");
+    row("tangential restitution above one",
+        documentVersion3(R"("world": {"tangentialRestitution": 1.5})"),
+        "world.tangentialRestitution: must be between 0 and 1 (got 1.5)");
+    row("tangential restitution negative",
+        documentVersion3(R"("world": {"tangentialRestitution": -0.5})"),
+        "world.tangentialRestitution: must be between 0 and 1 (got -0.5)");
     row("ball overlaps cylinder",
         document(R"("cylinders": [{"point": [0,0,0], "axis": [0,0,1], "radius": 1}],)"
                  R"( "balls": [{"position": [1.25,0,5], "radius": 0.5}])"),
@@ -696,6 +748,190 @@ class SceneFileTest : public QObject {
     QCOMPARE(difference(*versionOneAgain.scene, *versionOne.scene), QString());
   }
 
+  // Friction and spin are version 3: every new field of every kind of object and of the world is
+  // written, read back by both readers as the same scene, and written again as the same bytes.
+  // A ball with unknown keys is written by another path than the others: both give its keys in
+  // the same order.
+  void frictionRoundTripsInVersionThree() {
+    Scene scene;
+    scene.world.friction = 0.5;
+    scene.world.rollingResistance = 0.01;
+    scene.world.spinningFriction = 0.02;
+    scene.world.tangentialRestitution = 0.25;
+    carom::Plane floor;
+    floor.friction = 0.75;
+    floor.rollingResistance = 0.0;
+    floor.spinningFriction = 0.1;
+    scene.planes.push_back(floor);
+    carom::Cylinder post;
+    post.point = Vec3(5, 0, 0);
+    post.radius = 0.5;
+    post.friction = 2.5;
+    post.rollingResistance = 1e-9;
+    post.spinningFriction = 1e6;
+    scene.cylinders.push_back(post);
+    Box box;
+    box.center = Vec3(-5, 1, 0);
+    box.friction = 0.125;
+    box.rollingResistance = 3e-3;
+    box.spinningFriction = 0.0;
+    scene.boxes.push_back(box);
+    Ball spinning;
+    spinning.position = Vec3(0, 2, 0);
+    spinning.angularVelocity = Vec3(-1.5, 1e-300, 40);
+    spinning.restitution = 0.5;
+    spinning.friction = 0.25;
+    spinning.rollingResistance = 0.125;
+    spinning.spinningFriction = 0.0625;
+    scene.balls.push_back(spinning);
+    Ball tagged = spinning;
+    tagged.position = Vec3(3, 2, 0);
+    tagged.extra = R"({"tags":["x"]})";
+    scene.balls.push_back(tagged);
+    Ball plain;
+    plain.position = Vec3(9, 2, 0);
+    scene.balls.push_back(plain);
+
+    const QByteArray saved = carom::io::serializeScene(scene);
+    QVERIFY2(saved.contains("\"version\": 3,"), saved.constData());
+    QVERIFY2(saved.contains("\"restitution\": 1,\n    \"friction\": 0.5,\n    "
+                            "\"rollingResistance\": 0.01,\n    \"spinningFriction\": 0.02,\n    "
+                            "\"tangentialRestitution\": 0.25,\n    \"method\""),
+             saved.constData());
+    const QByteArray ballKeys =
+        "\"velocity\": [0, 0, 0], \"angularVelocity\": [-1.5, 1e-300, 40], \"radius\": 1, "
+        "\"mass\": 1, \"restitution\": 0.5, \"friction\": 0.25, \"rollingResistance\": 0.125, "
+        "\"spinningFriction\": 0.0625";
+    QVERIFY2(saved.contains("{\"position\": [0, 2, 0], " + ballKeys + "}"), saved.constData());
+    QVERIFY2(saved.contains("{\"position\": [3, 2, 0], " + ballKeys + ", \"tags\": [\"x\"]}"),
+             saved.constData());
+    // What a scene does not give is not written: no spin, no coefficients of its own.
+    QVERIFY2(saved.contains("{\"position\": [9, 2, 0], \"velocity\": [0, 0, 0], \"radius\": 1, "
+                            "\"mass\": 1}"),
+             saved.constData());
+
+    const SceneLoadResult named = carom::io::parseSceneNamingErrors(saved, kSource);
+    QVERIFY2(named.scene, qPrintable(named.error));
+    QCOMPARE(difference(*named.scene, scene), QString());
+    QVERIFY(*named.scene == scene);
+    const std::optional<Scene> streamed = carom::io::readSceneStreaming(
+        std::string_view(saved.constData(), static_cast<std::size_t>(saved.size())));
+    QVERIFY(streamed);
+    QCOMPARE(difference(*streamed, scene), QString());
+    QVERIFY(*streamed == scene);
+    QCOMPARE(carom::io::serializeScene(*named.scene), saved);
+  }
+
+  // A scene is written in the oldest version that holds it: any one of friction's values makes
+  // it version 3, a coefficient given as 0 too (older versions have no key to keep it in).
+  void versionWrittenIsTheOldestThatHoldsIt_data() {
+    QTest::addColumn<SceneEdit>("edit");
+    QTest::addColumn<int>("version");
+    const auto row = [](const char* name, SceneEdit edit, int version) {
+      QTest::newRow(name) << edit << version;
+    };
+    row(
+        "frictionless", [](Scene&) {}, 1);
+    row(
+        "frictionless with a box", [](Scene& s) { s.boxes.push_back(Box()); }, 2);
+    row(
+        "world friction", [](Scene& s) { s.world.friction = 0.5; }, 3);
+    row(
+        "world rolling resistance", [](Scene& s) { s.world.rollingResistance = 1e-3; }, 3);
+    row(
+        "world spinning friction", [](Scene& s) { s.world.spinningFriction = 1e-3; }, 3);
+    row(
+        "tangential restitution", [](Scene& s) { s.world.tangentialRestitution = 1; }, 3);
+    row(
+        "plane friction", [](Scene& s) { s.planes[0].friction = 0.5; }, 3);
+    row(
+        "cylinder rolling resistance", [](Scene& s) { s.cylinders[0].rollingResistance = 0.5; }, 3);
+    row(
+        "box spinning friction",
+        [](Scene& s) {
+          s.boxes.push_back(Box());
+          s.boxes[0].spinningFriction = 0.5;
+        },
+        3);
+    row(
+        "ball friction", [](Scene& s) { s.balls[0].friction = 0.5; }, 3);
+    row(
+        "ball friction given as zero", [](Scene& s) { s.balls[0].friction = 0.0; }, 3);
+    row(
+        "ball spin", [](Scene& s) { s.balls[0].angularVelocity.z() = 1e-9; }, 3);
+  }
+
+  void versionWrittenIsTheOldestThatHoldsIt() {
+    QFETCH(SceneEdit, edit);
+    QFETCH(int, version);
+    Scene scene;
+    scene.planes.push_back(carom::Plane());
+    carom::Cylinder post;
+    post.point = Vec3(5, 0, 0);
+    post.radius = 0.5;
+    scene.cylinders.push_back(post);
+    Ball ball;
+    ball.position = Vec3(0, 2, 0);
+    scene.balls.push_back(ball);
+    edit(scene);
+    const QByteArray saved = carom::io::serializeScene(scene);
+    QVERIFY2(saved.contains(QString("\"version\": %1,").arg(version).toUtf8()), saved.constData());
+    const SceneLoadResult loaded = parse(saved);
+    QVERIFY2(loaded.scene, qPrintable(loaded.error));
+    QVERIFY(*loaded.scene == scene);
+  }
+
+  // In versions 1 and 2 friction's keys are ones they do not know: kept as they are, by both
+  // readers, and written back as they came in the same version.
+  void frictionKeysAreUnknownBeforeVersionThree_data() {
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<int>("version");
+    const QByteArray objects =
+        R"("world": {"friction": 0.5, "rollingResistance": 0.1, "spinningFriction": 0.2,)"
+        R"( "tangentialRestitution": 0.3},)"
+        R"( "planes": [{"point": [0,0,0], "normal": [0,1,0], "friction": 0.5}],)"
+        R"( "cylinders": [{"point": [5,0,0], "axis": [0,1,0], "radius": 0.5,)"
+        R"( "rollingResistance": 0.5}],)"
+        R"( "balls": [{"position": [0,2,0], "radius": 1, "angularVelocity": [1,2,3],)"
+        R"( "spinningFriction": 0.5}])";
+    QTest::newRow("version 1") << document(objects) << 1;
+    QTest::newRow("version 2") << documentVersion2(
+                                      objects +
+                                      R"(, "boxes": [{"center": [-5,1,0], "halfExtents": [1,1,1],)"
+                                      R"( "friction": 0.5}])")
+                               << 2;
+  }
+
+  void frictionKeysAreUnknownBeforeVersionThree() {
+    QFETCH(QByteArray, json);
+    QFETCH(int, version);
+    const SceneLoadResult named = carom::io::parseSceneNamingErrors(json, kSource);
+    QVERIFY2(named.scene, qPrintable(named.error));
+    const Scene& scene = *named.scene;
+    QVERIFY(!carom::usesFriction(scene));
+    QCOMPARE(scene.world.extra,
+             std::string(R"({"friction":0.5,"rollingResistance":0.1,"spinningFriction":0.2,)"
+                         R"("tangentialRestitution":0.3})"));
+    QCOMPARE(scene.planes.at(0).extra, std::string(R"({"friction":0.5})"));
+    QVERIFY(!scene.planes[0].friction);
+    QCOMPARE(scene.cylinders.at(0).extra, std::string(R"({"rollingResistance":0.5})"));
+    QCOMPARE(scene.balls.at(0).extra,
+             std::string(R"({"angularVelocity":[1,2,3],"spinningFriction":0.5})"));
+    QVERIFY(scene.balls[0].angularVelocity.isZero(0.0));
+    if (version == 2) QCOMPARE(scene.boxes.at(0).extra, std::string(R"({"friction":0.5})"));
+    const std::optional<Scene> streamed = carom::io::readSceneStreaming(
+        std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
+    QVERIFY(streamed);
+    QVERIFY(*streamed == scene);
+
+    const QByteArray saved = carom::io::serializeScene(scene);
+    QVERIFY2(saved.contains(QString("\"version\": %1,").arg(version).toUtf8()), saved.constData());
+    QVERIFY2(saved.contains("\"angularVelocity\": [1,2,3]"), saved.constData());
+    const SceneLoadResult again = parse(saved);
+    QVERIFY2(again.scene, qPrintable(again.error));
+    QVERIFY(*again.scene == scene);
+  }
+
   // The streaming reader takes what the writer writes, and every field it can hold, without
   // turning to the reader that names errors.
   void ownFilesTakeTheStreamingReader() {
@@ -790,6 +1026,29 @@ class SceneFileTest : public QObject {
         << document(R"("world": {"method": "swept", "tolerance": [1e-4, 0.1]})") << false;
     QTest::newRow("a tolerance of one number")
         << document(R"("world": {"method": "auto", "tolerance": [1e-4]})") << false;
+    QTest::newRow("friction and spin")
+        << documentVersion3(
+               R"("world": {"friction": 0.5, "rollingResistance": 1e-3, "spinningFriction": 2,)"
+               R"( "tangentialRestitution": 1},)"
+               R"( "planes": [{"point": [0,0,0], "normal": [0,1,0], "friction": 0.25,)"
+               R"( "rollingResistance": 0, "spinningFriction": 1e6}],)"
+               R"( "cylinders": [{"point": [5,0,0], "axis": [0,1,0], "radius": 0.5,)"
+               R"( "friction": 0.1}],)"
+               R"( "boxes": [{"center": [-5,1,0], "halfExtents": [1,1,1], "spinningFriction": 3}],)"
+               R"( "balls": [{"position": [0,2,0], "radius": 1, "angularVelocity": [1,-2,3],)"
+               R"( "friction": 0.5, "rollingResistance": 0.25, "spinningFriction": 0.125}])")
+        << true;
+    QTest::newRow("friction's keys in version 2")
+        << documentVersion2(R"("world": {"friction": 0.5},)"
+                            R"( "balls": [{"position": [0,2,0], "radius": 1,)"
+                            R"( "angularVelocity": [1, 2], "friction": "x"}])")
+        << true;
+    QTest::newRow("angular velocity of two numbers")
+        << documentVersion3(R"("balls": [{"position": [0,2,0], "radius": 1,)"
+                            R"( "angularVelocity": [1, 2]}])")
+        << false;
+    QTest::newRow("friction a string")
+        << documentVersion3(R"("world": {"friction": "rough"})") << false;
   }
 
   void streamingReaderAgreesOrGivesUp() {

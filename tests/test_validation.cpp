@@ -131,6 +131,27 @@ class ValidationTest : public QObject {
     row(
         "world restitution inf", [](Scene& s) { s.world.restitution = kInf; },
         "world.restitution: must be finite");
+    row(
+        "world friction negative", [](Scene& s) { s.world.friction = -0.5; },
+        "world.friction: must be between 0 and 1e6 (got -0.5)");
+    row(
+        "world friction nan", [](Scene& s) { s.world.friction = kNaN; },
+        "world.friction: must be finite");
+    row(
+        "world rolling resistance inf", [](Scene& s) { s.world.rollingResistance = kInf; },
+        "world.rollingResistance: must be finite");
+    row(
+        "world spinning friction huge", [](Scene& s) { s.world.spinningFriction = 2e6; },
+        "world.spinningFriction: must be between 0 and 1e6 (got 2e6)");
+    row(
+        "tangential restitution high", [](Scene& s) { s.world.tangentialRestitution = 1.5; },
+        "world.tangentialRestitution: must be between 0 and 1 (got 1.5)");
+    row(
+        "tangential restitution negative", [](Scene& s) { s.world.tangentialRestitution = -0.25; },
+        "world.tangentialRestitution: must be between 0 and 1 (got -0.25)");
+    row(
+        "tangential restitution nan", [](Scene& s) { s.world.tangentialRestitution = kNaN; },
+        "world.tangentialRestitution: must be finite");
 
     row(
         "plane point inf", [](Scene& s) { s.planes[0].point.x() = kInf; },
@@ -153,6 +174,12 @@ class ValidationTest : public QObject {
     row(
         "plane restitution high", [](Scene& s) { s.planes[0].restitution = 2.0; },
         "planes[0].restitution: must be between 0 and 1 (got 2)");
+    row(
+        "plane friction negative", [](Scene& s) { s.planes[0].friction = -1.0; },
+        "planes[0].friction: must be between 0 and 1e6 (got -1)");
+    row(
+        "plane rolling resistance nan", [](Scene& s) { s.planes[0].rollingResistance = kNaN; },
+        "planes[0].rollingResistance: must be finite");
     row(
         "plane colour name", [](Scene& s) { s.planes[0].color = "red"; },
         "planes[0].color: must be empty or \"#rrggbb\" (got \"red\")");
@@ -188,6 +215,13 @@ class ValidationTest : public QObject {
         "cylinder restitution low", [](Scene& s) { s.cylinders[0].restitution = -1.0; },
         "cylinders[0].restitution: must be between 0 and 1 (got -1)");
     row(
+        "cylinder spinning friction negative",
+        [](Scene& s) { s.cylinders[0].spinningFriction = -1e-3; },
+        "cylinders[0].spinningFriction: must be between 0 and 1e6 (got -0.001)");
+    row(
+        "cylinder friction inf", [](Scene& s) { s.cylinders[0].friction = kInf; },
+        "cylinders[0].friction: must be finite");
+    row(
         "cylinder colour", [](Scene& s) { s.cylinders[0].color = "#1234567"; },
         "cylinders[0].color: must be empty or \"#rrggbb\" (got \"#1234567\")");
 
@@ -203,6 +237,15 @@ class ValidationTest : public QObject {
     row(
         "ball velocity absurd", [](Scene& s) { s.balls[1].velocity.z() = -1e13; },
         "balls[1].velocity: must be at most 1e12 in magnitude (got -1e13)");
+    row(
+        "ball angular velocity nan", [](Scene& s) { s.balls[1].angularVelocity.x() = kNaN; },
+        "balls[1].angularVelocity: must be finite");
+    row(
+        "ball angular velocity inf", [](Scene& s) { s.balls[1].angularVelocity.y() = -kInf; },
+        "balls[1].angularVelocity: must be finite");
+    row(
+        "ball angular velocity absurd", [](Scene& s) { s.balls[1].angularVelocity.z() = 1e13; },
+        "balls[1].angularVelocity: must be at most 1e12 in magnitude (got 1e13)");
     row(
         "ball radius zero", [](Scene& s) { s.balls[1].radius = 0; },
         "balls[1].radius: must be positive (got 0)");
@@ -235,6 +278,15 @@ class ValidationTest : public QObject {
     row(
         "ball restitution nan", [](Scene& s) { s.balls[1].restitution = kNaN; },
         "balls[1].restitution: must be finite");
+    row(
+        "ball friction huge", [](Scene& s) { s.balls[1].friction = 1e7; },
+        "balls[1].friction: must be between 0 and 1e6 (got 1e7)");
+    row(
+        "ball rolling resistance negative", [](Scene& s) { s.balls[1].rollingResistance = -2; },
+        "balls[1].rollingResistance: must be between 0 and 1e6 (got -2)");
+    row(
+        "ball spinning friction nan", [](Scene& s) { s.balls[1].spinningFriction = kNaN; },
+        "balls[1].spinningFriction: must be finite");
     row(
         "ball colour", [](Scene& s) { s.balls[1].color = "blue"; },
         "balls[1].color: must be empty or \"#rrggbb\" (got \"blue\")");
@@ -278,6 +330,12 @@ class ValidationTest : public QObject {
     row(
         "box restitution high", [](Scene& s) { s.boxes[0].restitution = 2; },
         "boxes[0].restitution: must be between 0 and 1 (got 2)");
+    row(
+        "box rolling resistance negative", [](Scene& s) { s.boxes[0].rollingResistance = -0.5; },
+        "boxes[0].rollingResistance: must be between 0 and 1e6 (got -0.5)");
+    row(
+        "box friction huge", [](Scene& s) { s.boxes[0].friction = 1.5e6; },
+        "boxes[0].friction: must be between 0 and 1e6 (got 1500000)");
     row(
         "ball overlaps box", [](Scene& s) { s.balls[1].position = Vec3(-4.25, 1, 0); },
         "balls[1].position: overlaps boxes[0] by 0.25");
@@ -387,6 +445,36 @@ class ValidationTest : public QObject {
     scene.planes.resize(carom::tolerance::kMaxPlanes);
     for (Plane& plane : scene.planes) plane.point = Vec3(0, -10, 0);
     QVERIFY(carom::validateScene(scene).empty());
+  }
+
+  // Friction coefficients from 0 to kMaxFriction, β from 0 to 1 and any angular velocity within
+  // the magnitude limit are accepted, on the world and on every kind of object; the check of an
+  // edit refuses what the whole scene's does.
+  void frictionLimitsHoldForScenesAndEdits() {
+    constexpr double kMax = carom::tolerance::kMaxFriction;
+    for (const double coefficient : {0.0, kMax}) {
+      Scene scene = baseScene();
+      carom::World& world = scene.world;
+      world.friction = world.rollingResistance = world.spinningFriction = coefficient;
+      world.tangentialRestitution = coefficient == 0.0 ? 0.0 : 1.0;
+      const auto give = [coefficient](carom::ObjectInfo& info) {
+        info.friction = info.rollingResistance = info.spinningFriction = coefficient;
+      };
+      give(scene.planes[0]);
+      give(scene.cylinders[0]);
+      give(scene.boxes[0]);
+      give(scene.balls[0]);
+      scene.balls[0].angularVelocity = Vec3(-1e12, 0, 1e12);
+      QCOMPARE(texts(carom::validateScene(scene)), QStringList());
+      QCOMPARE(texts(carom::validateObjects(scene, {{0}, {0}, {0}, {0}})), QStringList());
+    }
+    Scene bad = baseScene();
+    bad.boxes[0].spinningFriction = -1;
+    bad.balls[1].angularVelocity.x() = kNaN;
+    const QStringList refused{"boxes[0].spinningFriction: must be between 0 and 1e6 (got -1)",
+                              "balls[1].angularVelocity: must be finite"};
+    QCOMPARE(texts(carom::validateScene(bad)), refused);
+    QCOMPARE(texts(carom::validateObjects(bad, {{}, {}, {0}, {1}})), refused);
   }
 
   // A name is limited in characters (code points of its UTF-8), for every kind of object, with
@@ -511,6 +599,27 @@ class ValidationTest : public QObject {
     QCOMPARE(e.problem, P::BadColor);
     QCOMPARE(e.field, F::Color);
     QCOMPARE(e.quoted, std::string("red"));
+
+    e = only(carom::validateScene(edited([](Scene& s) { s.boxes[0].friction = -1; })));
+    QCOMPARE(e.problem, P::NotBetween);
+    QVERIFY(e.object == (ValidationObject{S::Boxes, 0}));
+    QCOMPARE(e.field, F::Friction);
+    QCOMPARE(e.low, 0.0);
+    QCOMPARE(e.high, carom::tolerance::kMaxFriction);
+    e = only(carom::validateScene(edited([](Scene& s) { s.world.spinningFriction = kInf; })));
+    QCOMPARE(e.problem, P::NotFinite);
+    QCOMPARE(e.field, F::SpinningFriction);
+    e = only(carom::validateScene(edited([](Scene& s) { s.planes[0].rollingResistance = 2e6; })));
+    QCOMPARE(e.field, F::RollingResistance);
+    e = only(carom::validateScene(edited([](Scene& s) { s.world.tangentialRestitution = 2; })));
+    QCOMPARE(e.path, std::string("world.tangentialRestitution"));
+    QCOMPARE(e.field, F::TangentialRestitution);
+    QCOMPARE(e.high, 1.0);
+    e = only(
+        carom::validateScene(edited([](Scene& s) { s.balls[0].angularVelocity.y() = -2e12; })));
+    QCOMPARE(e.problem, P::TooLarge);
+    QCOMPARE(e.field, F::AngularVelocity);
+    QCOMPARE(e.value, -2e12);
 
     e = only(
         carom::validateScene(edited([](Scene& s) { s.balls[0].name = std::string(300, 'n'); })));

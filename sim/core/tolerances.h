@@ -49,6 +49,9 @@ inline constexpr double kMinMass = 1e-30;
 inline constexpr double kMaxMass = 1e30;
 inline constexpr double kMinTimeStep = 1e-12;
 inline constexpr double kMaxTimeStep = 1e6;
+// Friction coefficients (sliding, rolling, spinning): real materials stay below a few, and one
+// of 1e6 already holds every contact as if glued.
+inline constexpr double kMaxFriction = 1e6;
 inline constexpr double kMinDirectionLength = 1e-100;
 inline constexpr std::size_t kMaxBalls = 1'000'000;
 inline constexpr std::size_t kMaxPlanes = 10'000;

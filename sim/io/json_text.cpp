@@ -2,8 +2,10 @@
 
 #include "sim/validation/validation.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <iterator>
 
 namespace carom::io {
 
@@ -11,6 +13,18 @@ QStringList keyList(std::span<const std::string_view> keys) {
   QStringList list;
   for (std::string_view key : keys) list << QString::fromLatin1(key.data(), qsizetype(key.size()));
   return list;
+}
+
+const KnownKeys& knownKeys(int version) {
+  const auto of = [](int v) {
+    const format::VersionKeys keys = format::versionKeys(v);
+    return KnownKeys{keyList(keys.top),      keyList(keys.world), keyList(keys.plane),
+                     keyList(keys.cylinder), keyList(keys.box),   keyList(keys.ball)};
+  };
+  // One per version, from 1.
+  static const KnownKeys kVersions[] = {of(1), of(2), of(3)};
+  static_assert(std::size(kVersions) == format::kVersion);
+  return kVersions[std::clamp(version, 1, format::kVersion) - 1];
 }
 
 void appendNumber(std::string& out, double value) {

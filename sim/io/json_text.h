@@ -16,14 +16,11 @@ namespace carom::io {
 
 QStringList keyList(std::span<const std::string_view> keys);
 
-inline const QStringList kTopKeys = keyList(format::kTopKeys);
-inline const QStringList kTopKeysVersion1 = keyList(format::kTopKeysVersion1);
-inline const QStringList kWorldKeys = keyList(format::kWorldKeys);
-inline const QStringList kPlaneKeys = keyList(format::kPlaneKeys);
-inline const QStringList kCylinderKeys = keyList(format::kCylinderKeys);
-inline const QStringList kCylinderKeysVersion1 = keyList(format::kCylinderKeysVersion1);
-inline const QStringList kBoxKeys = keyList(format::kBoxKeys);
-inline const QStringList kBallKeys = keyList(format::kBallKeys);
+// The keys of each object a file of `version` knows (format::versionKeys), as Qt strings.
+struct KnownKeys {
+  QStringList top, world, plane, cylinder, box, ball;
+};
+const KnownKeys& knownKeys(int version);
 
 // The shortest text that reads back as the same double, as QByteArray::number(value, 'g',
 // QLocale::FloatingPointShortest) spells it (fixed unless scientific is shorter, and a nought

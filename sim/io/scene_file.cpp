@@ -40,6 +40,7 @@ namespace carom::io {
 namespace {
 
 using format::kFirstVersionWithBoxes;
+using format::kFirstVersionWithFriction;
 constexpr int kFormatVersion = format::kVersion;
 const QString kFormatName = QString::fromLatin1(format::kName.data(), format::kName.size());
 
@@ -179,8 +180,13 @@ class ObjectReader {
   const QStringList& knownKeys_;
 };
 
-void readInfo(const ObjectReader& reader, ObjectInfo& info) {
+void readInfo(const ObjectReader& reader, int version, ObjectInfo& info) {
   info.restitution = reader.optionalNumber("restitution");
+  if (version >= kFirstVersionWithFriction) {
+    info.friction = reader.optionalNumber("friction");
+    info.rollingResistance = reader.optionalNumber("rollingResistance");
+    info.spinningFriction = reader.optionalNumber("spinningFriction");
+  }
   info.name = reader.optionalString("name");
   info.color = reader.optionalString("color");
   info.extra = reader.extra();
@@ -228,13 +234,20 @@ std::vector<std::string_view> fileMethodNames() {
   return names;
 }
 
-World readWorld(const QJsonObject& object) {
-  const ObjectReader reader(object, "world", kWorldKeys);
+World readWorld(const QJsonObject& object, int version) {
+  const ObjectReader reader(object, "world", knownKeys(version).world);
   const World defaults;
   World world;
   world.gravity = reader.vector("gravity", defaults.gravity);
   world.timeStep = reader.number("timeStep", defaults.timeStep);
   world.restitution = reader.number("restitution", defaults.restitution);
+  if (version >= kFirstVersionWithFriction) {
+    world.friction = reader.number("friction", defaults.friction);
+    world.rollingResistance = reader.number("rollingResistance", defaults.rollingResistance);
+    world.spinningFriction = reader.number("spinningFriction", defaults.spinningFriction);
+    world.tangentialRestitution =
+        reader.number("tangentialRestitution", defaults.tangentialRestitution);
+  }
   if (reader.has("method") && reader.string("method") == QLatin1String(format::kAutoMethodName)) {
     world.autoMethod = AccuracyTolerance{};
     if (reader.has("tolerance")) {
@@ -257,36 +270,36 @@ World readWorld(const QJsonObject& object) {
 
 Scene readScene(const QJsonObject& object) {
   // Format and version first: a newer file may mean something else by its other fields.
-  const int version = checkFormatAndVersion(ObjectReader(object, QString(), kTopKeys));
-  const ObjectReader top(object, QString(),
-                         version < kFirstVersionWithBoxes ? kTopKeysVersion1 : kTopKeys);
+  const int version =
+      checkFormatAndVersion(ObjectReader(object, QString(), knownKeys(format::kVersion).top));
+  const KnownKeys& known = knownKeys(version);
+  const ObjectReader top(object, QString(), known.top);
 
   Scene scene;
-  if (top.has("world")) scene.world = readWorld(top.object("world"));
+  if (top.has("world")) scene.world = readWorld(top.object("world"), version);
   top.forEach("planes", tolerance::kMaxPlanes, [&](const QJsonObject& item, const QString& path) {
-    const ObjectReader reader(item, path, kPlaneKeys);
+    const ObjectReader reader(item, path, known.plane);
     Plane plane;
     plane.point = reader.vector("point");
     plane.normal = reader.vector("normal");
-    readInfo(reader, plane);
+    readInfo(reader, version, plane);
     scene.planes.push_back(std::move(plane));
   });
-  top.forEach(
-      "cylinders", tolerance::kMaxCylinders, [&](const QJsonObject& item, const QString& path) {
-        const ObjectReader reader(
-            item, path, version < kFirstVersionWithBoxes ? kCylinderKeysVersion1 : kCylinderKeys);
-        Cylinder cylinder;
-        cylinder.point = reader.vector("point");
-        cylinder.axis = reader.vector("axis");
-        cylinder.radius = reader.number("radius");
-        if (version >= kFirstVersionWithBoxes && reader.has("length"))
-          cylinder.length = reader.number("length");
-        readInfo(reader, cylinder);
-        scene.cylinders.push_back(std::move(cylinder));
-      });
+  top.forEach("cylinders", tolerance::kMaxCylinders,
+              [&](const QJsonObject& item, const QString& path) {
+                const ObjectReader reader(item, path, known.cylinder);
+                Cylinder cylinder;
+                cylinder.point = reader.vector("point");
+                cylinder.axis = reader.vector("axis");
+                cylinder.radius = reader.number("radius");
+                if (version >= kFirstVersionWithBoxes && reader.has("length"))
+                  cylinder.length = reader.number("length");
+                readInfo(reader, version, cylinder);
+                scene.cylinders.push_back(std::move(cylinder));
+              });
   if (version >= kFirstVersionWithBoxes)
     top.forEach("boxes", tolerance::kMaxBoxes, [&](const QJsonObject& item, const QString& path) {
-      const ObjectReader reader(item, path, kBoxKeys);
+      const ObjectReader reader(item, path, known.box);
       Box box;
       box.center = reader.vector("center");
       box.halfExtents = reader.vector("halfExtents");
@@ -294,18 +307,20 @@ Scene readScene(const QJsonObject& object) {
         const Eigen::Vector4d rotation = reader.numbers<4>("rotation");
         box.rotation = Rotation{rotation.head<3>(), rotation[3]};
       }
-      readInfo(reader, box);
+      readInfo(reader, version, box);
       scene.boxes.push_back(std::move(box));
     });
   top.forEach("balls", tolerance::kMaxBalls, [&](const QJsonObject& item, const QString& path) {
-    const ObjectReader reader(item, path, kBallKeys);
+    const ObjectReader reader(item, path, known.ball);
     const Ball defaults;
     Ball ball;
     ball.position = reader.vector("position");
     ball.velocity = reader.vector("velocity", defaults.velocity);
+    if (version >= kFirstVersionWithFriction)
+      ball.angularVelocity = reader.vector("angularVelocity", defaults.angularVelocity);
     ball.radius = reader.number("radius");
     ball.mass = reader.number("mass", defaults.mass);
-    readInfo(reader, ball);
+    readInfo(reader, version, ball);
     scene.balls.push_back(std::move(ball));
   });
   scene.extra = top.extra();

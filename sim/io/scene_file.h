@@ -28,8 +28,9 @@ SceneLoadResult loadSceneFile(const QString& fileName);
 // memory of the scene.
 SceneLoadResult parseSceneNamingErrors(const QByteArray& json, const QString& sourceName);
 
-// Indented JSON of format version 1; unknown keys kept in the scene's `extra` fields are written
-// back, so that saving what was loaded loses nothing.
+// Indented JSON, in the oldest format version that holds the scene (scene_format.h); unknown keys
+// kept in the scene's `extra` fields are written back, so that saving what was loaded loses
+// nothing.
 QByteArray serializeScene(const Scene& scene);
 // Replaces `fileName` whole (atomic_file.h): on failure the old file is untouched and `*error`
 // (when given) says why.

@@ -104,8 +104,13 @@ class Fields {
     return text.isEmpty() ? std::string() : compactObject(text);
   }
 
-  void readInfo(ObjectInfo& info) const {
+  void readInfo(int version, ObjectInfo& info) const {
     info.restitution = optionalNumber("restitution");
+    if (version >= format::kFirstVersionWithFriction) {
+      info.friction = optionalNumber("friction");
+      info.rollingResistance = optionalNumber("rollingResistance");
+      info.spinningFriction = optionalNumber("spinningFriction");
+    }
     info.name = optionalString("name");
     info.color = optionalString("color");
     info.extra = extra();
@@ -171,14 +176,23 @@ Scene read(Cursor& cursor, std::size_t textSize) {
     }
     if (!formatSeen || version == 0) giveUp();
     const bool versionOne = version < format::kFirstVersionWithBoxes;
+    const bool withFriction = version >= format::kFirstVersionWithFriction;
+    const format::VersionKeys known = format::versionKeys(version);
     if (key == "world") {
       if (cursor.peek() != '{') giveUp();
-      fields.read(cursor, format::kWorldKeys);
+      fields.read(cursor, known.world);
       const World defaults;
       World& world = scene.world;
       world.gravity = fields.vector("gravity", defaults.gravity);
       world.timeStep = fields.number("timeStep", defaults.timeStep);
       world.restitution = fields.number("restitution", defaults.restitution);
+      if (withFriction) {
+        world.friction = fields.number("friction", defaults.friction);
+        world.rollingResistance = fields.number("rollingResistance", defaults.rollingResistance);
+        world.spinningFriction = fields.number("spinningFriction", defaults.spinningFriction);
+        world.tangentialRestitution =
+            fields.number("tangentialRestitution", defaults.tangentialRestitution);
+      }
       if (fields.find("method") && fields.string("method") == format::kAutoMethodName) {
         world.autoMethod = AccuracyTolerance{};
         if (fields.find("tolerance")) {
@@ -193,27 +207,25 @@ Scene read(Cursor& cursor, std::size_t textSize) {
       world.extra = fields.extra();
     } else if (key == "planes") {
       forEachObject(cursor, tolerance::kMaxPlanes, [&] {
-        fields.read(cursor, format::kPlaneKeys);
+        fields.read(cursor, known.plane);
         Plane& plane = scene.planes.emplace_back();
         plane.point = fields.vector("point");
         plane.normal = fields.vector("normal");
-        fields.readInfo(plane);
+        fields.readInfo(version, plane);
       });
     } else if (key == "cylinders") {
       forEachObject(cursor, tolerance::kMaxCylinders, [&] {
-        fields.read(cursor, versionOne
-                                ? std::span<const std::string_view>(format::kCylinderKeysVersion1)
-                                : std::span<const std::string_view>(format::kCylinderKeys));
+        fields.read(cursor, known.cylinder);
         Cylinder& cylinder = scene.cylinders.emplace_back();
         cylinder.point = fields.vector("point");
         cylinder.axis = fields.vector("axis");
         cylinder.radius = fields.number("radius");
         if (!versionOne) cylinder.length = fields.optionalNumber("length");
-        fields.readInfo(cylinder);
+        fields.readInfo(version, cylinder);
       });
     } else if (key == "boxes" && !versionOne) {
       forEachObject(cursor, tolerance::kMaxBoxes, [&] {
-        fields.read(cursor, format::kBoxKeys);
+        fields.read(cursor, known.box);
         Box& box = scene.boxes.emplace_back();
         box.center = fields.vector("center");
         box.halfExtents = fields.vector("halfExtents");
@@ -221,7 +233,7 @@ Scene read(Cursor& cursor, std::size_t textSize) {
           const std::array<double, 4> rotation = fields.numbers<4>("rotation");
           box.rotation = Rotation{Vec3(rotation[0], rotation[1], rotation[2]), rotation[3]};
         }
-        fields.readInfo(box);
+        fields.readInfo(version, box);
       });
     } else if (key == "balls") {
       const Ball defaults;
@@ -232,13 +244,15 @@ Scene read(Cursor& cursor, std::size_t textSize) {
         if (balls.size() % kPiece == 0 && balls.size() < balls.capacity())
           prefaultForWriting(balls.data() + balls.size(),
                              std::min(kPiece, balls.capacity() - balls.size()) * sizeof(Ball));
-        fields.read(cursor, format::kBallKeys);
+        fields.read(cursor, known.ball);
         Ball& ball = scene.balls.emplace_back();
         ball.position = fields.vector("position");
         ball.velocity = fields.vector("velocity", defaults.velocity);
+        if (withFriction)
+          ball.angularVelocity = fields.vector("angularVelocity", defaults.angularVelocity);
         ball.radius = fields.number("radius");
         ball.mass = fields.number("mass", defaults.mass);
-        fields.readInfo(ball);
+        fields.readInfo(version, ball);
       });
     } else {
       cursor.skipValue(1);

@@ -12,6 +12,8 @@
 #include <QJsonObject>
 #include <QJsonValue>
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -50,6 +52,9 @@ class JsonFields {
   }
   void addInfo(const ObjectInfo& info) {
     if (info.restitution) add("restitution", numberText(*info.restitution));
+    if (info.friction) add("friction", numberText(*info.friction));
+    if (info.rollingResistance) add("rollingResistance", numberText(*info.rollingResistance));
+    if (info.spinningFriction) add("spinningFriction", numberText(*info.spinningFriction));
     if (!info.color.empty()) add("color", jsonString(info.color));
   }
 
@@ -97,17 +102,31 @@ void appendString(std::string& out, const std::string& text) {
   }
 }
 
+// Written only when turning: zero is the default, and versions before friction have no key.
+bool spins(const Ball& ball) {
+  return !ball.angularVelocity.isZero(0.0);
+}
+
+void appendOptional(std::string& out, std::string_view key, const std::optional<double>& value) {
+  if (!value) return;
+  out += ", \"";
+  out += key;
+  out += "\": ";
+  appendNumber(out, *value);
+}
+
 // A ball's line, as JsonFields writes it.
-void appendBall(std::string& out, const Ball& ball) {
+void appendBall(std::string& out, const Ball& ball, const QStringList& knownKeys) {
   if (!ball.extra.empty()) {
     // Rare: the unknown keys go through Qt's JSON as they came.
     JsonFields fields = startFields(ball);
     fields.add("position", jsonVector(ball.position));
     fields.add("velocity", jsonVector(ball.velocity));
+    if (spins(ball)) fields.add("angularVelocity", jsonVector(ball.angularVelocity));
     fields.add("radius", numberText(ball.radius));
     fields.add("mass", numberText(ball.mass));
     fields.addInfo(ball);
-    fields.addExtra(ball.extra, kBallKeys);
+    fields.addExtra(ball.extra, knownKeys);
     out += fields.oneLine().toStdString();
     return;
   }
@@ -121,19 +140,50 @@ void appendBall(std::string& out, const Ball& ball) {
   appendVector(out, ball.position);
   out += ", \"velocity\": ";
   appendVector(out, ball.velocity);
+  if (spins(ball)) {
+    out += ", \"angularVelocity\": ";
+    appendVector(out, ball.angularVelocity);
+  }
   out += ", \"radius\": ";
   appendNumber(out, ball.radius);
   out += ", \"mass\": ";
   appendNumber(out, ball.mass);
-  if (ball.restitution) {
-    out += ", \"restitution\": ";
-    appendNumber(out, *ball.restitution);
-  }
+  appendOptional(out, "restitution", ball.restitution);
+  appendOptional(out, "friction", ball.friction);
+  appendOptional(out, "rollingResistance", ball.rollingResistance);
+  appendOptional(out, "spinningFriction", ball.spinningFriction);
   if (!ball.color.empty()) {
     out += ", \"color\": ";
     appendString(out, ball.color);
   }
   out += '}';
+}
+
+bool givesCoefficient(const ObjectInfo& info) {
+  return info.friction || info.rollingResistance || info.spinningFriction;
+}
+
+template <typename Objects>
+bool anyGivesCoefficient(const Objects& objects) {
+  return std::any_of(objects.begin(), objects.end(), givesCoefficient);
+}
+
+// The oldest version that holds the scene. An object's coefficient given as 0 needs version 3
+// too, though it asks for no friction: older versions have no key to keep it in.
+int versionToWrite(const Scene& scene) {
+  if (usesFriction(scene) || anyGivesCoefficient(scene.planes) ||
+      anyGivesCoefficient(scene.cylinders) || anyGivesCoefficient(scene.boxes) ||
+      anyGivesCoefficient(scene.balls))
+    return format::kFirstVersionWithFriction;
+  const bool capped = std::any_of(scene.cylinders.begin(), scene.cylinders.end(),
+                                  [](const Cylinder& c) { return c.length.has_value(); });
+  return scene.boxes.empty() && !capped ? 1 : format::kFirstVersionWithBoxes;
+}
+
+// A world coefficient, written only when it is not the default so that a frictionless world
+// is written as before friction.
+void addUnlessDefault(JsonFields& fields, std::string_view key, double value, double fallback) {
+  if (value != fallback) fields.add(key, numberText(value));
 }
 
 // Writes the scene's text to `write(const char*, size)` in pieces: all but the balls from
@@ -143,26 +193,33 @@ template <typename Write>
 void writeScene(const Scene& scene, Write&& write) {
   JsonFields top;
   top.add("format", jsonString(format::kName));
-  const bool versionOne =
-      scene.boxes.empty() && std::none_of(scene.cylinders.begin(), scene.cylinders.end(),
-                                          [](const Cylinder& c) { return c.length.has_value(); });
-  top.add("version", QByteArray::number(versionOne ? 1 : format::kFirstVersionWithBoxes));
+  const int version = versionToWrite(scene);
+  const KnownKeys& known = knownKeys(version);
+  top.add("version", QByteArray::number(version));
   // Unknown top-level keys such as "units" go right after the header, where a reader looks.
   // In version 1 "boxes" is one of them.
-  top.addExtra(scene.extra, versionOne ? kTopKeysVersion1 : kTopKeys);
+  top.addExtra(scene.extra, known.top);
 
   const World& world = scene.world;
+  const World defaults;
   JsonFields worldFields;
   worldFields.add("gravity", jsonVector(world.gravity));
   worldFields.add("timeStep", numberText(world.timeStep));
   worldFields.add("restitution", numberText(world.restitution));
+  addUnlessDefault(worldFields, "friction", world.friction, defaults.friction);
+  addUnlessDefault(worldFields, "rollingResistance", world.rollingResistance,
+                   defaults.rollingResistance);
+  addUnlessDefault(worldFields, "spinningFriction", world.spinningFriction,
+                   defaults.spinningFriction);
+  addUnlessDefault(worldFields, "tangentialRestitution", world.tangentialRestitution,
+                   defaults.tangentialRestitution);
   worldFields.add(
       "method", jsonString(world.autoMethod ? format::kAutoMethodName : methodName(world.method)));
   worldFields.add("integrator", jsonString(integratorName(world.integrator)));
   if (world.autoMethod)
     worldFields.add("tolerance", "[" + numberText(world.autoMethod->energyPerSecond) + ", " +
                                      numberText(world.autoMethod->penetrationFraction) + "]");
-  worldFields.addExtra(world.extra, kWorldKeys);
+  worldFields.addExtra(world.extra, known.world);
   top.add("world", worldFields.indented("  "));
 
   QByteArrayList planes;
@@ -171,7 +228,7 @@ void writeScene(const Scene& scene, Write&& write) {
     fields.add("point", jsonVector(plane.point));
     fields.add("normal", jsonVector(plane.normal));
     fields.addInfo(plane);
-    fields.addExtra(plane.extra, kPlaneKeys);
+    fields.addExtra(plane.extra, known.plane);
     planes << fields.oneLine();
   }
   top.add("planes", listText(planes));
@@ -184,7 +241,7 @@ void writeScene(const Scene& scene, Write&& write) {
     fields.add("radius", numberText(cylinder.radius));
     if (cylinder.length) fields.add("length", numberText(*cylinder.length));
     fields.addInfo(cylinder);
-    fields.addExtra(cylinder.extra, versionOne ? kCylinderKeysVersion1 : kCylinderKeys);
+    fields.addExtra(cylinder.extra, known.cylinder);
     cylinders << fields.oneLine();
   }
   top.add("cylinders", listText(cylinders));
@@ -201,7 +258,7 @@ void writeScene(const Scene& scene, Write&& write) {
                                    numberText(box.rotation->axis.z()) + ", " +
                                    numberText(box.rotation->degrees) + ']');
       fields.addInfo(box);
-      fields.addExtra(box.extra, kBoxKeys);
+      fields.addExtra(box.extra, known.box);
       boxes << fields.oneLine();
     }
     top.add("boxes", listText(boxes));
@@ -217,7 +274,7 @@ void writeScene(const Scene& scene, Write&& write) {
   piece.reserve(kPiece + 4096);
   for (std::size_t i = 0; i < scene.balls.size(); ++i) {
     if (i > 0) piece += ",\n    ";
-    appendBall(piece, scene.balls[i]);
+    appendBall(piece, scene.balls[i], known.ball);
     if (piece.size() >= kPiece) {
       write(piece.data(), piece.size());
       piece.clear();

@@ -85,10 +85,19 @@ class FieldChecker {
            "must be a number above zero (got " + formatNumber(value) + ")", {.value = value});
   }
 
-  void restitution(ValidationField field, const std::optional<double>& value) {
+  // None (an object taking the world's value) passes.
+  void inRange(ValidationField field, const std::optional<double>& value, double low, double high) {
     if (!value) return;
     if (!std::isfinite(*value)) return fail(field, ValidationProblem::NotFinite, "must be finite");
-    if (*value < 0.0 || *value > 1.0) between(field, *value, 0.0, 1.0);
+    if (*value < low || *value > high) between(field, *value, low, high);
+  }
+
+  void restitution(ValidationField field, const std::optional<double>& value) {
+    inRange(field, value, 0.0, 1.0);
+  }
+
+  void frictionCoefficient(ValidationField field, const std::optional<double>& value) {
+    inRange(field, value, 0.0, tolerance::kMaxFriction);
   }
 
   void info(const ObjectInfo& info) {
@@ -99,6 +108,9 @@ class FieldChecker {
                " characters (got " + std::to_string(nameLength) + ")",
            {.value = double(nameLength), .high = double(tolerance::kMaxNameCharacters)});
     restitution(ValidationField::Restitution, info.restitution);
+    frictionCoefficient(ValidationField::Friction, info.friction);
+    frictionCoefficient(ValidationField::RollingResistance, info.rollingResistance);
+    frictionCoefficient(ValidationField::SpinningFriction, info.spinningFriction);
     if (!isColor(info.color)) {
       std::string quoted = excerpt(info.color);
       fail(ValidationField::Color, ValidationProblem::BadColor,

@@ -64,6 +64,7 @@ bool checkBall(const Ball& ball, std::size_t index, ErrorList* errors) {
   FieldChecker check(errors, ValidationSubject::Balls, index);
   check.vector(F::Position, ball.position);
   check.vector(F::Velocity, ball.velocity);
+  check.vector(F::AngularVelocity, ball.angularVelocity);
   check.radius(F::Radius, ball.radius);
   check.positiveBetween(F::Mass, ball.mass, tol::kMinMass, tol::kMaxMass);
   check.info(ball);
@@ -75,6 +76,10 @@ void checkWorld(const World& world, ErrorList& errors) {
   check.vector(F::Gravity, world.gravity);
   check.positiveBetween(F::TimeStep, world.timeStep, tol::kMinTimeStep, tol::kMaxTimeStep);
   check.restitution(F::Restitution, world.restitution);
+  check.frictionCoefficient(F::Friction, world.friction);
+  check.frictionCoefficient(F::RollingResistance, world.rollingResistance);
+  check.frictionCoefficient(F::SpinningFriction, world.spinningFriction);
+  check.restitution(F::TangentialRestitution, world.tangentialRestitution);
   if (world.autoMethod) {
     check.aboveZero(F::EnergyTolerance, world.autoMethod->energyPerSecond);
     check.aboveZero(F::PenetrationTolerance, world.autoMethod->penetrationFraction);

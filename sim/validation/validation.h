@@ -26,6 +26,7 @@ enum class ValidationField {
   None,
   Position,
   Velocity,
+  AngularVelocity,
   Radius,
   Mass,
   Point,
@@ -40,6 +41,10 @@ enum class ValidationField {
   RotationDegrees,
   Name,
   Restitution,
+  Friction,
+  RollingResistance,
+  SpinningFriction,
+  TangentialRestitution,
   Color,
   Gravity,
   TimeStep,
@@ -82,7 +87,8 @@ struct ValidationError {
 
 // All problems of the scene, in file order (at most `maxErrors`); empty when the scene is valid.
 // Checks every number is finite and within the limits of tolerances.h, radii and masses are
-// positive, as are a box's half extents, restitution is in [0, 1], normals and axes (also a
+// positive, as are a box's half extents, restitutions (also the world's tangential one) are in
+// [0, 1], friction coefficients in [0, kMaxFriction], normals and axes (also a
 // box's rotation axis) are not zero-length, names are at most kMaxNameCharacters long, colours
 // are "#rrggbb", and that no ball overlaps another ball, a plane, a cylinder or a box (touching
 // is fine).
@@ -109,7 +115,7 @@ struct SceneCounts {
   std::size_t balls = 0;
 };
 std::vector<ValidationError> validateCounts(const SceneCounts& counts);
-// The world's settings alone (gravity, time step, restitution).
+// The world's settings alone (gravity, time step, restitution, friction).
 std::vector<ValidationError> validateWorld(const World& world, std::size_t maxErrors = 20);
 // A tolerance given on its own (carom-cli --tolerance): paths "tolerance.energy" and
 // "tolerance.penetration"; the same rule as a scene's world.tolerance.

@@ -71,6 +71,8 @@ std::string_view fieldPath(ValidationField field, ValidationSubject subject) {
       return ".position";
     case F::Velocity:
       return ".velocity";
+    case F::AngularVelocity:
+      return ".angularVelocity";
     case F::Radius:
       return ".radius";
     case F::Mass:
@@ -99,6 +101,14 @@ std::string_view fieldPath(ValidationField field, ValidationSubject subject) {
       return ".name";
     case F::Restitution:
       return ".restitution";
+    case F::Friction:
+      return ".friction";
+    case F::RollingResistance:
+      return ".rollingResistance";
+    case F::SpinningFriction:
+      return ".spinningFriction";
+    case F::TangentialRestitution:
+      return ".tangentialRestitution";
     case F::Color:
       return ".color";
     case F::Gravity:

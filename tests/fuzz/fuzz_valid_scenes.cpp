@@ -1,10 +1,10 @@
 // libFuzzer target: any scene that validation accepts runs. The bytes choose a scene over the
 // whole accepted range (radii from 1e-12 to 1e12 m, positions, speeds and gravity up to 1e12,
-// every method and integrator, planes, cylinders and boxes), kept valid by dropping each ball
-// that validation refuses; the scene then runs for a few hundred events or a few dozen steps,
-// under other world settings from half way, with the run's measures and watch looking on. A crash,
-// an exception, a non-finite position or velocity, or a run that never ends (libFuzzer's -timeout)
-// is a finding. Built by scripts/fuzz.sh.
+// every method and integrator, planes, cylinders and boxes, friction and spin), kept valid by
+// dropping each ball that validation refuses; the scene then runs for a few hundred events or a few
+// dozen steps, under other world settings from half way, with the run's measures and watch looking
+// on. A crash, an exception, a non-finite position or velocity, or a run that never ends
+// (libFuzzer's -timeout) is a finding. Built by scripts/fuzz.sh.
 
 #include "sim/core/tolerances.h"
 #include "sim/geometry/shapes.h"
@@ -101,6 +101,24 @@ class SceneMaker {
     return w;
   }
 
+  // Friction and spin are taken from the bytes after all the rest, so that an input found
+  // before them makes the same scene: its bytes run out here, and bytes run out give none.
+  void addFriction(Scene& scene, World& later) {
+    for (World* w : {&scene.world, &later}) {
+      w->friction = coefficient().value_or(0.0);
+      w->rollingResistance = coefficient().value_or(0.0);
+      w->spinningFriction = coefficient().value_or(0.0);
+      w->tangentialRestitution = bytes_.ConsumeBool() ? bytes_.ConsumeProbability<double>() : 0.0;
+    }
+    for (Plane& plane : scene.planes) giveCoefficients(plane);
+    for (Cylinder& cylinder : scene.cylinders) giveCoefficients(cylinder);
+    for (Box& box : scene.boxes) giveCoefficients(box);
+    for (Ball& ball : scene.balls) {
+      giveCoefficients(ball);
+      if (bytes_.ConsumeBool()) ball.angularVelocity = along(direction());
+    }
+  }
+
  private:
   Method method() {
     return bytes_.PickValueInArray({Method::Exact, Method::Swept, Method::Discrete});
@@ -179,6 +197,17 @@ class SceneMaker {
   std::optional<double> restitution() {
     if (bytes_.ConsumeBool()) return std::nullopt;
     return bytes_.ConsumeProbability<double>();
+  }
+  // Mostly a real material's, at times anything up to the limit.
+  std::optional<double> coefficient() {
+    if (!bytes_.ConsumeBool()) return std::nullopt;
+    if (bytes_.ConsumeBool()) return bytes_.ConsumeProbability<double>();
+    return logUniform(1.0, tol::kMaxFriction);
+  }
+  void giveCoefficients(ObjectInfo& info) {
+    info.friction = coefficient();
+    info.rollingResistance = coefficient();
+    info.spinningFriction = coefficient();
   }
   Plane plane() {
     // Facing an anchor, so that the balls around it are in front of it.
@@ -379,10 +408,11 @@ void run(Simulation& sim, const World& later) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider bytes(data, size);
   SceneMaker maker(bytes);
-  const Scene scene = maker.make();
-  if (!validateScene(scene, 1).empty()) return 0;
+  Scene scene = maker.make();
   World later = maker.world();
   if (bytes.ConsumeBool()) later.timeStep = maker.stepForScene(scene);
+  maker.addFriction(scene, later);
+  if (!validateScene(scene, 1).empty()) return 0;
   Simulation sim(scene);
   run(sim, later);
   return 0;

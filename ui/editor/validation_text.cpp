@@ -47,6 +47,9 @@ FieldWords fieldWords(ValidationField field) {
     case F::Velocity:
       return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Velocity"),
               QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "m/s")};
+    case F::AngularVelocity:
+      return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Angular velocity"),
+              QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "rad/s")};
     case F::Radius:
       return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Radius"), m};
     case F::Mass:
@@ -75,6 +78,17 @@ FieldWords fieldWords(ValidationField field) {
       return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Name"), nullptr};
     case F::Restitution:
       return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Restitution"), nullptr};
+    case F::Friction:
+      return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Friction"), nullptr};
+    case F::RollingResistance:
+      return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Rolling resistance"),
+              nullptr};
+    case F::SpinningFriction:
+      return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Spinning friction"),
+              nullptr};
+    case F::TangentialRestitution:
+      return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Tangential restitution"),
+              nullptr};
     case F::Color:
       return {dock, QT_TRANSLATE_NOOP("carom::editor::PropertiesDock", "Colour"), nullptr};
     case F::Gravity:
