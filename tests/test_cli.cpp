@@ -666,13 +666,13 @@ class TestCli : public QObject {
       QVERIFY2((cells[6] == "-") == (cells[0] != "exact"), row.constData());
       QVERIFY2((cells[7] == "-") == (cells[0] != "exact"), row.constData());
     }
-    QCOMPARE(scenes, (QSet<QByteArray>{"gas", "gravity-gas", "galton", "mixed"}));
+    QCOMPARE(scenes, (QSet<QByteArray>{"gas", "rough-gas", "gravity-gas", "galton", "mixed"}));
     QCOMPARE(methods, (QSet<QByteArray>{"exact", "swept", "discrete"}));
 
     const QList<QByteArray> progress = nonEmptyLines(run.err);
     for (const QByteArray& line : progress) QVERIFY2(line.startsWith("bench:"), line.constData());
     QCOMPARE(progress.size(), rows.size());
-    QCOMPARE(rows.size(), 9);
+    QCOMPARE(rows.size(), 10);
   }
 
   // --- study ---

@@ -14,12 +14,17 @@ namespace {
 
 // The gases fill a box of six planes; the Galton board (makeGaltonBoard) pours its balls through
 // a funnel and pegs into bins, inelastic.
-enum class BenchScene { Gas, GravityGas, GaltonBoard, MixedSizes };
+// The rough gas is the gas of perfectly rough spheres (β = 1 and a μ that never binds, so that
+// it keeps its energy): it measures what Walton's impacts cost against the plain gas's
+// frictionless ones.
+enum class BenchScene { Gas, RoughGas, GravityGas, GaltonBoard, MixedSizes };
 
 QString sceneName(BenchScene scene) {
   switch (scene) {
     case BenchScene::Gas:
       return "gas";
+    case BenchScene::RoughGas:
+      return "rough-gas";
     case BenchScene::GravityGas:
       return "gravity-gas";
     case BenchScene::GaltonBoard:
@@ -78,10 +83,23 @@ Scene mixedSizes(int balls) {
   return scene;
 }
 
+// Each ball spinning at up to 20 rad/s about each axis.
+Scene roughGas(int balls) {
+  Scene scene = makeGasInBox(balls, kPackingFraction, Vec3::Zero(), 2007);
+  scene.world.friction = 1e6;
+  scene.world.tangentialRestitution = 1.0;
+  for (std::size_t i = 0; i < scene.balls.size(); ++i)
+    scene.balls[i].angularVelocity =
+        20.0 * Vec3(std::sin(1.0 * i), std::cos(1.7 * i), std::sin(2.3 * i + 0.5));
+  return scene;
+}
+
 Scene makeScene(const BenchCase& bench) {
   switch (bench.scene) {
     case BenchScene::Gas:
       return makeGasInBox(bench.balls, kPackingFraction, Vec3::Zero(), 2007);
+    case BenchScene::RoughGas:
+      return roughGas(bench.balls);
     case BenchScene::GravityGas:
       return gravityGas(bench.balls);
     case BenchScene::GaltonBoard:
@@ -136,6 +154,8 @@ int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err) {
   std::vector<BenchCase> cases;
   for (int n : quick ? std::vector<int>{500, 1000, 2000} : std::vector<int>{4000, 32000, 108000})
     cases.push_back({Method::Exact, n, BenchScene::Gas, quick ? 1e5 : 3e6, 0, 0.0});
+  cases.push_back(
+      {Method::Exact, quick ? 1000 : 10000, BenchScene::RoughGas, quick ? 1e5 : 3e6, 0, 0.0});
   const int stepBalls = quick ? 1000 : 10000;
   cases.push_back({Method::Swept, stepBalls, BenchScene::Gas, 0, quick ? 20 : 200, 0.0});
   cases.push_back({Method::Discrete, stepBalls, BenchScene::Gas, 0, quick ? 50 : 1000, 0.0});
