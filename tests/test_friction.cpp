@@ -446,6 +446,41 @@ class TestFriction : public QObject {
              qPrintable(disagreement("object", b[1].velocity.x(), 5.0 / 7.0 * v0)));
   }
 
+  // Three balls placed in a pyramid on a floor: with friction enough for the cones to hold them
+  // (μ ≥ tan 15° here), the contact forces balance with the torques and the pyramid stands, at
+  // rest where it was placed; with less it spreads as a frictionless one does.
+  void roughPyramidStands_data() {
+    QTest::addColumn<double>("friction");
+    QTest::addColumn<bool>("stands");
+    QTest::newRow("rough") << 0.5 << true;
+    QTest::newRow("too smooth") << 0.1 << false;
+    QTest::newRow("smooth") << 0.0 << false;
+  }
+  void roughPyramidStands() {
+    QFETCH(double, friction);
+    QFETCH(bool, stands);
+    Scene s;
+    s.world.gravity = Vec3(0, -kG, 0);
+    s.world.restitution = 0.5;
+    s.world.friction = friction;
+    s.planes.push_back(makePlane({0, 0, 0}, {0, 1, 0}));
+    const Vec3 top(0, kRadius + 2.0 * kRadius * std::sin(M_PI / 3.0), 0);
+    s.balls = {makeBall({-kRadius, kRadius, 0}, Vec3::Zero(), kRadius),
+               makeBall({kRadius, kRadius, 0}, Vec3::Zero(), kRadius),
+               makeBall(top, Vec3::Zero(), kRadius)};
+    QVERIFY(validateScene(s).empty());
+    Simulation sim(s);
+    sim.advance(2.0);
+    const std::vector<BallState> after = sim.state();
+    const double moved = (after[2].position - top).norm();
+    if (stands) {
+      QVERIFY2(moved < 1e-9, qPrintable(QString::number(moved)));
+      for (const BallState& b : after) QVERIFY(b.resting);
+    } else {
+      QVERIFY2(after[2].position.y() < top.y() - kRadius, qPrintable(QString::number(moved)));
+    }
+  }
+
   // Without friction, spin and β change nothing: every bundled scene runs bit for bit as the
   // same scene without them (what a version 2 file gives), in every method.
   void zeroFrictionIsTheFrictionlessPhysics_data() {

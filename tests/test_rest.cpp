@@ -254,7 +254,8 @@ class TestRest : public QObject {
       for (std::size_t o = 0; o < at.size(); ++o)
         if (o != b && std::abs((at[b] - at[o]).norm() - 0.2) <= touching)
           contacts.push_back({0, -1, (at[b] - at[o]).normalized()});
-      held += contactForcesBalance(s.world.gravity, {1.0}, contacts, tolerance::kForceBalance);
+      held +=
+          contactForcesBalance(s.world.gravity, {1.0}, {1.0}, contacts, tolerance::kForceBalance);
     }
     QVERIFY2(held >= 62, qPrintable(QString("%1 of 64 held by what they touch").arg(held)));
   }
@@ -620,14 +621,15 @@ class TestRest : public QObject {
     const Vec3 g(0, -9.81, 0);
     const Vec3 up = Vec3::UnitY();
     // A column of two balls on a floor, masses 1e12 apart: held.
-    QVERIFY(contactForcesBalance(g, {1.0, 1e12}, {{0, -1, up}, {1, 0, up}}, 1e-12));
+    QVERIFY(contactForcesBalance(g, {1.0, 1e12}, {1.0, 1.0}, {{0, -1, up}, {1, 0, up}}, 1e-12));
     // A ball on a floor with a wall beside it: held (the wall carries nothing).
     std::vector<bool> carries;
-    QVERIFY(contactForcesBalance(g, {1.0}, {{0, -1, up}, {0, -1, Vec3::UnitX()}}, 1e-12, &carries));
+    QVERIFY(contactForcesBalance(g, {1.0}, {1.0}, {{0, -1, up}, {0, -1, Vec3::UnitX()}}, 1e-12,
+                                 &carries));
     QVERIFY(carries[0] && !carries[1]);
     // On a ramp of 1e-6 rad: not held (no friction).
-    QVERIFY(!contactForcesBalance(g, {1.0}, {{0, -1, Vec3(-std::sin(1e-6), std::cos(1e-6), 0)}},
-                                  1e-12));
+    QVERIFY(!contactForcesBalance(g, {1.0}, {1.0},
+                                  {{0, -1, Vec3(-std::sin(1e-6), std::cos(1e-6), 0)}}, 1e-12));
     // A frictionless pyramid: a ball on two touching balls on a floor. The top pushes the lower
     // two apart and nothing holds them: not held. Walls against their outer sides hold it.
     const double c = std::sqrt(3.0) / 2;
@@ -637,13 +639,13 @@ class TestRest : public QObject {
         {1, 0, Vec3::UnitX()},    // lower ball 1 (right) against lower ball 0 (left)
         {2, 0, Vec3(0.5, c, 0)},  // the top on each lower ball
         {2, 1, Vec3(-0.5, c, 0)}};
-    QVERIFY(!contactForcesBalance(g, {1, 1, 1}, pyramid, 1e-12));
+    QVERIFY(!contactForcesBalance(g, {1, 1, 1}, {1, 1, 1}, pyramid, 1e-12));
     std::vector<ClusterContact> boxed = pyramid;
     boxed.push_back({0, -1, Vec3::UnitX()});
     boxed.push_back({1, -1, -Vec3::UnitX()});
-    QVERIFY(contactForcesBalance(g, {1, 1, 1}, boxed, 1e-12));
+    QVERIFY(contactForcesBalance(g, {1, 1, 1}, {1, 1, 1}, boxed, 1e-12));
     // No gravity, nothing to hold: never "held" (rest needs gravity).
-    QVERIFY(!contactForcesBalance(Vec3::Zero(), {1.0}, {{0, -1, up}}, 1e-12));
+    QVERIFY(!contactForcesBalance(Vec3::Zero(), {1.0}, {1.0}, {{0, -1, up}}, 1e-12));
   }
 
   void nonNegativeLeastSquaresMatchesAKnownSolution() {

@@ -1,6 +1,7 @@
 #include "sim/dynamics/contact_forces.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -57,31 +58,61 @@ Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::V
 }
 
 bool contactForcesBalance(const Vec3& gravity, const std::vector<double>& masses,
+                          const std::vector<double>& radii,
                           const std::vector<ClusterContact>& contacts, double tolerance,
                           std::vector<bool>* carries) {
   const double g = gravity.norm();
   if (g == 0.0 || contacts.empty() || masses.empty()) return false;
   const int bodies = static_cast<int>(masses.size());
+  const bool rough = std::any_of(contacts.begin(), contacts.end(),
+                                 [](const ClusterContact& c) { return c.friction > 0.0; });
   // Each ball's rows are its force balance divided by its weight, so that every ball counts
-  // alike whatever the mass ratios; each column is scaled to unit length, which changes no
-  // answer of the non-negative problem.
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(3 * bodies, static_cast<Eigen::Index>(contacts.size()));
-  Eigen::VectorXd b(3 * bodies);
+  // alike whatever the mass ratios (with friction, its torque balance divided by weight times
+  // radius follows); each column is a force the contact may push with, scaled to unit length,
+  // which changes no answer of the non-negative problem: the normal alone, or the edges of the
+  // friction pyramid.
+  const int rowsPerBody = rough ? 6 : 3;
+  std::vector<Eigen::Index> firstColumn(contacts.size() + 1, 0);
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    firstColumn[c + 1] = firstColumn[c] + (contacts[c].friction > 0.0 ? kConeEdges : 1);
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(rowsPerBody * bodies, firstColumn.back());
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(rowsPerBody * bodies);
   const Vec3 up = -gravity / g;
-  for (int k = 0; k < bodies; ++k) b.segment<3>(3 * k) = up;
+  for (int k = 0; k < bodies; ++k) b.segment<3>(rowsPerBody * k) = up;
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     const ClusterContact& contact = contacts[c];
-    a.block<3, 1>(3 * contact.body, c) = contact.normal / masses[contact.body];
-    if (contact.other >= 0)
-      a.block<3, 1>(3 * contact.other, c) = -contact.normal / masses[contact.other];
-    a.col(c).normalize();
+    const Vec3& n = contact.normal;
+    // Unit tangents of the contact (any pair across n).
+    const Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    for (Eigen::Index column = firstColumn[c]; column < firstColumn[c + 1]; ++column) {
+      const double angle = 2.0 * M_PI * double(column - firstColumn[c]) / kConeEdges;
+      const Vec3 force =
+          contact.friction > 0.0
+              ? Vec3(n + contact.friction * (std::cos(angle) * t1 + std::sin(angle) * t2))
+              : n;
+      const auto put = [&](int body, const Vec3& f, const Vec3& arm) {
+        a.block<3, 1>(rowsPerBody * body, column) = f / masses[body];
+        if (rough)
+          a.block<3, 1>(rowsPerBody * body + 3, column) =
+              arm.cross(f) / (masses[body] * radii[body]);
+      };
+      // The contact point is at -r·n from the body's centre, and at +r·n from the other's.
+      put(contact.body, force, -radii[contact.body] * n);
+      if (contact.other >= 0) put(contact.other, -force, radii[contact.other] * n);
+      a.col(column).normalize();
+    }
   }
   const Eigen::VectorXd forces = nonNegativeLeastSquares(a, b);
   for (int k = 0; k < bodies; ++k)
-    if ((a.middleRows(3 * k, 3) * forces - up).norm() > tolerance) return false;
+    if ((a.middleRows(rowsPerBody * k, rowsPerBody) * forces -
+         b.segment(rowsPerBody * k, rowsPerBody))
+            .norm() > tolerance)
+      return false;
   if (carries) {
     carries->resize(contacts.size());
-    for (std::size_t c = 0; c < contacts.size(); ++c) (*carries)[c] = forces[c] > tolerance;
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      (*carries)[c] =
+          forces.segment(firstColumn[c], firstColumn[c + 1] - firstColumn[c]).sum() > tolerance;
   }
   return true;
 }

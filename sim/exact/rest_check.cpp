@@ -12,6 +12,12 @@
 
 namespace carom {
 
+double RestCheck::frictionWith(int i, const Support& support) const {
+  if (!bodies_.rough) return 0.0;
+  if (support.ball >= 0) return bodies_.impactFriction(i, support.ball).friction;
+  return bodies_.impactFriction(i, engine_.shapeFriction(support.shape)).friction;
+}
+
 bool RestCheck::slow(int k) const {
   // Nothing rests on the held ball: it moves as the user steers it.
   return !particles_[k].resting && !particles_[k].held &&
@@ -65,10 +71,11 @@ RestCheck::Result RestCheck::of(int i) const {
   const Vec3 centre = tracks_[i].motion.positionAt(now_, engine_.accelerationOf(i));
   const NearContacts near = nearContacts(i, centre);
   std::vector<ClusterContact> contacts;
-  for (const Vec3& normal : near.normals) contacts.push_back({0, -1, normal});
+  for (std::size_t c = 0; c < near.normals.size(); ++c)
+    contacts.push_back({0, -1, near.normals[c], frictionWith(i, near.supports[c])});
   std::vector<bool> carries;
-  if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, contacts, tolerance::kForceBalance,
-                            &carries))
+  if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, {bodies_.radius[i]}, contacts,
+                            tolerance::kForceBalance, &carries))
     return check;
   std::vector<Support> carrying;
   for (std::size_t c = 0; c < contacts.size(); ++c)
@@ -155,9 +162,9 @@ bool RestCheck::heldAt(int i, const Vec3& centre, const NearContacts& near) cons
   std::vector<ClusterContact> touchingContacts;
   for (const Support& support : near.supports) {
     const auto [n, gap] = supportGap(i, support, centre);
-    if (std::abs(gap) <= touching) touchingContacts.push_back({0, -1, n});
+    if (std::abs(gap) <= touching) touchingContacts.push_back({0, -1, n, frictionWith(i, support)});
   }
-  return contactForcesBalance(gravity_, {bodies_.mass[i]}, touchingContacts,
+  return contactForcesBalance(gravity_, {bodies_.mass[i]}, {bodies_.radius[i]}, touchingContacts,
                               tolerance::kForceBalance);
 }
 
@@ -234,7 +241,7 @@ bool RestCheck::clusterHolds(int i, int freed) const {
     for (const StaticRef shape : cells_.staticsNear(k)) {
       const auto [n, gap, restitution] = engine_.staticContact(k, shape, centres[c]);
       if (gap <= tolerance::kSupportGapFraction * rk)
-        contacts.push_back({static_cast<int>(c), -1, n});
+        contacts.push_back({static_cast<int>(c), -1, n, frictionWith(k, {.shape = shape})});
     }
     cells_.forEachNeighbour(k, [&](int m) {
       const int known = memberIndex(m);
@@ -254,13 +261,17 @@ bool RestCheck::clusterHolds(int i, int freed) const {
         members.push_back(m);
         centres.push_back(centre);
       }
-      contacts.push_back({static_cast<int>(c), other, d.normalized()});
+      contacts.push_back(
+          {static_cast<int>(c), other, d.normalized(), frictionWith(k, {.ball = m})});
     });
   }
   if (members.size() == 1) return true;  // alone among fixed supports: restCheck decided it
-  std::vector<double> masses(members.size());
-  for (std::size_t c = 0; c < members.size(); ++c) masses[c] = bodies_.mass[members[c]];
-  return contactForcesBalance(gravity_, masses, contacts, tolerance::kForceBalance);
+  std::vector<double> masses(members.size()), radii(members.size());
+  for (std::size_t c = 0; c < members.size(); ++c) {
+    masses[c] = bodies_.mass[members[c]];
+    radii[c] = bodies_.radius[members[c]];
+  }
+  return contactForcesBalance(gravity_, masses, radii, contacts, tolerance::kForceBalance);
 }
 
 }  // namespace carom

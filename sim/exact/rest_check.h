@@ -46,6 +46,8 @@ class RestCheck {
     double gap;
   };
   SupportGap supportGap(int i, const Support& support, const Vec3& centre) const;
+  // The μ of ball i's contact with a support (0 in a scene without friction).
+  double frictionWith(int i, const Support& support) const;
   // What ball i touches within kSupportGapFraction of its radius: its possible supports
   // (statics, resting balls, balls slower than its rest speed) with their normals, and the
   // faster balls, which it must not settle into.
