@@ -3,6 +3,7 @@
 // radii and speeds derive from gravity, so the solver behaves the same at any scale.
 
 #include <cstddef>
+#include <cstdint>
 
 namespace carom::tolerance {
 
@@ -93,6 +94,10 @@ inline constexpr double kBurstTravelFraction = kTouchFraction;
 // A ball touching several static shapes at once reflects off them in one event, at most this
 // many times (a wedge of angle θ takes about π/θ; see EventEngine::leaveTouchingStatics).
 inline constexpr long kMaxSimultaneousReflections = 10'000'000;
+// Two elastic planes that reflect a ball more than this many times at one instant (a V narrower
+// than about π/64 rad) are solved in closed form instead (reflectInWedge, response.h), whatever
+// their angle; fewer keep the loop, whose arithmetic shallower creases have always had.
+inline constexpr std::uint64_t kLoopReflections = 64;
 
 // A held ball (grab.h) pushing a ball nearly head-on into something that does not give way
 // would squeeze it ever faster (an unlimited mass closing a gap) and at last through: the grab

@@ -87,6 +87,49 @@ void applyImpactFriction(Vec3& v, Vec3& w, double r, const Vec3& n, double norma
   w -= (2.5 / r) * n.cross(dv);
 }
 
+std::optional<WedgeReflections> reflectInWedge(const Vec3& v, const Vec3& n0, const Vec3& n1) {
+  Vec3 crease = n0.cross(n1);
+  const double sine = crease.norm();
+  if (!(sine > 0.0)) return std::nullopt;
+  crease /= sine;
+  // Across the crease: x along plane 0 into the wedge, y its normal; plane 1 runs at angle θ.
+  Vec3 x = crease.cross(n0);
+  if (x.dot(n1) < 0.0) x = -x;
+  Vec3 along1 = crease.cross(n1);
+  if (along1.dot(n0) < 0.0) along1 = -along1;
+  const double theta = std::atan2(along1.dot(n0), along1.dot(x));
+  const double vx = v.dot(x), vy = v.dot(n0), vc = v.dot(crease);
+  const double speed = std::hypot(vx, vy);
+  double psi = std::atan2(vy, vx);
+  const bool intoFirst = v.dot(n0) < 0.0;
+  if (!intoFirst && !(v.dot(n1) < 0.0)) return std::nullopt;
+  // Met first is plane 0, or else plane 1, seen in the wedge mirrored across its bisector.
+  if (!intoFirst) psi = theta - psi;
+  if (psi > M_PI) psi -= 2.0 * M_PI;
+  const double psi1 = -psi;  // after the first reflection, in (0, π)
+  // After 2m+1 reflections the angle is psi1 - 2mθ, out when at most θ; after 2m+2 it is
+  // (2m+2)θ - psi1, out when at least 0.
+  const double turns = psi1 / theta;
+  const double oddReflections = 2.0 * std::ceil(std::max((turns - 1.0) / 2.0, 0.0)) + 1.0;
+  const double evenReflections = 2.0 * std::ceil(turns / 2.0);
+  const double reflections = std::min(oddReflections, evenReflections);
+  double out = reflections == oddReflections ? psi1 - (reflections - 1.0) * theta
+                                             : reflections * theta - psi1;
+  if (!intoFirst) out = theta - out;
+  WedgeReflections result;
+  result.velocity = vc * crease + speed * (std::cos(out) * x + std::sin(out) * n0);
+  const auto total = static_cast<std::uint64_t>(reflections);
+  const int first = intoFirst ? 0 : 1;
+  result.count[first] = (total + 1) / 2;
+  result.count[1 - first] = total / 2;
+  const Vec3& nFirst = intoFirst ? n0 : n1;
+  const Vec3& nSecond = intoFirst ? n1 : n0;
+  result.approach[first] = -v.dot(nFirst);
+  const Vec3 once = v - 2.0 * v.dot(nFirst) * nFirst;
+  result.approach[1 - first] = std::max(-once.dot(nSecond), 0.0);
+  return result;
+}
+
 double restoreSpecificEnergy(Vec3& v, const Vec3& position, const Vec3& gravity, double energy) {
   const Vec3 down = gravity.normalized();
   const double along = v.dot(down);

@@ -5,6 +5,8 @@
 #include "sim/model/scene.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 namespace carom {
 
@@ -40,12 +42,27 @@ double resolveBallBall(Vec3& va, Vec3& vb, double inverseMassA, double inverseMa
 // Returns true when it had to add energy (the ball was too slow in every direction).
 bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double minimumSeparation);
 
+// An elastic ball between two planes that meet at a narrow angle (a wedge): it reflects off one
+// and the other in turn, each pair turning its velocity across their crease by twice the wedge's
+// angle θ, about π/θ times in all, until it points out of the wedge. This gives where it ends in
+// closed form, for any θ: its velocity, and how many reflections it took off each plane, with
+// the approach speed of the first off each. Empty when the ball moves into neither plane, or the
+// planes are parallel (no crease).
+struct WedgeReflections {
+  Vec3 velocity;
+  std::uint64_t count[2] = {0, 0};
+  double approach[2] = {0.0, 0.0};
+};
+std::optional<WedgeReflections> reflectInWedge(const Vec3& v, const Vec3& n0, const Vec3& n1);
+
 // Contacts with several immovable surfaces at one instant (the bottom of a narrow V, a crease):
 // reflects `v` off each of `surfaces` (items with a unit `normal` towards the ball and a
 // `restitution`) that it moves into, in turn and with no minimum separation, until it moves into
-// none. Calls reflected(k, approach) for each reflection off surfaces[k], with the approach
-// speed it met it at. False when `limit` reflections
-// did not suffice (a V of about π/limit rad or less, a ball jammed between parallel walls).
+// none. Calls reflected(k, approach, times) for the reflections off surfaces[k]: `times` of them,
+// the first at speed `approach`. False when `limit` reflections did not suffice (a ball jammed
+// between parallel walls). Two elastic planes that take more than kLoopReflections reflections
+// (a V narrower than about π/64 rad) are solved in closed form (reflectInWedge), so that a V of
+// any angle returns the ball; shallower ones keep the loop's arithmetic.
 // An approach within the round-off of v (a ball sliding along a surface, its velocity off the
 // surface by a few ulps) is none: reflecting it leaves v as it was, and looping on it would not
 // end. Skipping it changes no energy, since the reflection changes nothing. Nor does the loop
@@ -55,6 +72,16 @@ bool resolveAgainstSurface(Vec3& v, const Vec3& n, double restitution, double mi
 // back, ten million times a step under `discrete`.
 template <typename Surfaces, typename OnReflect>
 bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& reflected) {
+  if (surfaces.size() == 2 && surfaces[0].restitution == 1.0 && surfaces[1].restitution == 1.0) {
+    const std::optional<WedgeReflections> wedge =
+        reflectInWedge(v, surfaces[0].normal, surfaces[1].normal);
+    if (wedge && wedge->count[0] + wedge->count[1] > tolerance::kLoopReflections) {
+      v = wedge->velocity;
+      for (std::size_t k = 0; k < 2; ++k)
+        if (wedge->count[k] > 0) reflected(k, wedge->approach[k], wedge->count[k]);
+      return true;
+    }
+  }
   int roundOffInARow = 0;
   for (long reflections = 0; reflections < limit;) {
     bool any = false;
@@ -64,7 +91,7 @@ bool reflectOffEach(Vec3& v, const Surfaces& surfaces, long limit, OnReflect&& r
       const Vec3 before = v;
       resolveAgainstSurface(v, surfaces[k].normal, surfaces[k].restitution, 0.0);
       if (v == before) continue;
-      reflected(k, approach);
+      reflected(k, approach, std::uint64_t(1));
       any = true;
       ++reflections;
       const bool roundOff = approach <= tolerance::kTangentRateFraction * before.norm();

@@ -15,19 +15,19 @@ struct CollisionCounts {
   std::uint64_t ballCylinder = 0;
   std::uint64_t ballBox = 0;
   std::uint64_t total() const { return ballBall + ballPlane + ballCylinder + ballBox; }
-  void add(ContactKind kind) {
+  void add(ContactKind kind, std::uint64_t times = 1) {
     switch (kind) {
       case ContactKind::BallBall:
-        ++ballBall;
+        ballBall += times;
         return;
       case ContactKind::BallPlane:
-        ++ballPlane;
+        ballPlane += times;
         return;
       case ContactKind::BallCylinder:
-        ++ballCylinder;
+        ballCylinder += times;
         return;
       case ContactKind::BallBox:
-        ++ballBox;
+        ballBox += times;
         return;
     }
   }

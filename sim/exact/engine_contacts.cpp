@@ -182,11 +182,19 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   if ((now_ - p.lastSurfaceCollision) * speed <=
       std::max(tolerance::kBurstTravelFraction * bodies_.radius[i], positionRoundOff)) {
     if (++p.collisionsInBurst > tolerance::kMaxCollisionsInBurst) {
-      putToRest(i, stats);
-      p.wedged = true;
+      // Once per burst: a ball that bursts again before any real flight (one whose position
+      // cannot move, far out) rests as before.
+      if (!p.leftWedge && leaveWedge(i, stats)) {
+        p.collisionsInBurst = 0;
+        p.leftWedge = true;
+      } else {
+        putToRest(i, stats);
+        p.wedged = true;
+      }
     }
   } else {
     p.collisionsInBurst = 0;
+    p.leftWedge = false;
   }
   p.lastSurfaceCollision = now_;
 }
@@ -245,16 +253,63 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
   // No minimum separation here: in a wedge opening slower than the rest speed it would send
   // the ball from one wall into the other for ever. An inelastic ball slows down in the loop
   // instead, and then rests by the supports rule at its next contact.
-  const bool left =
-      reflectOffEach(tracks_[i].motion.velocity, touchedStatics_,
-                     tolerance::kMaxSimultaneousReflections, [&](std::size_t k, double) {
-                       books_.noteRestitution(touchedStatics_[k].restitution);
-                       stats.collisions.add(contactKindOf(touchedStatics_[k].kind));
-                     });
+  const bool left = reflectOffEach(
+      tracks_[i].motion.velocity, touchedStatics_, tolerance::kMaxSimultaneousReflections,
+      [&](std::size_t k, double, std::uint64_t times) {
+        books_.noteRestitution(touchedStatics_[k].restitution);
+        stats.collisions.add(contactKindOf(touchedStatics_[k].kind), times);
+      });
   if (left)
     changed(i);
   else
     putToRest(i, stats);
+}
+
+// A ball bouncing down a narrow wedge off-centre meets its walls ever more often, with flights
+// that shrink to nothing about where it turns (in a wedge of 1e-6 rad, a millionth of a
+// millimetre off the middle is enough), and the burst guard then stopped it with all its
+// energy gone. Before that, the ball reflects off every static shape within
+// kSupportGapFraction of its radius at once, as a ball touching them all would
+// (leaveTouchingStatics): the reflections keep its speed; only the point where it turns moves,
+// to where the walls are within that gap of it (in a V of angle θ, up to gap/θ higher). It leaves when it then moves away from them all at more than
+// twice its rest speed, and so flies for a while before it meets any; a slower one (a ball
+// settling in the V) rests as before.
+bool EventEngine::leaveWedge(int i, RunStats& stats) {
+  Particle& p = particles_[i];
+  const double reach = tolerance::kSupportGapFraction * bodies_.radius[i];
+  touchedStatics_.clear();
+  // The faces it slides on count too: it leaves them with the rest.
+  for (const StaticRef ref : cells_.staticsNear(i)) {
+    const auto [n, gap, restitution] = staticContact(i, ref);
+    if (gap <= reach) touchedStatics_.push_back({n, restitution, ref.kind});
+  }
+  // Only among static shapes: a ball in a burst against other balls rests as before.
+  bool ballNear = false;
+  const Vec3& centre = tracks_[i].motion.position;
+  forEachNeighbour(i, [&](int k) {
+    const double gap = (tracks_[k].motion.positionAt(now_, accelerationOf(k)) - centre).norm() -
+                       bodies_.radius[i] - bodies_.radius[k];
+    ballNear = ballNear || gap <= reach;
+  });
+  if (ballNear || touchedStatics_.empty()) return false;
+  Vec3 v = tracks_[i].motion.velocity;
+  std::vector<std::uint64_t> reflected(touchedStatics_.size(), 0);
+  const bool left =
+      reflectOffEach(v, touchedStatics_, tolerance::kMaxSimultaneousReflections,
+                     [&](std::size_t k, double, std::uint64_t times) { reflected[k] += times; });
+  if (!left || v.norm() <= tolerance::kSettleSpeedFactor * restSpeed_[i]) return false;
+  for (const TouchedStatic& touched : touchedStatics_)
+    if (v.dot(touched.normal) < 0.0) return false;
+  for (std::size_t k = 0; k < reflected.size(); ++k) {
+    if (reflected[k] == 0) continue;
+    books_.noteRestitution(touchedStatics_[k].restitution);
+    stats.collisions.add(contactKindOf(touchedStatics_[k].kind), reflected[k]);
+  }
+  tracks_[i].motion.velocity = v;
+  p.slidePlane = p.creasePlane = -1;
+  changed(i);
+  refreshFace(i, stats);
+  return true;
 }
 
 void EventEngine::notePenetration(double overlap, RunStats& stats) const {

@@ -81,7 +81,8 @@ void EventEngine::heldMeetsStatic(int h, StaticRef ref, RunStats& stats,
     const StaticContact contact = staticContact(h, other);
     if (contact.gap <= touching) touchedStatics_.push_back({contact.normal, 0.0, other.kind});
   }
-  if (!reflectOffEach(m.velocity, touchedStatics_, kMaxHeldSlideTurns, [](std::size_t, double) {}))
+  if (!reflectOffEach(m.velocity, touchedStatics_, kMaxHeldSlideTurns,
+                      [](std::size_t, double, std::uint64_t) {}))
     m.velocity = Vec3::Zero();
   changed(h);
   const ContactKind kind = contactKindOf(ref.kind);

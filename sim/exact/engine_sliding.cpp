@@ -106,7 +106,9 @@ void EventEngine::updateSlide(int i, RunStats& stats) {
   }
   reflectOffEach(m.velocity, std::span<const Surface>(planes, count),
                  tolerance::kMaxSimultaneousReflections,
-                 [&](std::size_t k, double) { stats.collisions.add(planes[k].kind); });
+                 [&](std::size_t k, double, std::uint64_t times) {
+                   stats.collisions.add(planes[k].kind, times);
+                 });
   dropPlanesLeft(i);
   keepOnPlane(i);
   changed(i);

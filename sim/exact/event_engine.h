@@ -101,6 +101,8 @@ class EventEngine {
     bool resting = false;
     // Put to rest by the burst guard: held in its wedge, it is not loosened (RestCheck).
     bool wedged = false;
+    // It left a wedge at the end of its last burst (leaveWedge), and has not flown since.
+    bool leftWedge = false;
     bool held = false;  // the held ball (grab.h)
   };
   // A ball's earliest predicted contact, kept apart from its next cell crossing so that a
@@ -218,6 +220,9 @@ class EventEngine {
   // The friction of ball i's impacts with static shape `ref`.
   ImpactFriction impactFrictionWith(int i, StaticRef ref) const;
   void leaveTouchingStatics(int i, RunStats& stats);
+  // Ball i in a burst of contacts with negligible flights between: whether it leaves the
+  // shapes around it at once, reflected off them all (engine_contacts.cpp).
+  bool leaveWedge(int i, RunStats& stats);
   void notePenetration(double overlap, RunStats& stats) const;
 
   // Sliding (engine_sliding.cpp; docs/physics.md, "Sliding"): the ball keeps touching the plane and

@@ -255,9 +255,9 @@ class DiscreteStepper final : public Stepper {
     toStepEnd(i);
     restoreEnergy(i);
     reflectOffEach(velocities_[i], overlaps_, tolerance::kMaxSimultaneousReflections,
-                   [&](std::size_t k, double approach) {
+                   [&](std::size_t k, double approach, std::uint64_t times) {
                      const StaticOverlap& o = overlaps_[k];
-                     stats.collisions.add(o.kind);
+                     stats.collisions.add(o.kind, times);
                      if (log)
                        log->push_back({time, o.kind, i, o.other,
                                        positions_[i] - bodies_.radius[i] * o.normal, approach});
