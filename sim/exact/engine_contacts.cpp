@@ -271,9 +271,9 @@ void EventEngine::leaveTouchingStatics(int i, RunStats& stats) {
 // energy gone. Before that, the ball reflects off every static shape within
 // kSupportGapFraction of its radius at once, as a ball touching them all would
 // (leaveTouchingStatics): the reflections keep its speed; only the point where it turns moves,
-// to where the walls are within that gap of it (in a V of angle θ, up to gap/θ higher). It leaves when it then moves away from them all at more than
-// twice its rest speed, and so flies for a while before it meets any; a slower one (a ball
-// settling in the V) rests as before.
+// to where the walls are within that gap of it (in a V of angle θ, up to gap/θ higher). It
+// leaves when it then moves away from them all at more than twice its rest speed, and so flies
+// for a while before it meets any; a slower one (a ball settling in the V) rests as before.
 bool EventEngine::leaveWedge(int i, RunStats& stats) {
   Particle& p = particles_[i];
   const double reach = tolerance::kSupportGapFraction * bodies_.radius[i];
