@@ -3,9 +3,9 @@
 // a plane, follows gravity's component along it on an exact path, until it leaves the face's
 // edge or the cap's rim (the surfaces themselves are SlideSurfaces').
 //
-// This is the room of a ball's lasting contact with flat faces: friction's contact phases
-// (sliding with slip, rolling, spinning in place, at rest on a face) and their transitions at
-// their exact times will live here, beside the frictionless slide that they extend.
+// With friction (roughFaces_), a ball on a face is in one of the phases of face_friction.h
+// (sliding with slip, rolling, still), each ending at its exact time (PhaseEnd), beside the
+// frictionless slide that they extend; a ball in a crease still slides without friction.
 
 #include "sim/exact/event_engine.h"
 

@@ -6,8 +6,8 @@
 //
 // Its parts: the cells, which find a ball's neighbours and the static shapes near it (CellLevels,
 // the broad phase); the contacts' responses (engine_contacts.cpp); the surfaces a ball may slide
-// on (SlideSurfaces) and the sliding itself (engine_sliding.cpp, the room of friction's contact
-// phases); the rest decisions (RestCheck, engine_resting.cpp); `swept`'s energy books
+// on (SlideSurfaces) and the sliding itself with friction's phases on faces (engine_sliding.cpp,
+// face_friction.h); the rest decisions (RestCheck, engine_resting.cpp); `swept`'s energy books
 // (EnergyBooks); the held ball (HeldBall, engine_grab.cpp).
 //
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
@@ -93,9 +93,8 @@ class EventEngine {
     std::uint32_t counter = 0;  // changes whenever the path changes
     int collisionsInBurst = 0;
     double lastSurfaceCollision = -std::numeric_limits<double>::infinity();
-    // Its lasting contact with flat faces (engine_sliding.cpp): today the frictionless slide on
-    // one surface or along the crease of two; friction's contact phases (sliding, rolling,
-    // spinning in place, at rest on a face) join it here.
+    // Its lasting contact with flat faces (engine_sliding.cpp): the slide on one surface or along
+    // the crease of two; with friction, the phase on the surface is in faces_.
     int slidePlane = -1;   // the surface (slides_) the ball slides on, or -1 in flight
     int creasePlane = -1;  // a second one, when it slides along the crease of the two
     bool resting = false;
