@@ -43,7 +43,9 @@ Scene flyingBalls() {
     Ball ball;
     ball.radius = 0.3;
     ball.position = Vec3(-2 + 2 * k, 2.0, 0);
-    ball.velocity = Vec3(0.5 - 0.5 * k, 3.0, 0.2);
+    // Across as well as up, so that each keeps a speed of 0.6 m/s or more at the top of its
+    // flight: a run paused late (a slow machine, the sanitizers) still finds it moving.
+    ball.velocity = Vec3(0.5 - 0.5 * k, 3.0, 0.6);
     scene.balls.push_back(ball);
   }
   return scene;

@@ -3,6 +3,8 @@
 
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
+#include "tests/scene_helpers.h"
+#include "tests/scene_helpers.h"
 #include "ui/dialogs/accuracy_window.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/properties_dock.h"
@@ -479,7 +481,11 @@ void TestUserSession::statusMessagesLeaveTheReadout() {
 // again in a new window, and compare every field of every object with what was meant.
 void TestUserSession::wholeSessionInEveryLanguage_data() {
   QTest::addColumn<QString>("language");
-  for (const char* code : {"en", "de", "ru"}) QTest::newRow(code) << QString(code);
+  // Under the sanitizers one language: the session's memory is the same in each, and the plain
+  // suite walks all three.
+  for (const char* code : {"en", "de", "ru"})
+    if (!carom::testing::sanitizerRun() || QByteArray(code) == "en")
+      QTest::newRow(code) << QString(code);
 }
 
 // Issue 34's whole scenario, in each language: open an example, add one of each shape, type

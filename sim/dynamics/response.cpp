@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace carom {
 
@@ -118,9 +119,14 @@ std::optional<WedgeReflections> reflectInWedge(const Vec3& v, const Vec3& n0, co
   if (!intoFirst) out = theta - out;
   WedgeReflections result;
   result.velocity = vc * crease + speed * (std::cos(out) * x + std::sin(out) * n0);
-  const auto total = static_cast<std::uint64_t>(reflections);
+  // Planes a few ulps from parallel take more reflections than a count holds: counted as many
+  // as it can.
+  constexpr double kMostCounted = 1.8e19;
+  const std::uint64_t total = reflections < kMostCounted
+                                  ? static_cast<std::uint64_t>(reflections)
+                                  : std::numeric_limits<std::uint64_t>::max();
   const int first = intoFirst ? 0 : 1;
-  result.count[first] = (total + 1) / 2;
+  result.count[first] = total / 2 + (total & 1);
   result.count[1 - first] = total / 2;
   const Vec3& nFirst = intoFirst ? n0 : n1;
   const Vec3& nSecond = intoFirst ? n1 : n0;
