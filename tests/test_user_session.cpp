@@ -4,7 +4,6 @@
 #include "sim/io/scene_file.h"
 #include "tests/editor_fixture.h"
 #include "tests/scene_helpers.h"
-#include "tests/scene_helpers.h"
 #include "ui/dialogs/accuracy_window.h"
 #include "ui/editor/editor_tools.h"
 #include "ui/editor/properties_dock.h"
