@@ -2,6 +2,7 @@
 // What stays fixed during a run: the static shapes and each ball's size, mass, restitution and
 // friction, resolved once against the world so the steppers need not look at the scene again.
 
+#include "sim/dynamics/run_stats.h"
 #include "sim/geometry/shapes.h"
 
 #include <algorithm>
@@ -51,12 +52,18 @@ struct Bodies {
   void setWorldFriction(const World& world);
 
   // The impact law of a contact of ball i with the other ball j, or with a plane, cylinder or
-  // box of `shapeFriction` (one of the lists above).
+  // box whose coefficients are `shape` (shapeFriction).
   ImpactFriction impactFriction(int i, int j) const {
     return {std::max(friction[i].sliding, friction[j].sliding), tangentialRestitution};
   }
   ImpactFriction impactFriction(int i, const ContactFriction& shape) const {
     return {std::max(friction[i].sliding, shape.sliding), tangentialRestitution};
+  }
+  // The coefficients of the plane, cylinder or box `index` (by the kind of its contact).
+  const ContactFriction& shapeFriction(ContactKind kind, int index) const {
+    return kind == ContactKind::BallBox        ? boxFriction[index]
+           : kind == ContactKind::BallCylinder ? cylinderFriction[index]
+                                               : planeFriction[index];
   }
   // Every coefficient of such a contact.
   ContactFriction contactFriction(int i, const ContactFriction& shape) const {

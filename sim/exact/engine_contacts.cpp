@@ -215,11 +215,7 @@ EventEngine::StaticContact EventEngine::staticContact(int i, StaticRef ref,
 }
 
 const ContactFriction& EventEngine::shapeFriction(StaticRef ref) const {
-  const std::vector<ContactFriction>& shapes = ref.kind == StaticKind::Box ? bodies_.boxFriction
-                                               : ref.kind == StaticKind::Cylinder
-                                                   ? bodies_.cylinderFriction
-                                                   : bodies_.planeFriction;
-  return shapes[ref.index];
+  return bodies_.shapeFriction(contactKindOf(ref.kind), ref.index);
 }
 
 ImpactFriction EventEngine::impactFrictionWith(int i, StaticRef ref) const {

@@ -199,11 +199,6 @@ class DiscreteStepper final : public Stepper {
   }
 
   double inverseMassOf(int i) const { return i == held_ ? 0.0 : bodies_.inverseMass[i]; }
-  const ContactFriction& shapeFriction(ContactKind kind, int k) const {
-    return kind == ContactKind::BallBox        ? bodies_.boxFriction[k]
-           : kind == ContactKind::BallCylinder ? bodies_.cylinderFriction[k]
-                                               : bodies_.planeFriction[k];
-  }
 
   void resolveStatics(int i, double time, RunStats& stats, std::vector<CollisionRecord>* log) {
     const double r = bodies_.radius[i];
@@ -291,7 +286,7 @@ class DiscreteStepper final : public Stepper {
                                  : 0.0;
       applySteppedFriction(velocities_[i], spins_[i], bodies_.radius[i], n,
                            push > kImpactPushFactor * support ? push : support,
-                           bodies_.contactFriction(i, shapeFriction(kind, other)),
+                           bodies_.contactFriction(i, bodies_.shapeFriction(kind, other)),
                            bodies_.tangentialRestitution);
     }
     recordEnergy(i);
