@@ -651,6 +651,22 @@ class TestCli : public QObject {
                                "energy drift", "wall s"})
       QVERIFY2(header.contains(column), header.constData());
 
+    // The pile table follows the main one.
+    qsizetype pileHeader = 0;
+    while (pileHeader < rows.size() && !rows[pileHeader].startsWith("pile ")) ++pileHeader;
+    QVERIFY(pileHeader < rows.size());
+    const QList<QByteArray> piles = rows.mid(pileHeader + 1);
+    rows = rows.mid(0, pileHeader);
+    QCOMPARE(piles.size(), 2);
+    for (const QByteArray& row : piles) {
+      const QList<QByteArray> cells = row.simplified().split(' ');
+      QVERIFY2(cells.size() == 9, row.constData());
+      QVERIFY2(cells[0] == (row == piles[0] ? "pile" : "rough-pile"), row.constData());
+      bool ok = false;
+      QVERIFY2(cells[3].toDouble(&ok) > 0.0 && ok, row.constData());  // simulated seconds
+      QVERIFY2(cells[7].contains('/'), row.constData());              // resting of all
+    }
+
     QSet<QByteArray> methods, scenes;
     for (const QByteArray& row : rows) {
       const QList<QByteArray> cells = row.simplified().split(' ');
@@ -671,7 +687,7 @@ class TestCli : public QObject {
 
     const QList<QByteArray> progress = nonEmptyLines(run.err);
     for (const QByteArray& line : progress) QVERIFY2(line.startsWith("bench:"), line.constData());
-    QCOMPARE(progress.size(), rows.size());
+    QCOMPARE(progress.size(), rows.size() + piles.size());
     QCOMPARE(rows.size(), 10);
   }
 

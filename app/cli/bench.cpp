@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -56,6 +57,7 @@ struct BenchRow {
 };
 
 constexpr double kPackingFraction = 0.25;
+constexpr double kPileWallLimit = 120.0;
 
 // The gas under gravity: 5 cm balls at 3 m/s per component in a 1.28 m box (for 1,000 balls),
 // so the 9.81 m/s^2 scale height (about 0.9 m) is the size of the box.
@@ -143,6 +145,13 @@ BenchRow measure(const BenchCase& bench) {
   return row;
 }
 
+// The balls at rest at the end: what a settled pile shows.
+int restingBalls(const Simulation& sim) {
+  int resting = 0;
+  for (const BallState& s : sim.state()) resting += s.resting ? 1 : 0;
+  return resting;
+}
+
 QString rate(double count, double seconds) {
   return count > 0.0 ? QString::number(count / seconds / 1e6, 'f', 3) : QString("-");
 }
@@ -197,6 +206,39 @@ int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err) {
                .arg(rate(row.ballSteps, row.wall), 13)
                .arg(std::isnan(row.drift) ? QString("-") : QString::number(row.drift, 'e', 2), 12)
                .arg(row.wall, 6, 'f', 2);
+    out.flush();
+  }
+
+  // The poured pile (issue 36): how fast it settles, smooth and rough. A pile that churned
+  // instead of resting showed as rests and wakes per simulated second that never fell.
+  out << "\npile        balls  friction  simulated s  events/sim s  rests/sim s  wakes/sim s  "
+         "resting  wall s\n";
+  out.flush();
+  for (const double friction : {0.0, 0.5}) {
+    const int balls = quick ? 60 : 200;
+    const double duration = quick ? 2.0 : 20.0;
+    err << "bench: exact, pile of " << balls << " balls, friction " << friction << "...\n";
+    err.flush();
+    Simulation sim(makePouredPile(balls, friction, 7));
+    QElapsedTimer timer;
+    timer.start();
+    // A pile that churns could take hours: the row stops after kPileWallLimit seconds of
+    // computing and shows the simulated time reached.
+    while (sim.time() < duration && timer.nsecsElapsed() * 1e-9 < kPileWallLimit)
+      sim.advanceTo(std::min(duration, sim.time() + 0.5));
+    const double wall = timer.nsecsElapsed() * 1e-9;
+    const double simulated = sim.time();
+    const RunStats& stats = sim.stats();
+    out << QString("%1 %2  %3  %4  %5  %6  %7  %8  %9\n")
+               .arg(friction > 0.0 ? "rough-pile" : "pile", -10)
+               .arg(balls, 6)
+               .arg(friction, 8, 'g', 3)
+               .arg(simulated, 11, 'g', 4)
+               .arg(double(stats.events) / simulated, 12, 'f', 0)
+               .arg(double(stats.restings) / simulated, 11, 'f', 1)
+               .arg(double(stats.wakes) / simulated, 11, 'f', 1)
+               .arg(QString("%1/%2").arg(restingBalls(sim)).arg(balls), 7)
+               .arg(wall, 6, 'f', 2);
     out.flush();
   }
   return kOk;

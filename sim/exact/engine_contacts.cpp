@@ -144,7 +144,7 @@ void EventEngine::bounceOffSurface(int i, const Vec3& n, double restitution, Run
   Motion& m = tracks_[i].motion;
   const double approach = -m.velocity.dot(n);
   const double speed = m.velocity.norm();
-  const bool pressed = gravity_.dot(n) < 0.0;
+  const bool pressed = pressesAlong(gravity_, -n);
   const double rest = restSpeed_[i];
   const int capture =
       plane >= 0 && pressed && restitution * std::max(approach, 0.0) <= slideSpeed_[i]

@@ -13,6 +13,7 @@
 // Balls move lazily: each keeps its path from the time it last changed, so an event costs
 // O(neighbours + log N), not O(N).
 
+#include "sim/core/tolerances.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/face_friction.h"
 #include "sim/dynamics/grab.h"
@@ -140,6 +141,12 @@ class EventEngine {
     if (p.slidePlane < 0) return gravity_;
     if (p.creasePlane < 0) return slides_.gravity(p.slidePlane);
     return gravity_.dot(creaseLine_[i]) * creaseLine_[i];
+  }
+  // Whether acceleration `a` presses along unit normal n by more than the round-off of a normal
+  // between two centres (kTangentRateFraction of |a|): two balls side by side on a floor meet
+  // along a normal whose vertical part is round-off, and its sign must not decide rule 1.
+  static bool pressesAlong(const Vec3& a, const Vec3& n) {
+    return a.dot(n) > tolerance::kTangentRateFraction * a.norm();
   }
   void moveTo(int i, double t) {
     if (roughFaces_) spin_[i] = spinAt(i, t);

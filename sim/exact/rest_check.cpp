@@ -70,19 +70,9 @@ RestCheck::Result RestCheck::of(int i) const {
   Result check;
   const Vec3 centre = tracks_[i].motion.positionAt(now_, engine_.accelerationOf(i));
   const NearContacts near = nearContacts(i, centre);
-  std::vector<ClusterContact> contacts;
-  for (std::size_t c = 0; c < near.normals.size(); ++c)
-    contacts.push_back({0, -1, near.normals[c], frictionWith(i, near.supports[c])});
-  std::vector<bool> carries;
-  if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, {bodies_.radius[i]}, contacts,
-                            tolerance::kForceBalance, &carries))
-    return check;
   std::vector<Support> carrying;
-  for (std::size_t c = 0; c < contacts.size(); ++c)
-    if (carries[c]) carrying.push_back(near.supports[c]);
-  const std::optional<Vec3> move = closingMove(i, centre, carrying);
-  if (!move) return check;
-  if (!clusterHolds(i)) return check;
+  const std::optional<Vec3> move = holdsWhereItIs(i, centre, near, &carrying);
+  if (!move || !clusterHolds(i)) return check;
   // Each resting ball that carries it must be able to: with that ball free as well (its other
   // contacts fixed), the cluster must still hold. One that cannot is loosened: it wakes, and
   // its own check, the same system seen from it, then fails as this one did. Three balls
@@ -100,6 +90,44 @@ RestCheck::Result RestCheck::of(int i) const {
   check.holds = settle.has_value();
   if (settle) check.settle = *settle;
   return check;
+}
+
+// Rule 3's first test of ball i at `centre`: pushes at what it touches hold it with the balls it
+// touches fixed, and the supports that carry it can be closed together. Returns the first-order
+// closing move and the supports carrying it.
+std::optional<Vec3> RestCheck::holdsWhereItIs(int i, const Vec3& centre, const NearContacts& near,
+                                              std::vector<Support>* carryingOut) const {
+  std::optional<Vec3> move;
+  std::vector<Support> carrying;
+  // The balance may pick supports it cannot close together: a ball caged among resting balls,
+  // rattling between those above and below it a few nanometres apart, is held by the nearest
+  // while the balance leaned on one farther below. The supports then count nearest first, as
+  // far out as each tenfold of kTouchFraction takes them, until a set holds it and closes.
+  const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  for (double within = std::numeric_limits<double>::infinity(); !move && within >= touching;
+       within = std::isinf(within) ? tolerance::kSupportGapFraction * bodies_.radius[i] / 10.0
+                                   : within / 10.0) {
+    std::vector<ClusterContact> contacts;
+    std::vector<Support> supports;
+    for (std::size_t c = 0; c < near.normals.size(); ++c) {
+      if (!std::isinf(within) && supportGap(i, near.supports[c], centre).gap > within) continue;
+      contacts.push_back({0, -1, near.normals[c], frictionWith(i, near.supports[c])});
+      supports.push_back(near.supports[c]);
+    }
+    std::vector<bool> carries;
+    if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, {bodies_.radius[i]}, contacts,
+                              tolerance::kForceBalance, &carries)) {
+      if (std::isinf(within)) break;  // fewer supports cannot hold it either
+      continue;
+    }
+    carrying.clear();
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      if (carries[c]) carrying.push_back(supports[c]);
+    move = closingMove(i, centre, carrying);
+  }
+  if (!move) return std::nullopt;
+  if (carryingOut) *carryingOut = std::move(carrying);
+  return move;
 }
 
 // The smallest move that closes the gaps of `carrying` from `centre`, to first order (n . d =

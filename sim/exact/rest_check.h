@@ -67,6 +67,8 @@ class RestCheck {
   bool heldAt(int i, const Vec3& centre, const NearContacts& near) const;
   std::optional<Vec3> lowestPocket(int i, const Vec3& centre, const NearContacts& near) const;
   bool clearAt(int i, const Vec3& centre) const;
+  std::optional<Vec3> holdsWhereItIs(int i, const Vec3& centre, const NearContacts& near,
+                                     std::vector<Support>* carrying) const;
   bool clusterHolds(int i, int freed = -1) const;
 
   // What it reads of the engine.

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace carom {
 namespace {
@@ -152,6 +153,41 @@ Scene makeGaltonBoard(int ballCount, std::uint64_t seed, double radius) {
     ball.position = Vec3(-halfWidth + 1.25 * r + column * spacing + offset(),
                          funnelTop + 2.0 * r + layer * spacing + offset(),
                          (i % 2 == 0 ? -1.25 : 1.25) * r + offset());
+    scene.balls.push_back(ball);
+  }
+  return scene;
+}
+
+Scene makePouredPile(int ballCount, double friction, std::uint64_t seed) {
+  Scene scene;
+  scene.world.gravity = Vec3(0.0, -9.81, 0.0);
+  scene.world.restitution = 0.5;
+  scene.world.friction = friction;
+  scene.world.method = Method::Exact;
+  Plane floor;
+  floor.point = Vec3::Zero();
+  floor.normal = Vec3::UnitY();
+  scene.planes.push_back(floor);
+  addBoxWalls(scene, 0.4, {0, 2});
+  constexpr int kAcross = 7;
+  const int layers = std::max(1, (ballCount + kAcross * kAcross - 1) / (kAcross * kAcross));
+  std::vector<Vec3> sites;
+  for (int y = 0; y < layers; ++y)
+    for (int x = 0; x < kAcross; ++x)
+      for (int z = 0; z < kAcross; ++z)
+        sites.emplace_back(-0.33 + 0.11 * x, 0.06 + 0.12 * y, -0.33 + 0.11 * z);
+  std::mt19937_64 engine(seed);
+  const auto uniform = [&](double half) {
+    return half * (2.0 * static_cast<double>(engine() >> 11) * 0x1.0p-53 - 1.0);
+  };
+  // A Fisher-Yates shuffle on the engine's raw output: the same on every standard library.
+  for (std::size_t k = sites.size() - 1; k > 0; --k)
+    std::swap(sites[k], sites[static_cast<std::size_t>(engine() % (k + 1))]);
+  for (int i = 0; i < ballCount; ++i) {
+    Ball ball;
+    ball.radius = 0.05;
+    ball.position = sites[static_cast<std::size_t>(i)] + Vec3(uniform(0.004), 0.0, uniform(0.004));
+    ball.velocity = Vec3(uniform(0.5), uniform(0.5), uniform(0.5));
     scene.balls.push_back(ball);
   }
   return scene;

@@ -24,4 +24,10 @@ Scene makeGasInBox(int ballCount, double packingFraction, const Vec3& gravity, s
 // seed jitters the balls' starting places.
 Scene makeGaltonBoard(int ballCount, std::uint64_t seed, double radius = 0.01);
 
+// Issue 36's poured pile: `ballCount` balls of radius 0.05 and mass 1, restitution 0.5, on a
+// jittered lattice of 7 by 7 sites a layer, 0.11 m apart across and 0.12 m up from 0.06 m, with
+// random velocities of up to 0.5 m/s per component, above the floor of a 0.8 m square box open
+// at the top; `friction` is the world's μ. The seed picks the sites and the velocities.
+Scene makePouredPile(int ballCount, double friction, std::uint64_t seed);
+
 }  // namespace carom
