@@ -11,8 +11,6 @@
 namespace carom {
 namespace {
 
-constexpr double kNever = std::numeric_limits<double>::infinity();
-
 // The part of `a` across unit direction `d`.
 Vec3 across(const Vec3& a, const Vec3& d) {
   return a - a.dot(d) * d;
