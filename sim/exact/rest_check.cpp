@@ -101,8 +101,9 @@ std::optional<Vec3> RestCheck::holdsWhereItIs(int i, const Vec3& centre, const N
   std::vector<Support> carrying;
   // The balance may pick supports it cannot close together: a ball caged among resting balls,
   // rattling between those above and below it a few nanometres apart, is held by the nearest
-  // while the balance leaned on one farther below. The supports then count nearest first, as
-  // far out as each tenfold of kTouchFraction takes them, until a set holds it and closes.
+  // while the balance leaned on one farther below. The farthest supports are then left out:
+  // those beyond 10^-3 of the radius, then beyond 10^-4, down to kTouchFraction, until a set
+  // holds it and closes.
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
   for (double within = std::numeric_limits<double>::infinity(); !move && within >= touching;
        within = std::isinf(within) ? tolerance::kSupportGapFraction * bodies_.radius[i] / 10.0
