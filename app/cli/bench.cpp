@@ -1,6 +1,7 @@
 #include "app/cli/bench.h"
 
 #include "app/cli/exit_code.h"
+#include "sim/measure/measures.h"
 #include "sim/model/scene_builders.h"
 #include "sim/simulation.h"
 
@@ -145,13 +146,6 @@ BenchRow measure(const BenchCase& bench) {
   return row;
 }
 
-// The balls at rest at the end: what a settled pile shows.
-int restingBalls(const Simulation& sim) {
-  int resting = 0;
-  for (const BallState& s : sim.state()) resting += s.resting ? 1 : 0;
-  return resting;
-}
-
 QString rate(double count, double seconds) {
   return count > 0.0 ? QString::number(count / seconds / 1e6, 'f', 3) : QString("-");
 }
@@ -237,7 +231,7 @@ int runBench(const BenchOptions& options, QTextStream& out, QTextStream& err) {
                .arg(double(stats.events) / simulated, 12, 'f', 0)
                .arg(double(stats.restings) / simulated, 11, 'f', 1)
                .arg(double(stats.wakes) / simulated, 11, 'f', 1)
-               .arg(QString("%1/%2").arg(restingBalls(sim)).arg(balls), 7)
+               .arg(QString("%1/%2").arg(restingCount(sim.state())).arg(balls), 7)
                .arg(wall, 6, 'f', 2);
     out.flush();
   }

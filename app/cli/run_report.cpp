@@ -412,7 +412,7 @@ int runScene(const Scene& scene, const RunOptions& options, const QElapsedTimer&
       std::max({result.maxPenetration, final.maxPenetration, sim.stats().maxPenetration});
   result.escaped = final.escaped;
   result.finalEnergy = sim.totalEnergy();
-  for (const BallState& s : sim.state()) result.resting += s.resting ? 1 : 0;
+  result.resting = restingCount(sim.state());
   // Also after Ctrl+C or the watch: the file holds the run so far, as the report does.
   if (trajectory.isOpen() && !trajectory.commit()) return trajectoryFailed(trajectory, err);
   result.measureSeconds += measuring.nsecsElapsed() * 1e-9;

@@ -105,16 +105,21 @@ std::optional<Vec3> RestCheck::holdsWhereItIs(int i, const Vec3& centre, const N
   // those beyond 10^-3 of the radius, then beyond 10^-4, down to kTouchFraction, until a set
   // holds it and closes.
   const double touching = tolerance::kTouchFraction * bodies_.radius[i];
+  std::vector<double> gaps;
+  for (const Support& support : near.supports) gaps.push_back(supportGap(i, support, centre).gap);
+  std::size_t previous = 0;  // supports in the last set tried
   for (double within = std::numeric_limits<double>::infinity(); !move && within >= touching;
        within = std::isinf(within) ? tolerance::kSupportGapFraction * bodies_.radius[i] / 10.0
                                    : within / 10.0) {
     std::vector<ClusterContact> contacts;
     std::vector<Support> supports;
     for (std::size_t c = 0; c < near.normals.size(); ++c) {
-      if (!std::isinf(within) && supportGap(i, near.supports[c], centre).gap > within) continue;
+      if (gaps[c] > within) continue;
       contacts.push_back({0, -1, near.normals[c], frictionWith(i, near.supports[c])});
       supports.push_back(near.supports[c]);
     }
+    if (supports.size() == previous) continue;  // the set already tried
+    previous = supports.size();
     std::vector<bool> carries;
     if (!contactForcesBalance(gravity_, {bodies_.mass[i]}, {bodies_.radius[i]}, contacts,
                               tolerance::kForceBalance, &carries)) {

@@ -8,6 +8,11 @@
 
 namespace carom {
 
+int restingCount(const std::vector<BallState>& state) {
+  return static_cast<int>(
+      std::count_if(state.begin(), state.end(), [](const BallState& s) { return s.resting; }));
+}
+
 OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions) {
   OverlapReport report;
   for (int i = 0; i < static_cast<int>(positions.size()); ++i) {

@@ -14,6 +14,9 @@ struct OverlapReport {
 
 OverlapReport measureOverlaps(const Bodies& bodies, const std::vector<Vec3>& positions);
 
+// How many balls of `state` are at rest (the rest policy's, docs/physics.md).
+int restingCount(const std::vector<BallState>& state);
+
 // The Kolmogorov-Smirnov distance of two samples: the largest gap between their empirical
 // distribution functions, 0 (the same distribution) to 1 (no overlap). Takes copies to sort.
 double distributionDistance(std::vector<double> a, std::vector<double> b);
