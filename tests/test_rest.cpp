@@ -661,6 +661,53 @@ class TestRest : public QObject {
     QCOMPARE(x[1], 0.0);
   }
 
+  // Systems shaped like a rough cluster's: many more columns than rows, bundles of nearly
+  // parallel ones (a friction pyramid's edges, contacts whose normals nearly agree) and exact
+  // duplicates. The solver updates its factorisation as columns come and go; it must still end
+  // at the optimum: a consistent b (a non-negative combination of the columns) is fitted to
+  // round-off, and at an inconsistent one no zero variable could lower the residual (the
+  // optimality conditions: the gradient A^T (b - A x) is not positive where x is zero, and
+  // round-off where x is positive).
+  void nonNegativeLeastSquaresReachesTheOptimumOfDegenerateSystems() {
+    std::mt19937_64 engine(11);
+    std::normal_distribution<double> normal;
+    for (int trial = 0; trial < 200; ++trial) {
+      const int rows = 3 + trial % 4 * 3;  // 3 to 12 rows
+      const int bundles = rows + trial % 7;
+      Eigen::MatrixXd a(rows, 4 * bundles);
+      for (int k = 0; k < bundles; ++k) {
+        Eigen::VectorXd axis(rows);
+        for (int r = 0; r < rows; ++r) axis[r] = normal(engine);
+        for (int e = 0; e < 4; ++e) {
+          Eigen::VectorXd column = axis;
+          if (e < 3)  // the fourth repeats the third exactly
+            for (int r = 0; r < rows; ++r) column[r] += (e == 0 ? 1e-9 : 0.3) * normal(engine);
+          else
+            column = a.col(4 * k + 2);
+          a.col(4 * k + e) = column.normalized();
+        }
+      }
+      Eigen::VectorXd b(rows);
+      const bool consistent = trial % 2 == 0;
+      if (consistent) {
+        b.setZero();
+        for (Eigen::Index c = 0; c < a.cols(); c += 3) b += std::abs(normal(engine)) * a.col(c);
+      } else {
+        for (int r = 0; r < rows; ++r) b[r] = normal(engine);
+      }
+      const Eigen::VectorXd x = nonNegativeLeastSquares(a, b);
+      QVERIFY((x.array() >= 0.0).all());
+      const Eigen::VectorXd residual = b - a * x;
+      if (consistent)
+        QVERIFY2(residual.norm() <= 1e-12 * b.norm(), qPrintable(QString::number(trial)));
+      const Eigen::VectorXd gradient = a.transpose() * residual;
+      for (Eigen::Index j = 0; j < x.size(); ++j) {
+        QVERIFY2(gradient[j] <= 1e-12 * b.norm(), qPrintable(QString::number(trial)));
+        if (x[j] > 0.0) QVERIFY(std::abs(gradient[j]) <= 1e-12 * b.norm());
+      }
+    }
+  }
+
   // Elastic closed scenes under the stepped methods: no secular energy growth. Their integrators
   // and straight sweeps (`swept`) or pushed-out overlaps (`discrete`) err at every step, and the
   // errors used to add up: a gas under gravity gained 49 times its energy in 1,000 s under
