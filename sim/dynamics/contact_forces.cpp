@@ -29,7 +29,8 @@ class ColumnQr {
     if (k == qt_.rows()) return false;
     Eigen::VectorXd w = qt_ * column;
     // Rows k and below of the held columns are zero, so these rotations leave them as they are.
-    for (Eigen::Index i = w.size() - 1; i > k; --i) rotate(w, i - 1, w[i - 1], w[i], k);
+    for (Eigen::Index i = w.size() - 1; i > k; --i)
+      w.applyOnTheLeft(i - 1, i, rotate(i - 1, w[i - 1], w[i], k));
     if (std::abs(w[k]) <= kDependent) return false;
     r_.col(k) = w;
     ++size_;
@@ -43,8 +44,7 @@ class ColumnQr {
     --size_;
     // Column c now has one entry below its diagonal, at row c + 1.
     for (Eigen::Index c = position; c < size_; ++c) {
-      Eigen::VectorXd unused;
-      rotate(unused, c, r_(c, c), r_(c + 1, c), c);
+      rotate(c, r_(c, c), r_(c + 1, c), c);
       r_(c + 1, c) = 0.0;
     }
   }
@@ -54,13 +54,17 @@ class ColumnQr {
     return r_.topLeftCorner(size_, size_).triangularView<Eigen::Upper>().solve(qtb_.head(size_));
   }
 
+  // The coefficient of the last column alone: back substitution's first step.
+  double lastCoefficient() const { return qtb_[size_ - 1] / r_(size_ - 1, size_ - 1); }
+
  private:
   // A column within this of the span of the others (they and it of unit length) counts as in it.
   static constexpr double kDependent = 1e-13;
 
-  // Rotates rows `row` and row + 1 of Qᵀ, Qᵀb, R's columns from `fromColumn` on, and `w` when
-  // it has entries, so that (x, y) there becomes (|(x, y)|, 0).
-  void rotate(Eigen::VectorXd& w, Eigen::Index row, double x, double y, Eigen::Index fromColumn) {
+  // Rotates rows `row` and row + 1 of Qᵀ, Qᵀb and R's columns from `fromColumn` on so that
+  // (x, y) there becomes (|(x, y)|, 0); returns the rotation.
+  Eigen::JacobiRotation<double> rotate(Eigen::Index row, double x, double y,
+                                       Eigen::Index fromColumn) {
     Eigen::JacobiRotation<double> g;
     g.makeGivens(x, y);
     const Eigen::JacobiRotation<double> apply = g.adjoint();
@@ -68,7 +72,7 @@ class ColumnQr {
     qtb_.applyOnTheLeft(row, row + 1, apply);
     if (size_ > fromColumn)
       r_.middleCols(fromColumn, size_ - fromColumn).applyOnTheLeft(row, row + 1, apply);
-    if (w.size() > 0) w.applyOnTheLeft(row, row + 1, apply);
+    return apply;
   }
 
   Eigen::MatrixXd qt_;
@@ -85,6 +89,7 @@ Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::V
   std::vector<Eigen::Index> set;  // the positive (passive) columns, in the factorisation's order
   std::vector<bool> passive(n, false), dependent(n, false);
   ColumnQr qr(b);
+  const Eigen::RowVectorXd norms = a.colwise().norm();
   // Gradients below this are round-off of the products that make them.
   const double threshold = 1e-14 * std::max(1.0, a.norm() * b.norm());
   // Each pass frees one variable; a cycle through round-off is cut off after generous passes.
@@ -98,11 +103,11 @@ Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::V
     if (best < 0) break;
     // A column in the span of the set cannot lower the residual (the residual is orthogonal to
     // the span); nor can one whose coefficient would not be positive (Lawson and Hanson's test).
-    if (!qr.append(a.col(best).normalized())) {
+    if (!qr.append(a.col(best) / norms[best])) {
       dependent[best] = true;
       continue;
     }
-    if (qr.solve()[qr.size() - 1] <= 0.0) {
+    if (qr.lastCoefficient() <= 0.0) {
       qr.remove(qr.size() - 1);
       dependent[best] = true;
       continue;
@@ -113,7 +118,7 @@ Eigen::VectorXd nonNegativeLeastSquares(const Eigen::MatrixXd& a, const Eigen::V
     for (Eigen::Index inner = 0; inner < n + 1; ++inner) {
       // The columns were normalised for the factorisation: scale back.
       Eigen::VectorXd z = qr.solve();
-      for (std::size_t k = 0; k < set.size(); ++k) z[k] /= a.col(set[k]).norm();
+      for (std::size_t k = 0; k < set.size(); ++k) z[k] /= norms[set[k]];
       bool feasible = true;
       double step = 1.0;
       for (std::size_t k = 0; k < set.size(); ++k) {
