@@ -430,6 +430,291 @@ class TestFriction : public QObject {
                qPrintable(disagreement("E", sim.totalEnergy(), energy)));
   }
 
+  // A slide across the fall line of a 30° incline, started sideways at 1 m/s without spin: its
+  // slip turns down the fall line as friction takes it. Against the closed form in s = tan(φ/2),
+  // φ the slip's angle to the fall line (q = 7μ·g_n/(2|g_t|), a = |g_t|): the slip across the
+  // fall line is C·s^q and along it C·(s^(q-1) - s^(q+1))/2, at
+  // t(s) = C/(2a)·[(s0^(q-1) - s^(q-1))/(q-1) + (s0^(q+1) - s^(q+1))/(q+1)], and v - 2/7·u
+  // changes at 5/7·g_t; the position against a Runge-Kutta integration of the ball's equations
+  // at steps of 10 µs. With μ = 0.3 (q = 1.82) the slip ends at a finite time and the ball
+  // rolls on; with μ = 0.1 (q = 0.61) it slides on for ever.
+  void obliqueSlide_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("friction");
+    for (const Method m : {Method::Exact, Method::Swept, Method::Discrete}) {
+      const QByteArray name(methodName(m).data());
+      QTest::newRow(name + " stops slipping") << int(m) << 0.3;
+      QTest::newRow(name + " slides on") << int(m) << 0.1;
+    }
+  }
+  void obliqueSlide() {
+    QFETCH(int, method);
+    QFETCH(double, friction);
+    const double theta = M_PI / 6;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+    const Vec3 g(0, -kG, 0);
+    const double pressing = kG * std::cos(theta);
+    const Vec3 along = g + pressing * n;  // g_t
+    const double a = along.norm();
+    const Vec3 e = along / a, across(0, 0, 1);
+    const double q = 3.5 * friction * pressing / a;
+    const Vec3 v0 = across;  // the slip too: no spin
+    Scene s;
+    s.world.gravity = g;
+    s.world.method = Method(method);
+    s.world.timeStep = 1e-3;
+    s.world.restitution = 0.5;
+    s.world.friction = friction;
+    s.planes.push_back(makePlane({0, 0, 0}, n));
+    const Vec3 x0 = kRadius * n;
+    s.balls.push_back(makeBall(x0, v0, kRadius));
+    Simulation sim(s);
+
+    // The closed form: s0 = tan 45° = 1, C = 1.
+    const double s0 = 1.0, C = 1.0;
+    const auto timeOf = [&](double sv) {
+      return C / (2 * a) *
+             ((std::pow(s0, q - 1) - std::pow(sv, q - 1)) / (q - 1) +
+              (std::pow(s0, q + 1) - std::pow(sv, q + 1)) / (q + 1));
+    };
+    const double stop = q > 1 ? timeOf(0.0) : std::numeric_limits<double>::infinity();
+    const auto slipAt = [&](double t) -> Vec3 {
+      if (t >= stop) return Vec3::Zero();
+      double low = 0.0, high = s0;  // t(s) falls as s rises
+      for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (low + high);
+        (timeOf(mid) > t ? low : high) = mid;
+      }
+      const double sv = 0.5 * (low + high);
+      return C * std::pow(sv, q) * across +
+             0.5 * C * (std::pow(sv, q - 1) - std::pow(sv, q + 1)) * e;
+    };
+    const auto velocityAt = [&](double t) -> Vec3 {
+      return v0 + 2.0 / 7.0 * (slipAt(t) - v0) + 5.0 / 7.0 * t * along;
+    };
+
+    // The ball's equations while it slips: the centre at g_t - μ·g_n·û, the spin at
+    // 5/2·μ·g_n/r·n×û.
+    struct State {
+      Vec3 x, v, w;
+    };
+    const auto rate = [&](const State& y) -> State {
+      const Vec3 u = y.v - kRadius * y.w.cross(n);
+      const Vec3 d = u.normalized();
+      return {y.v, along - friction * pressing * d,
+              2.5 * friction * pressing / kRadius * n.cross(d)};
+    };
+    const auto step = [](const State& y, const State& k, double h) {
+      return State{y.x + h * k.x, y.v + h * k.v, y.w + h * k.w};
+    };
+    State y{x0, v0, Vec3::Zero()};
+    double time = 0.0;
+    const auto integrateTo = [&](double end) {
+      const int steps = std::max(1, int(std::ceil((end - time) / 1e-5)));
+      const double h = (end - time) / steps;
+      for (int k = 0; k < steps; ++k) {
+        const State k1 = rate(y), k2 = rate(step(y, k1, h / 2)), k3 = rate(step(y, k2, h / 2)),
+                    k4 = rate(step(y, k3, h));
+        y = {y.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+             y.v + h / 6 * (k1.v + 2 * k2.v + 2 * k3.v + k4.v),
+             y.w + h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w)};
+      }
+      time = end;
+    };
+    const auto referenceAt = [&](double t) -> State {
+      if (t < stop) {
+        integrateTo(t);
+        return y;
+      }
+      // Up to just before the stop, where the slip's direction is still defined, then on at the
+      // closed form's velocity for 0.1 µs (its position error is μ·g·(0.1 µs)², 1e-14 m), and
+      // rolling: 5/7·g_t.
+      if (time < stop - 1e-7) integrateTo(stop - 1e-7);
+      const Vec3 vs = velocityAt(stop);
+      const Vec3 xs = y.x + 1e-7 * vs;
+      const double dt = t - stop;
+      return {xs + dt * vs + 5.0 / 14.0 * dt * dt * along, vs + 5.0 / 7.0 * dt * along,
+              n.cross(vs + 5.0 / 7.0 * dt * along) / kRadius};
+    };
+
+    double simulated = 0.0;
+    for (const double t : {0.05, 0.12, 0.6}) {
+      sim.advance(t - simulated);
+      simulated = t;
+      const BallState b = sim.state()[0];
+      const State reference = referenceAt(t);
+      const Vec3 v = velocityAt(t);
+      const QString at = QString(" at %1 s").arg(t);
+      QVERIFY2(agrees(Method(method), (b.velocity - v).norm(), 0.0, v.norm()),
+               qPrintable(disagreement("v", b.velocity.norm(), v.norm()) + at));
+      QVERIFY2(
+          agrees(Method(method), (b.position - reference.x).norm(), 0.0, (reference.x - x0).norm()),
+          qPrintable(disagreement("x", (b.position - x0).norm(), (reference.x - x0).norm()) + at));
+      QVERIFY2(agrees(Method(method), kRadius * (b.angularVelocity - reference.w).norm(), 0.0,
+                      kRadius * reference.w.norm() + 0.02 * v.norm()),
+               qPrintable(disagreement("r·ω", kRadius * b.angularVelocity.norm(),
+                                       kRadius * reference.w.norm()) +
+                          at));
+      // The reference itself agrees with the closed form's velocity.
+      QVERIFY((reference.v - v).norm() < 1e-11);
+    }
+  }
+
+  // The oblique slide above (μ = 0.1) runs into a wall across its way, 0.2 m ahead: the contact
+  // comes when a Runge-Kutta integration of the ball's equations says, to 1e-9 s, although the
+  // path is not a polynomial (the contact solvers take a parabola within 1e-10 of the radius of
+  // it, a segment at a time).
+  void obliqueSlideMeetsAWall() {
+    const double theta = M_PI / 6, friction = 0.1;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+    const Vec3 g(0, -kG, 0);
+    const double pressing = kG * std::cos(theta);
+    const Vec3 along = g + pressing * n;
+    Scene s;
+    s.world.gravity = g;
+    s.world.method = Method::Exact;
+    s.world.restitution = 0.5;
+    s.world.friction = friction;
+    s.planes.push_back(makePlane({0, 0, 0}, n));
+    s.planes.push_back(makePlane({0, 0, 0.2}, {0, 0, -1}));
+    const Vec3 x0 = kRadius * n, v0(0, 0, 1);
+    s.balls.push_back(makeBall(x0, v0, kRadius));
+    Simulation sim(s);
+    sim.setCollisionLog(true);
+    sim.advance(0.5);
+    double hit = -1.0;
+    for (const CollisionRecord& c : sim.takeCollisions())
+      if (c.kind == ContactKind::BallPlane && c.other == 1) {
+        hit = c.time;
+        break;
+      }
+    QVERIFY(hit > 0.0);
+
+    struct State {
+      Vec3 x, v, w;
+    };
+    const auto rate = [&](const State& y) -> State {
+      const Vec3 d = (y.v - kRadius * y.w.cross(n)).normalized();
+      return {y.v, along - friction * pressing * d,
+              2.5 * friction * pressing / kRadius * n.cross(d)};
+    };
+    const auto step = [&](const State& y, double h) {
+      const auto at = [](const State& z, const State& k, double dt) {
+        return State{z.x + dt * k.x, z.v + dt * k.v, z.w + dt * k.w};
+      };
+      const State k1 = rate(y), k2 = rate(at(y, k1, h / 2)), k3 = rate(at(y, k2, h / 2)),
+                  k4 = rate(at(y, k3, h));
+      return State{y.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+                   y.v + h / 6 * (k1.v + 2 * k2.v + 2 * k3.v + k4.v),
+                   y.w + h / 6 * (k1.w + 2 * k2.w + 2 * k3.w + k4.w)};
+    };
+    // Steps of 10 µs to the one that reaches the wall (the centre at z = 0.1), then the part of
+    // that step that just reaches it, by halving.
+    State y{x0, v0, Vec3::Zero()};
+    double time = 0.0;
+    while (step(y, 1e-5).x.z() < 0.1) {
+      y = step(y, 1e-5);
+      time += 1e-5;
+    }
+    double low = 0.0, high = 1e-5;
+    for (int k = 0; k < 60; ++k) {
+      const double mid = 0.5 * (low + high);
+      (step(y, mid).x.z() < 0.1 ? low : high) = mid;
+    }
+    const double expected = time + 0.5 * (low + high);
+    QVERIFY2(std::abs(hit - expected) <= 1e-9, qPrintable(disagreement("t", hit, expected)));
+    // Bounced off, and nowhere through the wall or the incline.
+    QVERIFY(sim.state()[0].position.z() < 0.1);
+    QVERIFY(sim.state()[0].position.dot(n) > kRadius * (1.0 - 1e-9));
+  }
+
+  // A roll across the fall line of a 30° incline against rolling resistance, started sideways at
+  // 1 m/s: dv/dt = 5/7·g_t - μ_r·g_n·v̂ turns it downhill, the same law as an oblique slip's.
+  // With μ_r = 0.5 the resistance beats the pull and the ball stops for good; with 0.3 it rolls
+  // on. Against a Runge-Kutta integration at steps of 10 µs.
+  void obliqueRoll_data() {
+    QTest::addColumn<int>("method");
+    QTest::addColumn<double>("resistance");
+    for (const Method m : {Method::Exact, Method::Swept, Method::Discrete}) {
+      const QByteArray name(methodName(m).data());
+      QTest::newRow(name + " stops") << int(m) << 0.5;
+      QTest::newRow(name + " rolls on") << int(m) << 0.3;
+    }
+  }
+  void obliqueRoll() {
+    QFETCH(int, method);
+    QFETCH(double, resistance);
+    const double theta = M_PI / 6;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+    const Vec3 g(0, -kG, 0);
+    const double pressing = kG * std::cos(theta);
+    const Vec3 along = g + pressing * n;
+    const Vec3 v0(0, 0, 1);
+    Scene s;
+    s.world.gravity = g;
+    s.world.method = Method(method);
+    s.world.timeStep = 1e-3;
+    s.world.restitution = 0.5;
+    s.world.friction = 1.0;
+    s.world.rollingResistance = resistance;
+    s.planes.push_back(makePlane({0, 0, 0}, n));
+    const Vec3 x0 = kRadius * n;
+    Ball ball = makeBall(x0, v0, kRadius);
+    ball.angularVelocity = n.cross(v0) / kRadius;  // rolling
+    s.balls.push_back(ball);
+    Simulation sim(s);
+    const double pull = 5.0 / 7.0 * along.norm(), drag = resistance * pressing;
+
+    Vec3 x = x0, v = v0;
+    double time = 0.0;
+    bool stopped = false;
+    const auto rate = [&](const Vec3& w) -> Vec3 {
+      return 5.0 / 7.0 * along - drag * w.normalized();
+    };
+    const auto integrateTo = [&](double end) {
+      for (; time < end - 1e-12 && !stopped;) {
+        const double h = std::min(1e-5, end - time);
+        // Stopping within the step (the drag beats the pull, and the speed falls at least at
+        // their difference): the ball is still from there, within h·|v| (1e-10 m) of where it
+        // stops.
+        if (drag > pull && v.norm() <= h * (drag - pull)) {
+          stopped = true;
+          break;
+        }
+        const Vec3 k1 = rate(v), k2 = rate(v + h / 2 * k1), k3 = rate(v + h / 2 * k2),
+                   k4 = rate(v + h * k3);
+        const Vec3 next = v + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        x += h * v + h * h / 6 * (k1 + k2 + k3);
+        v = next;
+        time += h;
+      }
+    };
+    double simulated = 0.0;
+    for (const double t : {0.05, 0.3, 1.0}) {
+      sim.advance(t - simulated);
+      simulated = t;
+      integrateTo(t);
+      const BallState b = sim.state()[0];
+      const QString at = QString(" at %1 s").arg(t);
+      if (stopped) {
+        QVERIFY2(b.velocity.norm() <= (Method(method) == Method::Exact ? 1e-9 : 0.02),
+                 qPrintable(disagreement("v", b.velocity.norm(), 0.0) + at));
+        QVERIFY2(
+            agrees(Method(method), (b.position - x).norm(), 0.0, (x - x0).norm() + 0.05 * 0.05),
+            qPrintable(disagreement("x", (b.position - x0).norm(), (x - x0).norm()) + at));
+        continue;
+      }
+      // To 2 % of the speed it started with under the stepped methods.
+      QVERIFY2(agrees(Method(method), (b.velocity - v).norm(), 0.0, v0.norm()),
+               qPrintable(disagreement("v", b.velocity.norm(), v.norm()) + at));
+      QVERIFY2(agrees(Method(method), (b.position - x).norm(), 0.0, (x - x0).norm()),
+               qPrintable(disagreement("x", (b.position - x0).norm(), (x - x0).norm()) + at));
+      const Vec3 w = n.cross(v) / kRadius;
+      QVERIFY2(agrees(Method(method), kRadius * (b.angularVelocity - w).norm(), 0.0, v0.norm()),
+               qPrintable(disagreement("r·ω", kRadius * b.angularVelocity.norm(), v.norm()) + at));
+    }
+  }
+
   // The follow shot: a rolling ball hits a resting one head on (no friction between the balls,
   // elastic): it stops with its spin, which the cloth turns into rolling at 2/7 of its speed,
   // while the struck ball slides off at its speed and ends rolling at 5/7 of it.

@@ -113,9 +113,11 @@ inline constexpr double kCrushRoomFraction = 1.0;
 // change handed over (test_friction).
 inline constexpr double kRollingSlipFraction = 1e-12;
 // A slide whose slip runs across the fall line of a tilted face, or a roll with resistance
-// across it, turns as it goes and has no polynomial path: for now each of its phases keeps its
-// direction for as long as that turns by at most this angle (radians), and is taken again from
-// there; the closed form in tan(φ/2) (docs/physics.md) replaces it.
-inline constexpr double kFaceTurnAngle = 1e-3;
+// across it, turns as it goes and has no polynomial path. Its state is a closed form
+// (TurningFacePath); the contact solvers take a parabola in its place, one segment at a time,
+// each short enough that the two stay within this fraction of the ball's radius, a tenth of
+// touching (kTouchFraction): a contact is found within that of touching, and only a graze
+// shallower than it can be missed (test_friction).
+inline constexpr double kTurningPathDeviation = 1e-10;
 
 }  // namespace carom::tolerance

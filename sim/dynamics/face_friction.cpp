@@ -16,13 +16,10 @@ Vec3 across(const Vec3& a, const Vec3& d) {
   return a - a.dot(d) * d;
 }
 
-// Limits a phase whose direction `d` (of a vector `size` long) turns at `turning` (the
-// acceleration across d) to the time it takes to turn by kFaceTurnAngle.
-void limitTurn(FaceMotion& m, const Vec3& turning, double size, double scale) {
-  const double rate = turning.norm();
-  if (rate <= tolerance::kRollingSlipFraction * scale) return;
-  m.turning = true;
-  m.duration = std::min(m.duration, tolerance::kFaceTurnAngle * size / rate);
+// Marks a phase whose direction turns: one with an acceleration across it (`turning`) beyond
+// the round-off of `scale`, the acceleration's size.
+void markTurning(FaceMotion& m, const Vec3& turning, double scale) {
+  if (turning.norm() > tolerance::kRollingSlipFraction * scale) m.turning = true;
 }
 
 // A slide with slip `slip` long along unit direction `d`.
@@ -37,7 +34,7 @@ FaceMotion sliding(const Vec3& d, double slip, double radius, const FaceFrame& f
   const double rate = face.along.dot(d) - 3.5 * force;
   // Without friction nothing happens when the slip passes zero.
   if (force > 0.0 && rate < 0.0) m.duration = slip / -rate;
-  if (force > 0.0) limitTurn(m, across(face.along, d), slip, face.along.norm());
+  if (force > 0.0) markTurning(m, across(face.along, d), face.along.norm());
   return m;
 }
 
@@ -66,7 +63,7 @@ FaceMotion faceMotion(const Vec3& v, const Vec3& w, double radius, const FaceFra
     m.acceleration = 5.0 / 7.0 * face.along - resistance * d;
     const double rate = 5.0 / 7.0 * face.along.dot(d) - resistance;
     if (rate < 0.0) m.duration = speed / -rate;
-    if (resistance > 0.0) limitTurn(m, across(5.0 / 7.0 * face.along, d), speed, pull);
+    if (resistance > 0.0) markTurning(m, across(5.0 / 7.0 * face.along, d), pull);
   } else if (5.0 / 7.0 * pull > resistance) {
     m.acceleration = 5.0 / 7.0 * face.along - resistance * downhill;  // rolls off from rest
   } else {

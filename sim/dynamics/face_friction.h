@@ -38,8 +38,8 @@ struct FaceMotion {
   // (rolling); infinity when it does not end by itself.
   double duration = std::numeric_limits<double>::infinity();
   // The slip or the rolling velocity turns on the face (a slide or a roll with resistance across
-  // a tilted face): the phase then holds its direction only for `duration`, short enough that the
-  // direction turns by at most kFaceTurnAngle, and is taken again from there.
+  // a tilted face): no polynomial path, but a closed form (TurningFacePath), whose acceleration,
+  // angular acceleration and duration then replace the ones above, which hold only at the start.
   bool turning = false;
 };
 

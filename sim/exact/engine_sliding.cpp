@@ -133,6 +133,16 @@ void EventEngine::refreshFace(int i, RunStats& stats) {
   face.motion = faceMotion(m.velocity, spin_[i], r, frame, friction);
   face.normal = n;
   face.normalDecay = spinDecayRate(frame, friction, r);
+  if (face.motion.turning) {
+    face.turning.emplace(m.velocity, spin_[i], r, frame, friction, face.motion.phase);
+    face.turningFrom = m.position;
+    face.turningSince = now_;
+    const TurningFacePath::Segment segment =
+        face.turning->segment(tolerance::kTurningPathDeviation * r);
+    face.motion.acceleration = segment.acceleration;
+    face.motion.angularAcceleration = segment.angularAcceleration;
+    face.motion.duration = segment.duration;
+  }
   face.end = now_ + face.motion.duration;
   // Rolling is exactly that: the slip's round-off goes.
   if (face.motion.phase == FacePhase::Rolling)
@@ -171,7 +181,8 @@ void EventEngine::findPhaseEnd(int i) {
 void EventEngine::endPhase(int i, RunStats& stats) {
   moveTo(i, now_);
   const FaceContact& face = faces_[i];
-  if (!face.motion.turning) {
+  // A turning phase ends a segment, and only at its last one the phase itself.
+  if (!face.motion.turning || face.motion.duration == face.turning->end()) {
     Motion& m = tracks_[i].motion;
     const Vec3& n = face.normal;
     // What the closed form says happens now: the slip is zero, or the roll stopped.

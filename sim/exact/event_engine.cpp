@@ -276,6 +276,11 @@ void EventEngine::changed(int i) {
 BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
   const Motion& m = tracks_[ball].motion;
+  if (roughFaces_ && faces_[ball].turning) {
+    const FaceContact& f = faces_[ball];
+    const TurningFacePath::State exact = f.turning->at(now_ - f.turningSince);
+    return {f.turningFrom + exact.displacement, exact.velocity, p.resting, spinAt(ball, now_)};
+  }
   const Vec3& a = accelerationOf(ball);
   return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting, spinAt(ball, now_)};
 }

@@ -18,6 +18,7 @@
 #include "sim/dynamics/face_friction.h"
 #include "sim/dynamics/grab.h"
 #include "sim/dynamics/run_stats.h"
+#include "sim/dynamics/turning_face_path.h"
 #include "sim/exact/cell_levels.h"
 #include "sim/exact/energy_books.h"
 #include "sim/exact/event_queue.h"
@@ -129,9 +130,12 @@ class EventEngine {
   Vec3 spinAt(int i, double t) const {
     if (!roughFaces_) return spin_[i];
     const FaceContact& f = faces_[i];
-    return SpinPath{spin_[i], f.motion.angularAcceleration, f.normal, f.normalDecay,
-                    tracks_[i].motion.since}
-        .at(t);
+    const Vec3 w = SpinPath{spin_[i], f.motion.angularAcceleration, f.normal, f.normalDecay,
+                            tracks_[i].motion.since}
+                       .at(t);
+    if (!f.turning) return w;
+    // Along the face the closed form's; about the normal spinning friction's.
+    return w.dot(f.normal) * f.normal + f.turning->at(t - f.turningSince).spinAlong;
   }
   // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
   // (a pair that gravity presses together), the same under `exact` and `swept`.
@@ -151,6 +155,14 @@ class EventEngine {
   void moveTo(int i, double t) {
     if (roughFaces_) spin_[i] = spinAt(i, t);
     tracks_[i].motion.moveTo(t, accelerationOf(i));
+    // A turning path's parabola only stands in for it in the contact solvers: the state is the
+    // closed form's.
+    if (roughFaces_ && faces_[i].turning) {
+      const FaceContact& f = faces_[i];
+      const TurningFacePath::State exact = f.turning->at(t - f.turningSince);
+      tracks_[i].motion.position = f.turningFrom + exact.displacement;
+      tracks_[i].motion.velocity = exact.velocity;
+    }
     if (particles_[i].slidePlane >= 0) keepOnPlane(i);
   }
   void changed(int i);
@@ -319,6 +331,11 @@ class EventEngine {
     Vec3 normal = Vec3::Zero();                            // of the face, or zero off any
     double normalDecay = 0.0;                              // of the spin about it (spinDecayRate)
     double end = std::numeric_limits<double>::infinity();  // the phase's, absolute
+    // A turning phase's exact path (motion.turning), from turningFrom at turningSince; the
+    // phase's acceleration is then its stand-in's over one segment, which `end` closes.
+    std::optional<TurningFacePath> turning;
+    Vec3 turningFrom = Vec3::Zero();
+    double turningSince = 0.0;
   };
   std::vector<FaceContact> faces_;  // per ball, when roughFaces_
   struct Prediction {
