@@ -4,6 +4,7 @@
 
 #include "sim/dynamics/energy.h"
 #include "sim/dynamics/response.h"
+#include "sim/dynamics/turning_drag.h"
 #include "sim/io/scene_file.h"
 #include "sim/measure/measures.h"
 #include "sim/model/scene_builders.h"
@@ -558,6 +559,43 @@ class TestFriction : public QObject {
       // The reference itself agrees with the closed form's velocity.
       QVERIFY((reference.v - v).norm() < 1e-11);
     }
+  }
+
+  // dw/dt = a·e - k·ŵ at its extremes: q = k/a at one (where the closed form's powers become a
+  // logarithm) and within 1e-9 of it, far below and above it, w nearly along the pull and nearly
+  // against it. Against a Runge-Kutta integration of 10⁵ steps up to 2/a, or 0.9 of the stop
+  // when that comes sooner: w and its integral to 1e-9 of |w0|, |w0|/a.
+  void turningDragAtItsExtremes() {
+    const Vec3 e(1, 0, 0), across(0, 1, 0);
+    for (const double q : {1.0, 1.0 + 1e-9, 1.0 - 1e-9, 0.01, 0.5, 2.0, 50.0, 1e4})
+      for (const double phi : {1e-6, 0.3, M_PI / 2, M_PI - 0.01}) {
+        const double a = 2.0;
+        const Vec3 w0 = 3.0 * (std::cos(phi) * e + std::sin(phi) * across);
+        const TurningDrag drag(w0, a * e, q * a);
+        const double end = std::min(0.9 * drag.stopTime(), 2.0 / a);
+        Vec3 w = w0, integral = Vec3::Zero();
+        const auto rate = [&](const Vec3& x) -> Vec3 { return a * e - q * a * x.normalized(); };
+        const int steps = 100000;
+        const double h = end / steps;
+        for (int k = 0; k < steps; ++k) {
+          const Vec3 k1 = rate(w), k2 = rate(w + h / 2 * k1), k3 = rate(w + h / 2 * k2),
+                     k4 = rate(w + h * k3);
+          integral += h * w + h * h / 6 * (k1 + k2 + k3);
+          w += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        }
+        const TurningDrag::State got = drag.at(end);
+        const QString where = QString("q %1, φ0 %2").arg(q, 0, 'g', 12).arg(phi);
+        QVERIFY2((got.value - w).norm() <= 1e-9 * w0.norm(),
+                 qPrintable(where + QString(": w off by %1").arg((got.value - w).norm())));
+        QVERIFY2(
+            (got.integral - integral).norm() <= 1e-9 * w0.norm() / a,
+            qPrintable(where + QString(": ∫w off by %1").arg((got.integral - integral).norm())));
+        QVERIFY(std::abs(got.angle - std::atan2(w.y(), w.x())) <= 1e-8);
+        if (q > 1.0) {
+          QCOMPARE(drag.at(drag.stopTime()).value, Vec3::Zero());
+          QVERIFY(drag.at(drag.stopTime() * (1.0 - 1e-12)).value.norm() <= 1e-9 * w0.norm());
+        }
+      }
   }
 
   // The oblique slide above (μ = 0.1) runs into a wall across its way, 0.2 m ahead: the contact

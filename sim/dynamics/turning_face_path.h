@@ -45,11 +45,22 @@ class TurningFacePath {
   // whose second derivative is at most M stays within M·t²/8.
   double deviationBound(double t) const;
 
-  TurningDrag drag_;
+  // What turns: the slip u = v - r·ω×n of a slide, pulled by g_t and held back by 7/2·μ·g_n
+  // (the force μ·g_n on the centre and its torque on the spin); the velocity of a roll, pulled
+  // by 5/7·g_t and held back by μ_r·g_n.
+  struct Turning {
+    Vec3 from, pull;
+    double drag;
+    double centreDrag;  // the friction force's size per unit mass on the centre
+  };
+  static Turning turningOf(const Vec3& v, const Vec3& w, double radius, const FaceFrame& face,
+                           const ContactFriction& friction, bool sliding);
+
   bool sliding_;
-  Vec3 velocity_, slip_, along_, normal_;
+  Turning turning_;
+  TurningDrag drag_;
+  Vec3 velocity_, along_, normal_;
   double radius_;
-  double centreDrag_;  // the friction force's size per unit mass on the centre
 };
 
 }  // namespace carom

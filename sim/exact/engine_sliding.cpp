@@ -134,11 +134,12 @@ void EventEngine::refreshFace(int i, RunStats& stats) {
   face.normal = n;
   face.normalDecay = spinDecayRate(frame, friction, r);
   if (face.motion.turning) {
-    face.turning.emplace(m.velocity, spin_[i], r, frame, friction, face.motion.phase);
-    face.turningFrom = m.position;
-    face.turningSince = now_;
+    TurningFace& turning = turningFaces_[i];
+    turning.path.emplace(m.velocity, spin_[i], r, frame, friction, face.motion.phase);
+    turning.from = m.position;
+    turning.since = now_;
     const TurningFacePath::Segment segment =
-        face.turning->segment(tolerance::kTurningPathDeviation * r);
+        turning.path->segment(tolerance::kTurningPathDeviation * r);
     face.motion.acceleration = segment.acceleration;
     face.motion.angularAcceleration = segment.angularAcceleration;
     face.motion.duration = segment.duration;
@@ -182,7 +183,7 @@ void EventEngine::endPhase(int i, RunStats& stats) {
   moveTo(i, now_);
   const FaceContact& face = faces_[i];
   // A turning phase ends a segment, and only at its last one the phase itself.
-  if (!face.motion.turning || face.motion.duration == face.turning->end()) {
+  if (!face.motion.turning || face.motion.duration == turningFaces_[i].path->end()) {
     Motion& m = tracks_[i].motion;
     const Vec3& n = face.normal;
     // What the closed form says happens now: the slip is zero, or the roll stopped.

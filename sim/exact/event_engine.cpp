@@ -51,7 +51,10 @@ EventEngine::EventEngine(const Bodies& bodies, const std::vector<BallState>& sta
   }
   creaseLine_.resize(n);
   creaseAcceleration_.resize(n);
-  if (roughFaces_) faces_.resize(n);
+  if (roughFaces_) {
+    faces_.resize(n);
+    turningFaces_.resize(n);
+  }
   for (int i = 0; i < n; ++i) books_.record(i, tracks_[i].motion);
   cells_.build(bodies_, positions());
   predictAll();
@@ -276,10 +279,10 @@ void EventEngine::changed(int i) {
 BallState EventEngine::stateOf(int ball) const {
   const Particle& p = particles_[ball];
   const Motion& m = tracks_[ball].motion;
-  if (roughFaces_ && faces_[ball].turning) {
-    const FaceContact& f = faces_[ball];
-    const TurningFacePath::State exact = f.turning->at(now_ - f.turningSince);
-    return {f.turningFrom + exact.displacement, exact.velocity, p.resting, spinAt(ball, now_)};
+  if (roughFaces_ && faces_[ball].motion.turning) {
+    const TurningFacePath::State exact = turningFaces_[ball].at(now_);
+    return {turningFaces_[ball].from + exact.displacement, exact.velocity, p.resting,
+            spinAt(ball, now_)};
   }
   const Vec3& a = accelerationOf(ball);
   return {m.positionAt(now_, a), m.velocityAt(now_, a), p.resting, spinAt(ball, now_)};
@@ -333,10 +336,10 @@ void EventEngine::spinInPlace(int i, const Vec3& kick) {
 std::size_t EventEngine::memoryBytes() const {
   return sizeof(*this) + carom::memoryBytes(tracks_) + carom::memoryBytes(particles_) +
          carom::memoryBytes(predictions_) + carom::memoryBytes(touchedStatics_) +
-         carom::memoryBytes(spin_) + carom::memoryBytes(faces_) + books_.memoryBytes() +
-         carom::memoryBytes(restSpeed_) + carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() +
-         carom::memoryBytes(creaseLine_) + carom::memoryBytes(creaseAcceleration_) +
-         cells_.memoryBytes() + queue_.memoryBytes();
+         carom::memoryBytes(spin_) + carom::memoryBytes(faces_) +
+         carom::memoryBytes(turningFaces_) + books_.memoryBytes() + carom::memoryBytes(restSpeed_) +
+         carom::memoryBytes(slideSpeed_) + slides_.memoryBytes() + carom::memoryBytes(creaseLine_) +
+         carom::memoryBytes(creaseAcceleration_) + cells_.memoryBytes() + queue_.memoryBytes();
 }
 
 }  // namespace carom

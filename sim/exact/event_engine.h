@@ -133,9 +133,9 @@ class EventEngine {
     const Vec3 w = SpinPath{spin_[i], f.motion.angularAcceleration, f.normal, f.normalDecay,
                             tracks_[i].motion.since}
                        .at(t);
-    if (!f.turning) return w;
+    if (!f.motion.turning) return w;
     // Along the face the closed form's; about the normal spinning friction's.
-    return w.dot(f.normal) * f.normal + f.turning->at(t - f.turningSince).spinAlong;
+    return w.dot(f.normal) * f.normal + turningFaces_[i].at(t).spinAlong;
   }
   // What gravity does to ball i's velocity, whichever path it follows: the rest policy's view
   // (a pair that gravity presses together), the same under `exact` and `swept`.
@@ -157,10 +157,9 @@ class EventEngine {
     tracks_[i].motion.moveTo(t, accelerationOf(i));
     // A turning path's parabola only stands in for it in the contact solvers: the state is the
     // closed form's.
-    if (roughFaces_ && faces_[i].turning) {
-      const FaceContact& f = faces_[i];
-      const TurningFacePath::State exact = f.turning->at(t - f.turningSince);
-      tracks_[i].motion.position = f.turningFrom + exact.displacement;
+    if (roughFaces_ && faces_[i].motion.turning) {
+      const TurningFacePath::State exact = turningFaces_[i].at(t);
+      tracks_[i].motion.position = turningFaces_[i].from + exact.displacement;
       tracks_[i].motion.velocity = exact.velocity;
     }
     if (particles_[i].slidePlane >= 0) keepOnPlane(i);
@@ -331,13 +330,18 @@ class EventEngine {
     Vec3 normal = Vec3::Zero();                            // of the face, or zero off any
     double normalDecay = 0.0;                              // of the spin about it (spinDecayRate)
     double end = std::numeric_limits<double>::infinity();  // the phase's, absolute
-    // A turning phase's exact path (motion.turning), from turningFrom at turningSince; the
-    // phase's acceleration is then its stand-in's over one segment, which `end` closes.
-    std::optional<TurningFacePath> turning;
-    Vec3 turningFrom = Vec3::Zero();
-    double turningSince = 0.0;
   };
   std::vector<FaceContact> faces_;  // per ball, when roughFaces_
+  // A turning phase's exact path (FaceMotion::turning), from `from` at `since`; the phase's
+  // acceleration is then its stand-in's over one segment, which the phase's end closes. Kept
+  // apart from faces_, which the loop reads for every ball.
+  struct TurningFace {
+    std::optional<TurningFacePath> path;
+    Vec3 from = Vec3::Zero();
+    double since = 0.0;
+    TurningFacePath::State at(double t) const { return path->at(t - since); }
+  };
+  std::vector<TurningFace> turningFaces_;  // per ball, when roughFaces_
   struct Prediction {
     Contact contact;
     CellLevels::Crossing crossing;
