@@ -286,7 +286,9 @@ void printText(QTextStream& out, const Simulation& sim, const RunResult& result)
       << stats.staleEvents << "), steps: " << stats.steps << "\n";
   out << "rest policy: " << stats.restings << " rests, " << stats.wakes << " wakes, "
       << stats.minimumBounces << " minimum bounces\n";
-  if (stats.facePhases > 0) out << "friction: " << stats.facePhases << " face phases ended\n";
+  if (stats.facePhases > 0)
+    out << "friction: " << stats.facePhases
+        << " face phases ended (a turning path's segments each count)\n";
   for (const std::string& note : sim.modelNotes())
     out << "model: " << QString::fromStdString(note) << "\n";
 }

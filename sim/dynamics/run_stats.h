@@ -53,8 +53,9 @@ struct RunStats {
   std::uint64_t restings = 0;        // times a ball was put to rest
   std::uint64_t wakes = 0;           // times a resting ball was set moving again
   std::uint64_t minimumBounces = 0;  // bounces raised to the minimum separation speed
-  std::uint64_t facePhases = 0;      // exact: phases with friction on faces that ended
-  double maxPenetration = 0.0;       // largest overlap of a ball with anything seen
+  std::uint64_t facePhases = 0;  // exact: phases with friction on faces that ended, each segment
+                                 // of a turning one counted (TurningFacePath)
+  double maxPenetration = 0.0;   // largest overlap of a ball with anything seen
 };
 
 }  // namespace carom
