@@ -138,8 +138,12 @@ void EventEngine::refreshFace(int i, RunStats& stats) {
     turning.path.emplace(m.velocity, spin_[i], r, frame, friction, face.motion.phase);
     turning.from = m.position;
     turning.since = now_;
+    // No finer than the position's round-off, which no contact time resolves either (a ball of
+    // 1e-12 m took a segment every 1e-7 s).
+    const double roundOff =
+        4.0 * std::numeric_limits<double>::epsilon() * m.position.cwiseAbs().maxCoeff();
     const TurningFacePath::Segment segment =
-        turning.path->segment(tolerance::kTurningPathDeviation * r);
+        turning.path->segment(std::max(tolerance::kTurningPathDeviation * r, roundOff));
     face.motion.acceleration = segment.acceleration;
     face.motion.angularAcceleration = segment.angularAcceleration;
     face.motion.duration = segment.duration;
