@@ -117,7 +117,8 @@ inline constexpr double kRollingSlipFraction = 1e-12;
 // (TurningFacePath); the contact solvers take a parabola in its place, one segment at a time,
 // each short enough that the two stay within this fraction of the ball's radius, a tenth of
 // touching (kTouchFraction): a contact is found within that of touching, and only a graze
-// shallower than it can be missed (test_friction).
+// shallower than it can be missed (test_friction). Never below four ulps of the ball's position,
+// which no contact time resolves either.
 inline constexpr double kTurningPathDeviation = 1e-10;
 
 }  // namespace carom::tolerance
