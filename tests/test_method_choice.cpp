@@ -84,6 +84,30 @@ class TestMethodChoice : public QObject {
     for (const carom::PilotMeasure& m : choice.candidates) QVERIFY(!m.meets);
   }
 
+  void aPilotThatSeesNothingShowsNoToleranceBelowRoundOff() {
+    // One ball drifting in a large empty box without gravity: nothing happens in the pilot, so
+    // every candidate's measured energy error and penetration are exactly nought (so were the
+    // gas's above when a slow machine's budget ended its pilot before a collision's round-off
+    // showed in the energy's sum). That is no evidence of meeting a tolerance below round-off.
+    carom::Scene scene = carom::makeGasInBox(1, 1e-6, carom::Vec3::Zero(), 3);
+    scene.balls.front().velocity = carom::Vec3(1e-3, 0.0, 0.0);
+    const AccuracyTolerance impossible{1e-30, 1e-30};
+    const MethodChoice choice = carom::chooseMethod(scene, 1.0, impossible);
+    QVERIFY(!choice.chosen);
+    for (const carom::PilotMeasure& m : choice.candidates) {
+      QVERIFY(m.measuredAt > 0.0);
+      QCOMPARE(m.energyErrorPerSecond, 0.0);
+      QCOMPARE(m.penetrationFraction, 0.0);
+      QVERIFY(m.energyResolutionPerSecond > impossible.energyPerSecond);
+      QVERIFY(m.penetrationResolution > impossible.penetrationFraction);
+      QVERIFY2(m.verdict.find("round-off") != std::string::npos, m.verdict.c_str());
+    }
+    // A tolerance round-off can show is met, by the cheapest.
+    const MethodChoice loose = carom::chooseMethod(scene, 1.0, {1e-6, 1e-6});
+    QVERIFY(loose.chosen);
+    QVERIFY(loose.pick().meets);
+  }
+
   void energyErrorIsTheWorstOverThePilot() {
     // The magic room's energy under `exact` is its start's to the last bit at some moments and
     // a round-off away at others: a pilot that judged the energy at its end alone would find

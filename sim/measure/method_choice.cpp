@@ -19,13 +19,14 @@ std::string number(double value) {
   return text;
 }
 
-// How far past the tolerance a candidate is, as the larger ratio of measure to tolerance;
-// infinite when it lost balls or its state.
+// How far past the tolerance a candidate is, as the larger ratio of measure (with what it cannot
+// resolve) to tolerance; infinite when it lost balls or its state.
 double worstExcess(const PilotMeasure& m, const AccuracyTolerance& tolerance) {
   if (m.measuredAt == 0.0 || !m.finite || m.escaped > 0)
     return std::numeric_limits<double>::infinity();
-  return std::max(m.energyErrorPerSecond / tolerance.energyPerSecond,
-                  m.penetrationFraction / tolerance.penetrationFraction);
+  return std::max(
+      (m.energyErrorPerSecond + m.energyResolutionPerSecond) / tolerance.energyPerSecond,
+      (m.penetrationFraction + m.penetrationResolution) / tolerance.penetrationFraction);
 }
 
 struct Pilot {
@@ -39,12 +40,6 @@ struct Pilot {
 };
 
 }  // namespace
-
-bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
-                    const AccuracyTolerance& tolerance) {
-  return escaped == 0 && energyErrorPerSecond <= tolerance.energyPerSecond &&
-         penetrationFraction <= tolerance.penetrationFraction;
-}
 
 double MethodChoice::expectedRunSeconds() const {
   return candidates.empty() ? 0.0 : pick().setupSeconds + pick().costPerSecond * duration;
@@ -177,8 +172,14 @@ MethodChoice chooseMethod(const Scene& scene, double duration, const AccuracyTol
           std::max(overlaps.maxPenetration, pilot->sim.stats().maxPenetration) / smallestRadius;
       m.energyErrorPerSecond =
           m.finite ? pilot->worstEnergyError / t : std::numeric_limits<double>::infinity();
-      m.meets = m.finite && m.escaped == 0 && m.energyErrorPerSecond <= tolerance.energyPerSecond &&
-                m.penetrationFraction <= tolerance.penetrationFraction;
+      // One rounding of the energies compared, and of the largest coordinate.
+      constexpr double roundOff = std::numeric_limits<double>::epsilon();
+      m.energyResolutionPerSecond =
+          roundOff * (std::abs(yardstick.initial) + std::abs(energy)) / yardstick.scale / t;
+      double farthest = 0.0;
+      for (const Vec3& p : positions) farthest = std::max(farthest, p.cwiseAbs().maxCoeff());
+      m.penetrationResolution = roundOff * farthest / smallestRadius;
+      m.meets = m.finite && m.escaped == 0 && worstExcess(m, tolerance) <= 1.0;
     }
     // Penetration and escapes only grow, and a lost state stays lost: such candidates are out.
     // Any clearly dearer (kPilotPauseFactor) than the best that meets the tolerance (as last
@@ -242,6 +243,10 @@ MethodChoice chooseMethod(const Scene& scene, double duration, const AccuracyTol
     else if (m.energyErrorPerSecond > tolerance.energyPerSecond)
       m.verdict = "energy error " + number(m.energyErrorPerSecond) + "/s > " +
                   number(tolerance.energyPerSecond);
+    else if (!m.meets)
+      m.verdict = "the tolerance is finer than round-off lets the pilot show (energy to " +
+                  number(m.energyResolutionPerSecond) + "/s, penetration to " +
+                  number(m.penetrationResolution) + " of the radius)";
     else
       m.verdict = "meets the tolerance but costs more";
   }

@@ -14,10 +14,6 @@
 
 namespace carom {
 
-// Energy error (EnergyYardstick) and penetration within the tolerance, and no ball lost.
-bool meetsTolerance(double energyErrorPerSecond, double penetrationFraction, int escaped,
-                    const AccuracyTolerance& tolerance);
-
 // The pilot's computing time is at most this share of the run's expected time, or
 // kPilotFloorSeconds if that is longer: a run of a few milliseconds leaves its pilot no time to
 // see a single collision, and a pilot of 50 ms is not a wait anyone notices.
@@ -50,6 +46,11 @@ struct PilotMeasure {
   double costPerSecond = 0.0;
   double energyErrorPerSecond = 0.0;
   double penetrationFraction = 0.0;
+  // The finest error and penetration the measures can show, a rounding of the energies and the
+  // positions they compare: a pilot that saw nothing (no collision yet, or round-off cancelling
+  // in the energy's sum) has shown the run no better than this.
+  double energyResolutionPerSecond = 0.0;
+  double penetrationResolution = 0.0;
   int escaped = 0;
   bool finite = true;
   bool meets = false;
