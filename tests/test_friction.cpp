@@ -766,6 +766,87 @@ class TestFriction : public QObject {
   // stepped methods: swept's hops are at least a step's kick of gravity), and loses at most 1.5 %
   // of its kinetic energy by then to the hops' bounces (e = 0.5; 2.5 % under the stepped methods),
   // 0.15 % when elastic; it never gains any.
+  void turningToAStopOnAnyTilt() {
+    // A ball sent across the fall line of a tilted face, sliding or rolling, on a grid of tilts,
+    // frictions and rolling resistances. Near its stop a roll turns ever faster, its path's
+    // segments shortening past what the clock resolves, and a ball nearly still that spins about
+    // the normal gets a slip from that spin's round-off: both once made a phase that ended where
+    // it began, again and again at one instant. Each run ends, the energy never rises, a ball
+    // whose roll the resistance beats (tan θ < 7/5·μ_r, where it can roll: tan θ <= 7/2·μ) ends
+    // exactly still and stays so, and any other keeps moving.
+    int stopped = 0, moving = 0;
+    for (const double theta : {0.1, 0.2, 0.3, 0.4, M_PI / 6, 0.6, 0.7, 1.0})
+      for (const double resistance : {0.1, 0.3, 0.5, 0.8})
+        for (const double friction : {0.2, 1.0})
+          for (const bool rolling : {false, true}) {
+            const QByteArray row = QByteArray::number(theta) + " μ_r " +
+                                   QByteArray::number(resistance) + " μ " +
+                                   QByteArray::number(friction) + (rolling ? " rolling" : "");
+            const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+            Scene s;
+            s.world.gravity = Vec3(0, -kG, 0);
+            s.world.restitution = 0.5;
+            s.world.friction = friction;
+            s.world.rollingResistance = resistance;
+            s.planes.push_back(makePlane({0, 0, 0}, n));
+            Ball ball = makeBall(kRadius * n, Vec3(0, 0, 1), kRadius);
+            if (rolling) ball.angularVelocity = n.cross(ball.velocity) / kRadius;
+            s.balls.push_back(ball);
+            Simulation sim(s);
+            const bool stops =
+                std::tan(theta) < 1.4 * resistance && std::tan(theta) <= 3.5 * friction;
+            double energy = sim.totalEnergy();
+            bool still = false;
+            for (int k = 0; k < 25 && !still; ++k) {
+              sim.advance(10.0);
+              const double now = sim.totalEnergy();
+              QVERIFY2(now <= energy + 1e-12 * (std::abs(now) + std::abs(energy)), row);
+              energy = now;
+              still = sim.velocities()[0] == Vec3::Zero();
+            }
+            QVERIFY2(still == stops, row);
+            if (!still) {
+              ++moving;
+              continue;
+            }
+            ++stopped;
+            const Vec3 at = sim.positions()[0];
+            sim.advance(10.0);
+            QVERIFY2(sim.positions()[0] == at, row);
+            QVERIFY2(sim.velocities()[0] == Vec3::Zero(), row);
+          }
+    QCOMPARE(stopped, 66);
+    QCOMPARE(moving, 62);
+  }
+
+  void spinAboutTheNormalMakesNoSlip() {
+    // A ball at rest on a tilted face where friction holds it, spinning about the face's normal
+    // (spinning friction off, then on): that spin moves the contact point nowhere, so the ball
+    // stays exactly where it is, in one phase, and only the spin about the normal decays.
+    for (const double spinning : {0.0, 0.1}) {
+      const double theta = 0.3;
+      const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+      Scene s;
+      s.world.gravity = Vec3(0, -kG, 0);
+      s.world.friction = 1.0;
+      s.world.rollingResistance = 0.3;
+      s.world.spinningFriction = spinning;
+      s.planes.push_back(makePlane({0, 0, 0}, n));
+      Ball ball = makeBall(kRadius * n, Vec3::Zero(), kRadius);
+      ball.angularVelocity = 5.0 * n;
+      s.balls.push_back(ball);
+      Simulation sim(s);
+      const Vec3 at = sim.positions()[0];
+      sim.advance(2.0);
+      QCOMPARE(sim.positions()[0], at);
+      QCOMPARE(sim.velocities()[0], Vec3::Zero());
+      QVERIFY(sim.stats().events <= 2);
+      const Vec3 w = sim.angularVelocities()[0];
+      QVERIFY(std::abs(w.dot(n)) <= 5.0 + 1e-12);
+      QVERIFY((w - w.dot(n) * n).norm() <= 1e-12);
+    }
+  }
+
   void rollingOverACurvedSurface_data() {
     QTest::addColumn<int>("method");
     QTest::addColumn<double>("restitution");

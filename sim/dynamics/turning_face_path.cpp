@@ -21,7 +21,7 @@ TurningFacePath::Turning TurningFacePath::turningOf(const Vec3& v, const Vec3& w
   const Vec3 vt = alongFace(v, face.normal);
   if (sliding) {
     const double force = friction.sliding * face.pressing;
-    return {vt - radius * w.cross(face.normal), face.along, 3.5 * force, force};
+    return {faceSlip(v, w, face.normal, radius), face.along, 3.5 * force, force};
   }
   const double resistance = friction.rolling * face.pressing;
   return {vt, 5.0 / 7.0 * face.along, resistance, resistance};
@@ -52,12 +52,13 @@ double TurningFacePath::deviationBound(double t) const {
   return turning_.centreDrag * swept * t * t / 8.0;
 }
 
-TurningFacePath::Segment TurningFacePath::segment(double deviation) const {
+TurningFacePath::Segment TurningFacePath::segment(double deviation, double shortest) const {
   // A first guess from the turn at the start (the angle swept about rate·t), then halved until
   // the bound holds; the turn may speed up as the slip shrinks.
   double t = std::cbrt(8.0 * deviation / (turning_.centreDrag * drag_.startTurnRate()));
   t = std::min({t, end(), std::numeric_limits<double>::max()});
   for (int halving = 0; halving < 1100 && deviationBound(t) > deviation; ++halving) t *= 0.5;
+  t = std::min(std::max(t, shortest), end());
   const State start = at(0.0), there = at(t);
   return {t, 2.0 * (there.displacement - t * velocity_) / (t * t),
           (there.spinAlong - start.spinAlong) / t};

@@ -30,13 +30,15 @@ class TurningFacePath {
 
   // The parabola from the start (the exact position and velocity, and `acceleration`) that meets
   // the path again at `duration` and stays within `deviation` of it in between, and the constant
-  // angular acceleration that takes the spin to its value there.
+  // angular acceleration that takes the spin to its value there. No shorter than `shortest`
+  // (the clock's resolution: a segment that ends when it starts would start again forever)
+  // unless the path ends before; parted by at most deviationBound(shortest) there.
   struct Segment {
     double duration;
     Vec3 acceleration;
     Vec3 angularAcceleration;
   };
-  Segment segment(double deviation) const;
+  Segment segment(double deviation, double shortest) const;
 
  private:
   // How far the parabola through the path's ends at t may part from the path: its acceleration

@@ -142,8 +142,11 @@ void EventEngine::refreshFace(int i, RunStats& stats) {
     // 1e-12 m took a segment every 1e-7 s).
     const double roundOff =
         4.0 * std::numeric_limits<double>::epsilon() * m.position.cwiseAbs().maxCoeff();
+    // Nor shorter than the clock resolves (one tick, where the parabola parts from the path by
+    // at most μ·g_n·π·tick²/8): no event time tells a shorter one from none.
+    const double tick = std::nextafter(now_, std::numeric_limits<double>::infinity()) - now_;
     const TurningFacePath::Segment segment =
-        turning.path->segment(std::max(tolerance::kTurningPathDeviation * r, roundOff));
+        turning.path->segment(std::max(tolerance::kTurningPathDeviation * r, roundOff), tick);
     face.motion.acceleration = segment.acceleration;
     face.motion.angularAcceleration = segment.angularAcceleration;
     face.motion.duration = segment.duration;
