@@ -109,9 +109,9 @@ inline constexpr double kCrushRoomFraction = 1.0;
 
 // A ball on a face rolls when its slip (the contact point's velocity) is below this fraction of
 // |v| + r·|ω| (v along the face, all of ω: the spin about the normal rounds into the part along
-// the face too): the round-off of v - r·ω×n. A phase that ends in
-// rolling sets the slip to zero exactly, so this acts only on states an impact or a method
-// change handed over (test_friction).
+// the face too): the round-off of v - r·ω×n. A phase that ends in rolling sets the slip to zero
+// exactly, so this acts only on states an impact or a method change handed over
+// (test_friction).
 inline constexpr double kRollingSlipFraction = 1e-12;
 // A slide whose slip runs across the fall line of a tilted face, or a roll with resistance
 // across it, turns as it goes and has no polynomial path. Its state is a closed form
