@@ -5,6 +5,7 @@
 #include "sim/dynamics/energy.h"
 #include "sim/dynamics/response.h"
 #include "sim/dynamics/turning_drag.h"
+#include "sim/dynamics/turning_face_path.h"
 #include "sim/io/scene_file.h"
 #include "sim/measure/measures.h"
 #include "sim/model/scene_builders.h"
@@ -602,6 +603,34 @@ class TestFriction : public QObject {
           QVERIFY(drag.at(drag.stopTime() * (1.0 - 1e-12)).value.norm() <= 1e-9 * w0.norm());
         }
       }
+  }
+
+  void turningSegmentIsNoShorterThanATick() {
+    // A roll across a 30° face against μ_r = 0.5, which stops it. A segment asked to stay within
+    // a deviation no clock could resolve the time of is one tick long, `shortest`, and parts
+    // from the path by no more than the bound there; one whose path ends within the tick is the
+    // rest of the path, which the engine ends in its end state.
+    const double theta = M_PI / 6;
+    const Vec3 n(-std::sin(theta), std::cos(theta), 0);
+    const FaceFrame face = FaceFrame::of(n, Vec3(0, -kG, 0));
+    const ContactFriction friction{1.0, 0.5, 0.0};
+    const Vec3 v(0, 0, 1);
+    const TurningFacePath path(v, n.cross(v) / kRadius, kRadius, face, friction,
+                               FacePhase::Rolling);
+    QVERIFY(std::isfinite(path.end()));
+    const double tick = 1e-9;
+    const TurningFacePath::Segment fine = path.segment(1e-300, tick);
+    QCOMPARE(fine.duration, tick);
+    // μ_r·g_n·π·tick²/8 bounds the parabola's distance from the path.
+    const double bound = 0.5 * face.pressing * M_PI * tick * tick / 8.0;
+    for (const double f : {0.25, 0.5, 0.75}) {
+      const double t = f * tick;
+      const Vec3 parabola = t * v + 0.5 * t * t * fine.acceleration;
+      QVERIFY((path.at(t).displacement - parabola).norm() <= bound * (1.0 + 1e-6) + 1e-30);
+    }
+    const TurningFacePath::Segment last = path.segment(1e-300, 2.0 * path.end());
+    QCOMPARE(last.duration, path.end());
+    QCOMPARE(path.at(last.duration).velocity, Vec3(Vec3::Zero()));
   }
 
   // The oblique slide above (μ = 0.1) runs into a wall across its way, 0.2 m ahead: the contact
