@@ -44,7 +44,7 @@ FaceMotion faceMotion(const Vec3& v, const Vec3& w, double radius, const FaceFra
                       const ContactFriction& friction) {
   const Vec3& n = face.normal;
   const Vec3 vt = across(v, n);
-  const Vec3 slip = faceSlip(v, w, n, radius);
+  const Vec3 slip = faceSlip(vt, w, n, radius);
   const double scale = vt.norm() + radius * w.norm();
   const double slipSize = slip.norm();
   if (slipSize > tolerance::kRollingSlipFraction * scale)
@@ -92,7 +92,7 @@ void applySteppedFriction(Vec3& v, Vec3& w, double radius, const Vec3& n, double
     applyImpactFriction(v, w, radius, n, normalChange, {friction.sliding, tangentialRestitution});
   if (friction.rolling > 0.0) {
     const Vec3 vt = across(v, n);
-    const Vec3 slip = faceSlip(v, w, n, radius);
+    const Vec3 slip = faceSlip(vt, w, n, radius);
     const double speed = vt.norm();
     const double scale = speed + radius * w.norm();
     if (speed > 0.0 && slip.norm() <= tolerance::kRollingSlipFraction * scale) {

@@ -54,13 +54,13 @@ inline Vec3 rollingSpin(const Vec3& v, const Vec3& normal, double radius) {
   return normal.cross(v) / radius;
 }
 
-// The slip of the contact point on a face with unit normal `normal`: the velocity's part along
-// it less r·ω×n, of ω's part along the face only. The spin about the normal moves the contact
-// point nowhere; its cross product with n is round-off, which would be a slip of its own on a
-// ball nearly still that spins about the normal (one that never ends: each end of that slide
-// finds it again at the same instant).
-inline Vec3 faceSlip(const Vec3& v, const Vec3& w, const Vec3& normal, double radius) {
-  return v - v.dot(normal) * normal - radius * (w - w.dot(normal) * normal).cross(normal);
+// The slip of the contact point on a face with unit normal `normal`, from the velocity's part
+// along it `alongFace`: that less r·ω×n, of ω's part along the face only. The spin about the normal
+// moves the contact point nowhere; its cross product with n is round-off, which would be a slip of
+// its own on a ball nearly still that spins about the normal (one that never ends: each end of that
+// slide finds it again at the same instant).
+inline Vec3 faceSlip(const Vec3& alongFace, const Vec3& w, const Vec3& normal, double radius) {
+  return alongFace - radius * (w - w.dot(normal) * normal).cross(normal);
 }
 
 // The rate at which spinning friction takes down the spin about the face's normal: the torque

@@ -21,7 +21,7 @@ TurningFacePath::Turning TurningFacePath::turningOf(const Vec3& v, const Vec3& w
   const Vec3 vt = alongFace(v, face.normal);
   if (sliding) {
     const double force = friction.sliding * face.pressing;
-    return {faceSlip(v, w, face.normal, radius), face.along, 3.5 * force, force};
+    return {faceSlip(vt, w, face.normal, radius), face.along, 3.5 * force, force};
   }
   const double resistance = friction.rolling * face.pressing;
   return {vt, 5.0 / 7.0 * face.along, resistance, resistance};
