@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer in ./build-asan and runs
-# the whole test suite there; any report fails the run. Leaks are checked outside the GUI tests.
+# Builds everything with AddressSanitizer, and the physics, scene files and carom-cli (sim/,
+# app/cli/) with UndefinedBehaviorSanitizer too, in ./build-asan, and runs the whole test suite
+# there; any report fails the run. Leaks are checked outside the GUI tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -f build-asan/build.ninja ] ||
-  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Release -DCAROM_SANITIZE=address,undefined
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Release -DCAROM_SANITIZE=address \
+    -DCAROM_SANITIZE_CORE=undefined
 cmake --build build-asan -j2
 export ASAN_OPTIONS="abort_on_error=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"

@@ -3,8 +3,8 @@
 # (scripts/package.sh), the soak runs (10 million events each), a GUI stress run
 # (STRESS_SECONDS, default 60), the faults of issue 33 replayed against the built programs
 # (scripts/faults.sh), a short fuzzing pass (FUZZ_SECONDS per target, default 30), the
-# suite again built with AddressSanitizer and UndefinedBehaviorSanitizer, and the tests of the
-# threaded parts built with ThreadSanitizer.
+# suite again built with AddressSanitizer (and UndefinedBehaviorSanitizer over sim/ and
+# app/cli/), and the tests of the threaded parts built with ThreadSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Each stage says how long it took, and the whole run at the end.
