@@ -3,10 +3,10 @@
 // nothing wins a tolerance below round-off. Which candidate costs least is measured, not assumed:
 // each scene is made so that the winner is cheaper by a wide margin.
 
+#include "scene_helpers.h"
 #include "sim/io/scene_file.h"
 #include "sim/measure/method_choice.h"
 #include "sim/model/scene_builders.h"
-#include "scene_helpers.h"
 
 #include <QtTest>
 
