@@ -2,6 +2,7 @@
 // results whatever the number of threads, a prompt cancel, and a runner destroyed mid-study.
 // Times are not checked: they depend on the machine and on what else it runs.
 
+#include "scene_helpers.h"
 #include "sim/model/scene_builders.h"
 #include "ui/run/accuracy_study_runner.h"
 
@@ -33,8 +34,12 @@ carom::Scene smallScene() {
 }
 
 // A study that takes long enough to cancel or destroy mid-way: a cheap reference, and runs of
-// tiny time steps (some 5 s of computing each here) between cheap ones of coarse steps.
-constexpr double kLongStudy = 100.0;
+// tiny time steps (some 5 s of computing each here) between cheap ones of coarse steps. A tenth
+// of it under the sanitizers, whose instrumented runs are ten times slower: the reference alone
+// took 40 s there.
+double longStudySeconds() {
+  return carom::testing::sanitizerRun() ? 10.0 : 100.0;
+}
 
 std::vector<StudyCase> longCasesOf(const carom::Scene& scene) {
   return carom::studyCases(scene.world, {0.02, 4.0});
@@ -162,7 +167,7 @@ class TestAccuracyRunner : public QObject {
     // Cancelled on the first result, with the other runs under way or waiting.
     QObject::connect(&runner, &AccuracyStudyRunner::resultReady, &runner,
                      &AccuracyStudyRunner::cancel);
-    runner.start(scene, cases, kLongStudy);
+    runner.start(scene, cases, longStudySeconds());
     QVERIFY(runner.isRunning());
     QVERIFY(results.wait(120000));
     // Each run looks at the cancel flag every fiftieth of its duration: a few seconds are ample.
@@ -210,7 +215,7 @@ class TestAccuracyRunner : public QObject {
     int delivered = 0;
     QObject::connect(runner.get(), &AccuracyStudyRunner::resultReady,
                      [&delivered] { ++delivered; });
-    runner->start(scene, longCasesOf(scene), kLongStudy);
+    runner->start(scene, longCasesOf(scene), longStudySeconds());
     if (duringRuns) {
       QVERIFY(QTest::qWaitFor([&] { return delivered > 0; }, 120000));
       // Runs finish meanwhile and post their results, which nobody delivers before the runner
